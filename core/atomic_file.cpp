@@ -1,0 +1,53 @@
+#include "atomic_file.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+
+namespace whitted {
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path temporaryBeside(const fs::path& target) {
+    static std::atomic<unsigned> counter{0};
+    const std::string name = "." + target.filename().string() + ".tmp" +
+                             std::to_string(::getpid()) + "-" + std::to_string(counter++) +
+                             target.extension().string();
+    return target.parent_path() / name;
+}
+
+// Without this a crash right after the rename could leave an empty file on
+// some file systems: the rename reaches the disk before the data does.
+void flushToDisk(const fs::path& file) {
+    const int fd = ::open(file.c_str(), O_RDONLY);
+    if (fd < 0) throw std::system_error(errno, std::generic_category(), file.string());
+    const int rc = ::fsync(fd);
+    const int err = errno;
+    ::close(fd);
+    if (rc != 0) throw std::system_error(err, std::generic_category(), file.string());
+}
+
+}  // namespace
+
+void replaceFileAtomically(const fs::path& target,
+                           const std::function<void(const fs::path& temp)>& write) {
+    const fs::path temp = temporaryBeside(target);
+    try {
+        write(temp);
+        flushToDisk(temp);
+        fs::rename(temp, target);
+    } catch (...) {
+        std::error_code ignored;
+        fs::remove(temp, ignored);
+        throw;
+    }
+}
+
+}  // namespace whitted

@@ -1,0 +1,17 @@
+// Replace a file all at once: write beside it, flush to disk, rename over it.
+// A failure at any step leaves the old file (or no file) and no temporary behind.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+
+namespace whitted {
+
+// Calls `write` with a temporary path in the same directory that keeps the
+// target's extension (so format-by-extension writers such as OpenImageIO still
+// work), then renames it to `target`. If `write` throws, or the rename fails, the
+// temporary is removed and the exception propagates.
+void replaceFileAtomically(const std::filesystem::path& target,
+                           const std::function<void(const std::filesystem::path& temp)>& write);
+
+}  // namespace whitted

@@ -1,0 +1,206 @@
+#include "renderer.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+
+#include "scene_io.h"
+
+namespace whitted {
+namespace {
+
+struct Tile {
+    int x, y, w, h;
+};
+
+struct Pass {
+    PassKind kind;
+    int firstSample, lastSample;  // samples [first, last) of every pixel
+    double work;                  // relative cost, for the progress fraction
+};
+
+// Centre-out order: the middle of the image, where people look, arrives first.
+std::vector<Tile> spiralTiles(int width, int height, int size) {
+    std::vector<Tile> tiles;
+    for (int y = 0; y < height; y += size)
+        for (int x = 0; x < width; x += size)
+            tiles.push_back({x, y, std::min(size, width - x), std::min(size, height - y)});
+    auto distance = [&](const Tile& t) {
+        const double dx = t.x + t.w * 0.5 - width * 0.5, dy = t.y + t.h * 0.5 - height * 0.5;
+        return dx * dx + dy * dy;
+    };
+    std::stable_sort(tiles.begin(), tiles.end(),
+                     [&](const Tile& a, const Tile& b) { return distance(a) < distance(b); });
+    return tiles;
+}
+
+std::vector<Pass> planPasses(const RenderSettings& r, const RenderOptions& o) {
+    const double pixels = double(r.width) * r.height;
+    std::vector<Pass> passes;
+    const int spp = r.samplesPerPixel;
+    if (!o.progressive) {
+        passes.push_back({PassKind::Samples, 0, spp, pixels * spp});
+        return passes;
+    }
+    const int block = std::max(1, o.previewBlock);
+    if (block > 1 && (r.width > block || r.height > block))
+        passes.push_back({PassKind::Preview, 0, 0, pixels / (double(block) * block)});
+    for (int done = 0; done < spp;) {
+        const int next = done == 0 ? 1 : std::min(spp, done * 2);
+        passes.push_back({PassKind::Samples, done, next, pixels * (next - done)});
+        done = next;
+    }
+    return passes;
+}
+
+template <typename T>
+class TileRenderer {
+public:
+    TileRenderer(const Scene& scene, const RenderOptions& options, const TileCallback& onTile,
+                 const StopPredicate& shouldStop)
+        : s_(prepareScene<T>(scene)),
+          options_(options),
+          onTile_(onTile),
+          shouldStop_(shouldStop),
+          image_(scene.render.width, scene.render.height) {}
+
+    RenderResult run() {
+        const std::vector<Pass> passes = planPasses(
+            RenderSettings{s_.width, s_.height, s_.maxDepth, s_.samplesPerPixel}, options_);
+        // Sums survive between passes only when a pixel gets its samples in several passes.
+        if (passes.back().firstSample > 0) sums_.assign(size_t(s_.width) * s_.height, {});
+        for (const Pass& p : passes) totalWork_ += p.work;
+        const std::vector<Tile> tiles =
+            spiralTiles(s_.width, s_.height, std::max(1, options_.tileSize));
+        const int threads = std::min<int>(resolveThreadCount(options_.threads), tiles.size());
+
+        RenderResult result;
+        result.threads = threads;
+        for (size_t p = 0; p < passes.size() && !stopped_; ++p) {
+            runPass(passes[p], int(p), int(passes.size()), tiles, threads);
+            if (!stopped_ && passes[p].kind == PassKind::Samples)
+                result.samples = passes[p].lastSample;
+        }
+        result.completed = !stopped_;
+        result.rays = rays_;
+        result.image = std::move(image_);
+        return result;
+    }
+
+private:
+    bool stopRequested() {
+        if (stopped_.load(std::memory_order_relaxed)) return true;
+        if (shouldStop_ && shouldStop_()) stopped_ = true;
+        return stopped_;
+    }
+
+    void runPass(const Pass& pass, int index, int count, const std::vector<Tile>& tiles,
+                 int threads) {
+        std::atomic<size_t> next{0};
+        const double workPerPixel = pass.work / (double(s_.width) * s_.height);
+        auto worker = [&] {
+            RayCounts counts;
+            for (;;) {
+                if (stopRequested()) break;
+                const size_t t = next.fetch_add(1);
+                if (t >= tiles.size()) break;
+                const Tile& tile = tiles[t];
+                if (!renderTile(pass, tile, counts)) break;
+                const double done =
+                    workDone_.fetch_add(workPerPixel * tile.w * tile.h) +
+                    workPerPixel * tile.w * tile.h;
+                if (onTile_) {
+                    RenderProgress progress{index, count, pass.kind,
+                                            pass.kind == PassKind::Preview ? 0 : pass.lastSample,
+                                            std::min(1.0, done / totalWork_)};
+                    onTile_(TileUpdate{image_, tile.x, tile.y, tile.w, tile.h, progress});
+                }
+            }
+            std::lock_guard lock(raysMutex_);
+            rays_ += counts;
+        };
+        std::vector<std::thread> helpers;
+        for (int i = 1; i < threads; ++i) helpers.emplace_back(worker);
+        worker();
+        for (auto& h : helpers) h.join();
+    }
+
+    // False when stopped part-way: the tile is then incomplete and not reported.
+    bool renderTile(const Pass& pass, const Tile& tile, RayCounts& counts) {
+        if (pass.kind == PassKind::Preview) return renderPreviewTile(tile, counts);
+        const int w = s_.width;
+        for (int y = tile.y; y < tile.y + tile.h; ++y) {
+            if (stopRequested()) return false;
+            for (int x = tile.x; x < tile.x + tile.w; ++x) {
+                const size_t index = size_t(y) * w + x;
+                glm::dvec3 sum = pass.firstSample > 0 ? sums_[index] : glm::dvec3(0.0);
+                accumulatePixel(s_, x, y, pass.firstSample, pass.lastSample, sum, counts);
+                if (!sums_.empty()) sums_[index] = sum;
+                const glm::dvec3 mean = sum / double(pass.lastSample);
+                float* out = image_.pixel(x, y);
+                out[0] = float(mean.x);
+                out[1] = float(mean.y);
+                out[2] = float(mean.z);
+            }
+        }
+        return true;
+    }
+
+    bool renderPreviewTile(const Tile& tile, RayCounts& counts) {
+        const int block = options_.previewBlock;
+        for (int by = tile.y; by < tile.y + tile.h; by += block) {
+            if (stopRequested()) return false;
+            const int bh = std::min(block, tile.y + tile.h - by);
+            for (int bx = tile.x; bx < tile.x + tile.w; bx += block) {
+                const int bw = std::min(block, tile.x + tile.w - bx);
+                const Vec<T> c = tracePixelSample(s_, bx + bw / 2, by + bh / 2, T(0.5), T(0.5),
+                                                  counts);
+                for (int y = by; y < by + bh; ++y)
+                    for (int x = bx; x < bx + bw; ++x) {
+                        float* out = image_.pixel(x, y);
+                        out[0] = float(c.x);
+                        out[1] = float(c.y);
+                        out[2] = float(c.z);
+                    }
+            }
+        }
+        return true;
+    }
+
+    const PreparedScene<T> s_;
+    const RenderOptions& options_;
+    const TileCallback& onTile_;
+    const StopPredicate& shouldStop_;
+    Image image_;
+    std::vector<glm::dvec3> sums_;
+    std::atomic<bool> stopped_{false};
+    std::atomic<double> workDone_{0.0};
+    double totalWork_ = 0.0;
+    std::mutex raysMutex_;
+    RayCounts rays_;
+};
+
+}  // namespace
+
+int resolveThreadCount(int requested) {
+    if (requested > 0) return requested;
+    return std::max(1u, std::thread::hardware_concurrency());
+}
+
+RenderResult render(const Scene& scene, const RenderOptions& options, const TileCallback& onTile,
+                    const StopPredicate& shouldStop) {
+    if (auto problem = validateScene(scene))
+        throw std::invalid_argument(problem->jsonPath + ": " + problem->reason);
+    const auto start = std::chrono::steady_clock::now();
+    RenderResult result = scene.render.precision == Precision::Double
+                              ? TileRenderer<double>(scene, options, onTile, shouldStop).run()
+                              : TileRenderer<float>(scene, options, onTile, shouldStop).run();
+    result.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace whitted

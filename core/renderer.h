@@ -1,0 +1,72 @@
+// The progressive tile renderer: the image is cut into tiles that a pool of
+// threads renders pass by pass, centre-out within each pass:
+//   1. a coarse preview, one camera ray per block of previewBlock^2 pixels;
+//   2. full resolution at one sample per pixel;
+//   3. more samples, doubling each pass, up to samples_per_pixel.
+// Every sample is a pure function of (pixel, sample index), and each pixel's
+// samples are summed in index order, so the final image is bit-identical to a
+// one-shot render whatever the thread count, tile size, tile order or pass split.
+//
+// Meant to be driven from the caller's own thread (the editor's worker, the
+// CLI's main thread): render() blocks, uses the calling thread as one of its
+// workers, and returns within one tile row of work once shouldStop says so.
+#pragma once
+
+#include <functional>
+
+#include "image.h"
+#include "scene.h"
+#include "tracer.h"
+
+namespace whitted {
+
+struct RenderOptions {
+    int threads = 0;          // worker threads including the caller; 0: all cores
+    int tileSize = 32;        // tile edge in pixels
+    bool progressive = true;  // false: a single pass of all samples, no preview
+    int previewBlock = 8;     // pixels per preview block edge; 1 disables the preview
+};
+
+enum class PassKind { Preview, Samples };
+
+struct RenderProgress {
+    int pass = 0;       // 0-based index of the current pass
+    int passCount = 0;  // passes in this render
+    PassKind kind = PassKind::Samples;
+    int samples = 0;        // samples per pixel in the tile once this pass is done (0: preview)
+    double fraction = 0.0;  // share of the whole render's work finished, in [0, 1]
+};
+
+// A finished tile. `image` is the whole image being refined; only the tile's
+// rectangle [x, x+width) x [y, y+height) changed, and it stays untouched until the
+// callback returns, so the callback may copy it.
+struct TileUpdate {
+    const Image& image;
+    int x, y, width, height;
+    RenderProgress progress;
+};
+
+// Called from the worker threads, possibly several at once: keep it short and
+// thread-safe (copy the tile, post a message).
+using TileCallback = std::function<void(const TileUpdate&)>;
+// Asked before every tile row by every worker; must be thread-safe and cheap.
+using StopPredicate = std::function<bool()>;
+
+struct RenderResult {
+    Image image;
+    RayCounts rays;
+    double seconds = 0.0;  // wall time of render(), preparation included
+    int threads = 1;       // worker threads used
+    int samples = 0;       // samples per pixel in every pixel of `image` (0: only the preview)
+    bool completed = false;  // false when stopped early
+};
+
+// The number of threads render() uses for `requested` (0: all cores).
+int resolveThreadCount(int requested);
+
+// Renders the scene with its render settings. Throws std::invalid_argument for a
+// scene that validateScene() refuses.
+RenderResult render(const Scene& scene, const RenderOptions& options = {},
+                    const TileCallback& onTile = {}, const StopPredicate& shouldStop = {});
+
+}  // namespace whitted

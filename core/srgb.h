@@ -1,0 +1,19 @@
+// The sRGB transfer curve, shared by 8-bit export and the editor's view so that
+// both show the same pixels (SPEC §5).
+#pragma once
+
+#include <cstdint>
+
+namespace whitted {
+
+// Linear value to sRGB-encoded value, both in [0,1]; the input is clamped first
+// (NaN becomes 0).
+float srgbEncode(float linear);
+
+// Linear value to an 8-bit sRGB code, clamped and rounded to nearest.
+std::uint8_t srgbEncode8(float linear);
+
+// 8-bit sRGB code back to linear.
+float srgbDecode8(std::uint8_t code);
+
+}  // namespace whitted

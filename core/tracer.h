@@ -1,0 +1,127 @@
+// The Whitted tracer (SPEC §3), one template for float and double.
+//
+// A render first compiles the Scene into a PreparedScene<T>: numbers in T,
+// material names resolved to indices, spheres laid out for the hit loop, and
+// flags saying which kinds of secondary rays the scene can use at all.
+//
+// Self-intersection policy (the only one; no epsilons anywhere): a secondary ray
+// remembers the sphere it leaves. A sphere is convex, so a ray leaving it outwards
+// can never hit it again and skips it; a ray going into it can only hit its far
+// side and takes the far root. This is exact and independent of scale.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "camera.h"
+#include "scene.h"
+#include "sphere_intersect.h"
+
+namespace whitted {
+
+// Rays traced, by kind. Shadow rays count once per (hit, light) actually tested.
+struct RayCounts {
+    std::uint64_t camera = 0;
+    std::uint64_t shadow = 0;
+    std::uint64_t reflection = 0;
+    std::uint64_t refraction = 0;
+    std::uint64_t total() const { return camera + shadow + reflection + refraction; }
+    RayCounts& operator+=(const RayCounts& o) {
+        camera += o.camera;
+        shadow += o.shadow;
+        reflection += o.reflection;
+        refraction += o.refraction;
+        return *this;
+    }
+};
+
+template <typename T>
+struct Ray {
+    Vec<T> origin;
+    Vec<T> dir;               // unit length
+    int originSphere = -1;    // the sphere the ray leaves, -1 for camera rays
+    bool intoOrigin = false;  // the ray goes into originSphere (refraction, inner reflection)
+    // Per sphere, |origin - centre|^2 - r^2 computed once for rays that share
+    // this origin (camera rays); null for others.
+    const std::vector<T>* offsetSquared = nullptr;
+};
+
+template <typename T>
+struct PreparedMaterial {
+    Vec<T> diffuse;
+    Vec<T> checkerColor;
+    T checkerInvSize = 0;  // 1 / checker size; 0 means no checker
+    T specular = 0, shininess = 0, reflectivity = 0, transparency = 0, ior = 1;
+    int integerShininess = -1;  // shininess when it is a small whole number, else -1
+    bool lit = false;           // diffuse or specular can be non-zero: shadow rays are useful
+};
+
+template <typename T>
+struct PreparedLight {
+    Vec<T> position;
+    Vec<T> color;  // colour * intensity
+};
+
+template <typename T>
+struct PreparedScene {
+    CameraBasis<T> camera;
+    // Spheres as parallel arrays: the hit loop touches only centre and r^2.
+    std::vector<Vec<T>> centre;
+    std::vector<T> radius, rrHi, rrLo;  // rrHi + rrLo == radius^2 exactly
+    std::vector<int> material;
+    std::vector<T> cameraOffsetSquared;  // accurateOffsetSquared() from the camera position
+    std::vector<PreparedMaterial<T>> materials;
+    std::vector<PreparedLight<T>> lights;
+    Vec<T> background, ambient;
+    int maxDepth = 0;
+    int samplesPerPixel = 1;
+    int width = 1, height = 1;
+};
+
+// The scene must be valid (validateScene); width, height, depth and samples
+// come from scene.render.
+template <typename T>
+PreparedScene<T> prepareScene(const Scene& scene);
+
+template <typename T>
+struct Hit {
+    T t;         // distance along the ray, > 0
+    int sphere;  // index into the scene's spheres
+};
+
+// The nearest hit with t in (0, tMax), honouring the self-intersection policy.
+template <typename T>
+std::optional<Hit<T>> closestHit(const PreparedScene<T>& s, const Ray<T>& ray,
+                                 T tMax = std::numeric_limits<T>::infinity());
+
+// Radiance along a ray at the given depth (0 for camera rays).
+template <typename T>
+Vec<T> traceRay(const PreparedScene<T>& s, const Ray<T>& ray, int depth, RayCounts& counts);
+
+// One camera sample through pixel (i, j) at sub-pixel offset (u, v); counts the camera ray.
+template <typename T>
+Vec<T> tracePixelSample(const PreparedScene<T>& s, int i, int j, T u, T v, RayCounts& counts);
+
+// Mean of samples [first, last) of pixel (i, j), accumulated in sample order into `sum`.
+template <typename T>
+void accumulatePixel(const PreparedScene<T>& s, int i, int j, int first, int last,
+                     glm::dvec3& sum, RayCounts& counts);
+
+// Reflection of unit d about unit n.
+template <typename T>
+Vec<T> reflect(const Vec<T>& d, const Vec<T>& n) {
+    return d - T(2) * (d.x * n.x + d.y * n.y + d.z * n.z) * n;
+}
+
+// Snell refraction of unit d through a surface whose unit normal n faces d's
+// origin (dot(d, n) < 0), with eta = n_from / n_to; nothing on total internal reflection.
+template <typename T>
+std::optional<Vec<T>> refract(const Vec<T>& d, const Vec<T>& n, T eta) {
+    const T cosi = -(d.x * n.x + d.y * n.y + d.z * n.z);
+    const T k = T(1) - eta * eta * (T(1) - cosi * cosi);
+    if (!(k >= T(0))) return std::nullopt;
+    return glm::normalize(eta * d + (eta * cosi - std::sqrt(k)) * n);
+}
+
+}  // namespace whitted

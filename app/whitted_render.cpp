@@ -41,7 +41,7 @@ struct Options {
 // A one-line bar on stderr, shown only once a render has run for a second, so
 // quick renders print nothing but their summary.
 class ProgressBar {
-public:
+  public:
     explicit ProgressBar(bool enabled) : enabled_(enabled) {}
 
     void update(double fraction) {
@@ -61,7 +61,7 @@ public:
         std::fputc('\n', stderr);
     }
 
-private:
+  private:
     double seconds() const {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     }

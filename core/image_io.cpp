@@ -105,10 +105,9 @@ Image readImage(const fs::path& file) {
     const bool eightBit = spec.format == OIIO::TypeDesc::UINT8;
     std::vector<float> all(size_t(spec.width) * spec.height * spec.nchannels);
     std::vector<std::uint8_t> codes(eightBit ? all.size() : 0);
-    const bool ok = eightBit ? in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8,
-                                              codes.data())
-                             : in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT,
-                                              all.data());
+    const bool ok =
+        eightBit ? in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, codes.data())
+                 : in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data());
     if (!ok) throw ImageIoError(file.string() + ": " + in->geterror());
     for (size_t p = 0; p < size_t(spec.width) * spec.height; ++p)
         for (int c = 0; c < 3; ++c) {

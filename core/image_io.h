@@ -42,7 +42,7 @@ ImageMetadata makeImageMetadata(const RenderSettings& settings, double renderSec
                                 std::string software);
 
 class ImageIoError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 

@@ -58,7 +58,7 @@ std::vector<Pass> planPasses(const RenderSettings& r, const RenderOptions& o) {
 
 template <typename T>
 class TileRenderer {
-public:
+  public:
     TileRenderer(const Scene& scene, const RenderOptions& options, const TileCallback& onTile,
                  const StopPredicate& shouldStop)
         : s_(prepareScene<T>(scene)),
@@ -90,7 +90,7 @@ public:
         return result;
     }
 
-private:
+  private:
     bool stopRequested() {
         if (stopped_.load(std::memory_order_relaxed)) return true;
         if (shouldStop_ && shouldStop_()) stopped_ = true;
@@ -109,9 +109,8 @@ private:
                 if (t >= tiles.size()) break;
                 const Tile& tile = tiles[t];
                 if (!renderTile(pass, tile, counts)) break;
-                const double done =
-                    workDone_.fetch_add(workPerPixel * tile.w * tile.h) +
-                    workPerPixel * tile.w * tile.h;
+                const double done = workDone_.fetch_add(workPerPixel * tile.w * tile.h) +
+                                    workPerPixel * tile.w * tile.h;
                 if (onTile_) {
                     RenderProgress progress{index, count, pass.kind,
                                             pass.kind == PassKind::Preview ? 0 : pass.lastSample,
@@ -131,16 +130,27 @@ private:
     // False when stopped part-way: the tile is then incomplete and not reported.
     bool renderTile(const Pass& pass, const Tile& tile, RayCounts& counts) {
         if (pass.kind == PassKind::Preview) return renderPreviewTile(tile, counts);
-        const int w = s_.width;
+        std::vector<CameraSample<T>> samples(tile.w);
+        std::vector<Vec<T>> radiance(tile.w);
+        std::vector<glm::dvec3> sums(tile.w);
         for (int y = tile.y; y < tile.y + tile.h; ++y) {
             if (stopRequested()) return false;
-            for (int x = tile.x; x < tile.x + tile.w; ++x) {
-                const size_t index = size_t(y) * w + x;
-                glm::dvec3 sum = pass.firstSample > 0 ? sums_[index] : glm::dvec3(0.0);
-                accumulatePixel(s_, x, y, pass.firstSample, pass.lastSample, sum, counts);
-                if (!sums_.empty()) sums_[index] = sum;
-                const glm::dvec3 mean = sum / double(pass.lastSample);
-                float* out = image_.pixel(x, y);
+            const size_t row = size_t(y) * s_.width + tile.x;
+            if (pass.firstSample > 0)
+                std::copy_n(sums_.begin() + row, tile.w, sums.begin());
+            else
+                std::fill(sums.begin(), sums.end(), glm::dvec3(0.0));
+            // Sample by sample across the row: each pixel still sums its samples
+            // in index order, as a one-shot render does.
+            for (int n = pass.firstSample; n < pass.lastSample; ++n) {
+                for (int i = 0; i < tile.w; ++i) samples[i] = pixelSample(s_, tile.x + i, y, n);
+                traceCameraSamples(s_, samples.data(), tile.w, radiance.data(), counts);
+                for (int i = 0; i < tile.w; ++i) sums[i] += glm::dvec3(radiance[i]);
+            }
+            if (!sums_.empty()) std::copy_n(sums.begin(), tile.w, sums_.begin() + row);
+            for (int i = 0; i < tile.w; ++i) {
+                const glm::dvec3 mean = sums[i] / double(pass.lastSample);
+                float* out = image_.pixel(tile.x + i, y);
                 out[0] = float(mean.x);
                 out[1] = float(mean.y);
                 out[2] = float(mean.z);
@@ -156,8 +166,8 @@ private:
             const int bh = std::min(block, tile.y + tile.h - by);
             for (int bx = tile.x; bx < tile.x + tile.w; bx += block) {
                 const int bw = std::min(block, tile.x + tile.w - bx);
-                const Vec<T> c = tracePixelSample(s_, bx + bw / 2, by + bh / 2, T(0.5), T(0.5),
-                                                  counts);
+                const Vec<T> c =
+                    tracePixelSample(s_, bx + bw / 2, by + bh / 2, T(0.5), T(0.5), counts);
                 for (int y = by; y < by + bh; ++y)
                     for (int x = bx; x < bx + bw; ++x) {
                         float* out = image_.pixel(x, y);

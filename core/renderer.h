@@ -55,9 +55,9 @@ using StopPredicate = std::function<bool()>;
 struct RenderResult {
     Image image;
     RayCounts rays;
-    double seconds = 0.0;  // wall time of render(), preparation included
-    int threads = 1;       // worker threads used
-    int samples = 0;       // samples per pixel in every pixel of `image` (0: only the preview)
+    double seconds = 0.0;    // wall time of render(), preparation included
+    int threads = 1;         // worker threads used
+    int samples = 0;         // samples per pixel in every pixel of `image` (0: only the preview)
     bool completed = false;  // false when stopped early
 };
 

@@ -70,10 +70,10 @@ std::string_view precisionName(Precision p);
 std::optional<Precision> parsePrecision(std::string_view name);
 
 struct RenderSettings {
-    int width = 640;             // [1, 16384]
-    int height = 480;            // [1, 16384]
-    int maxDepth = 5;            // [0, 64]; camera rays have depth 0
-    int samplesPerPixel = 1;     // [1, 65536]
+    int width = 640;          // [1, 16384]
+    int height = 480;         // [1, 16384]
+    int maxDepth = 5;         // [0, 64]; camera rays have depth 0
+    int samplesPerPixel = 1;  // [1, 65536]
     Precision precision = Precision::Float;
     bool operator==(const RenderSettings&) const = default;
 };

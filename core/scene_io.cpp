@@ -34,7 +34,9 @@ std::string typeName(const json& j) {
     return "null";
 }
 
-std::string quoted(const std::string& s) { return json(s).dump(); }
+std::string quoted(const std::string& s) {
+    return json(s).dump();
+}
 
 std::string joinKey(const std::string& parent, const std::string& key) {
     return parent.empty() ? key : parent + "." + key;
@@ -42,7 +44,7 @@ std::string joinKey(const std::string& parent, const std::string& key) {
 
 // Reads one JSON document into a Scene; every failure names the JSON path.
 class Reader {
-public:
+  public:
     explicit Reader(std::string file) : file_(std::move(file)) {}
 
     [[noreturn]] void fail(const std::string& path, const std::string& reason) const {
@@ -96,9 +98,9 @@ public:
 
     Vec3 vec3(const json& j, const std::string& path) const {
         if (!j.is_array() || j.size() != 3)
-            fail(path, "expected an array of 3 numbers, found " +
-                           (j.is_array() ? "an array of " + std::to_string(j.size())
-                                         : typeName(j)));
+            fail(path,
+                 "expected an array of 3 numbers, found " +
+                     (j.is_array() ? "an array of " + std::to_string(j.size()) : typeName(j)));
         Vec3 v;
         for (int i = 0; i < 3; ++i) v[i] = number(j[i], path + "[" + std::to_string(i) + "]");
         return v;
@@ -148,7 +150,7 @@ public:
         return scene;
     }
 
-private:
+  private:
     template <typename T>
     void readList(const json& root, const char* key, std::vector<T>& out,
                   void (Reader::*readOne)(const json&, const std::string&, T&) const) const {
@@ -157,8 +159,7 @@ private:
         expectArray(*list, key);
         out.resize(list->size());
         for (size_t i = 0; i < list->size(); ++i)
-            (this->*readOne)((*list)[i], std::string(key) + "[" + std::to_string(i) + "]",
-                             out[i]);
+            (this->*readOne)((*list)[i], std::string(key) + "[" + std::to_string(i) + "]", out[i]);
     }
 
     void readCamera(const json& j, Camera& c) const {
@@ -182,8 +183,8 @@ private:
         if (auto* pr = find(j, p, "precision", false)) {
             const std::string name = string(*pr, "render.precision");
             auto parsed = parsePrecision(name);
-            if (!parsed) fail("render.precision", "expected \"float\" or \"double\", found " +
-                                                      quoted(name));
+            if (!parsed)
+                fail("render.precision", "expected \"float\" or \"double\", found " + quoted(name));
             r.precision = *parsed;
         }
     }
@@ -262,8 +263,7 @@ std::optional<SceneProblem> checkRange(double v, double lo, double hi, const std
                                   fmt(hi) + (hiOpen ? ")" : "]") + ", found " + fmt(v)};
 }
 
-std::optional<SceneProblem> checkAtLeast(double v, double lo, const std::string& path,
-                                         bool open) {
+std::optional<SceneProblem> checkAtLeast(double v, double lo, const std::string& path, bool open) {
     if (std::isfinite(v) && (open ? v > lo : v >= lo)) return std::nullopt;
     std::ostringstream s;
     s << "must be " << (open ? "> " : ">= ") << lo << ", found " << v;
@@ -293,8 +293,8 @@ std::optional<SceneProblem> checkCamera(const Camera& c) {
     if (c.up == Vec3(0.0)) return SceneProblem{"camera.up", "must not be zero-length"};
     // Exactly parallel only: a nearly parallel up still defines a basis, and
     // refusing it would make orbiting over the pole fail in the editor.
-    const Vec3 f = forward / std::sqrt(forward.x * forward.x + forward.y * forward.y +
-                                       forward.z * forward.z);
+    const Vec3 f =
+        forward / std::sqrt(forward.x * forward.x + forward.y * forward.y + forward.z * forward.z);
     const double upLen = std::sqrt(c.up.x * c.up.x + c.up.y * c.up.y + c.up.z * c.up.z);
     const Vec3 u = c.up / upLen;
     const Vec3 cr{u.y * f.z - u.z * f.y, u.z * f.x - u.x * f.z, u.x * f.y - u.y * f.x};
@@ -354,17 +354,92 @@ std::optional<SceneProblem> validateScene(const Scene& scene) {
     return std::nullopt;
 }
 
+namespace {
+
+// Builds the DOM like json::parse, but remembers where in the document it is,
+// so that a number too large for a double (1e999, the only way JSON can spell
+// infinity) is refused with its JSON path like every other bad value.
+class PathTrackingSax {
+  public:
+    PathTrackingSax(json& result, const std::string& file) : dom_(result, true), file_(file) {}
+
+    bool null() { return value(), dom_.null(); }
+    bool boolean(bool v) { return value(), dom_.boolean(v); }
+    bool number_integer(json::number_integer_t v) { return value(), dom_.number_integer(v); }
+    bool number_unsigned(json::number_unsigned_t v) { return value(), dom_.number_unsigned(v); }
+    bool number_float(json::number_float_t v, const json::string_t& s) {
+        return value(), dom_.number_float(v, s);
+    }
+    bool string(json::string_t& v) { return value(), dom_.string(v); }
+    bool binary(json::binary_t& v) { return value(), dom_.binary(v); }
+    bool start_object(std::size_t n) {
+        value();
+        frames_.push_back({false, {}, -1});
+        return dom_.start_object(n);
+    }
+    bool key(json::string_t& k) {
+        frames_.back().key = k;
+        return dom_.key(k);
+    }
+    bool end_object() {
+        frames_.pop_back();
+        return dom_.end_object();
+    }
+    bool start_array(std::size_t n) {
+        value();
+        frames_.push_back({true, {}, -1});
+        return dom_.start_array(n);
+    }
+    bool end_array() {
+        frames_.pop_back();
+        return dom_.end_array();
+    }
+    bool parse_error(std::size_t, const std::string&, const nlohmann::json::exception& e) {
+        std::string what = e.what();  // "[json.exception.parse_error.101] parse error at ..."
+        const auto pos = what.find("] ");
+        if (pos != std::string::npos) what = what.substr(pos + 2);
+        if (e.id == 406) {  // number overflow: the value that failed is the next one here
+            if (!frames_.empty() && frames_.back().isArray) ++frames_.back().index;
+            throw SceneError(file_, path(), "must be a finite number (" + what + ")");
+        }
+        throw SceneError(file_, "", "invalid JSON: " + what);
+    }
+
+  private:
+    struct Frame {
+        bool isArray;
+        std::string key;
+        long index;
+    };
+
+    void value() {
+        if (!frames_.empty() && frames_.back().isArray) ++frames_.back().index;
+    }
+
+    std::string path() const {
+        std::string p;
+        for (const Frame& f : frames_) {
+            if (f.isArray) {
+                p += "[" + std::to_string(f.index) + "]";
+            } else {
+                if (!p.empty()) p += ".";
+                p += f.key;
+            }
+        }
+        return p;
+    }
+
+    nlohmann::detail::json_sax_dom_parser<json> dom_;
+    const std::string& file_;
+    std::vector<Frame> frames_;
+};
+
+}  // namespace
+
 Scene parseScene(const std::string& text, const std::string& sourceName) {
     json root;
-    try {
-        root = json::parse(text);
-    } catch (const json::parse_error& e) {
-        // e.what() reads "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
-        std::string what = e.what();
-        auto pos = what.find("] ");
-        throw SceneError(sourceName, "",
-                         "invalid JSON: " + (pos == std::string::npos ? what : what.substr(pos + 2)));
-    }
+    PathTrackingSax sax(root, sourceName);
+    json::sax_parse(text, &sax);
     Scene scene = Reader(sourceName).read(root);
     if (auto problem = validateScene(scene))
         throw SceneError(sourceName, problem->jsonPath, problem->reason);
@@ -450,8 +525,9 @@ std::string sceneToJson(const Scene& s) {
                                            {"transparency", num(m.transparency)},
                                            {"ior", num(m.ior)}};
                                if (m.checker)
-                                   f.push_back({"checker", object({{"color", vec(m.checker->color)},
-                                                                   {"size", num(m.checker->size)}})});
+                                   f.push_back(
+                                       {"checker", object({{"color", vec(m.checker->color)},
+                                                           {"size", num(m.checker->size)}})});
                                return object(f);
                            })},
         {"lights", list(s.lights,
@@ -461,17 +537,21 @@ std::string sceneToJson(const Scene& s) {
                                            {"color", vec(l.color)},
                                            {"intensity", num(l.intensity)}});
                         })},
-        {"spheres", list(s.spheres, [](const Sphere& sp) {
-             return object({{"name", quoted(sp.name)},
-                            {"center", vec(sp.center)},
-                            {"radius", num(sp.radius)},
-                            {"material", quoted(sp.material)}});
-         })},
+        {"spheres", list(s.spheres,
+                         [](const Sphere& sp) {
+                             return object({{"name", quoted(sp.name)},
+                                            {"center", vec(sp.center)},
+                                            {"radius", num(sp.radius)},
+                                            {"material", quoted(sp.material)}});
+                         })},
     };
     std::string out = "{\n";
     for (size_t i = 0; i < top.size(); ++i)
-        out.append("  \"").append(top[i].first).append("\": ").append(top[i].second).append(
-            i + 1 < top.size() ? ",\n" : "\n");
+        out.append("  \"")
+            .append(top[i].first)
+            .append("\": ")
+            .append(top[i].second)
+            .append(i + 1 < top.size() ? ",\n" : "\n");
     return out + "}\n";
 }
 

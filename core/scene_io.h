@@ -16,13 +16,13 @@ inline constexpr int kSceneFormatVersion = 1;
 // A refused scene. what() is the whole user-facing message:
 // "<file>: <json path>: <reason>", e.g. "a.json: spheres[2].radius: must be > 0".
 class SceneError : public std::runtime_error {
-public:
+  public:
     SceneError(std::string file, std::string jsonPath, std::string reason);
     const std::string& file() const { return file_; }
     const std::string& jsonPath() const { return path_; }
     const std::string& reason() const { return reason_; }
 
-private:
+  private:
     std::string file_, path_, reason_;
 };
 

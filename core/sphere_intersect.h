@@ -38,20 +38,25 @@ inline void twoSum(T a, T b, T& s, T& e) {
     e = (a - (s - bb)) + (b - bb);
 }
 
-// p + e == a * a exactly.
+// p + e == a * b exactly.
+template <typename T>
+inline void twoProduct(T a, T b, T& p, T& e) {
+    p = a * b;
+#ifdef __FMA__
+    e = std::fma(a, b, -p);
+#else
+    // Dekker's split: each factor == hi + lo with halves short enough to multiply exactly.
+    constexpr T splitter = sizeof(T) == 4 ? T(4097) : T(134217729);  // 2^12+1, 2^27+1
+    const T ta = splitter * a, tb = splitter * b;
+    const T ahi = ta - (ta - a), bhi = tb - (tb - b);
+    const T alo = a - ahi, blo = b - bhi;
+    e = ((ahi * bhi - p) + ahi * blo + alo * bhi) + alo * blo;
+#endif
+}
+
 template <typename T>
 inline void twoSquare(T a, T& p, T& e) {
-    p = a * a;
-#ifdef __FMA__
-    e = std::fma(a, a, -p);
-#else
-    // Dekker's split: a == hi + lo with each half short enough to square exactly.
-    constexpr T splitter = sizeof(T) == 4 ? T(4097) : T(134217729);  // 2^12+1, 2^27+1
-    const T t = splitter * a;
-    const T hi = t - (t - a);
-    const T lo = a - hi;
-    e = ((hi * hi - p) + T(2) * hi * lo) + lo * lo;
-#endif
+    twoProduct(a, a, p, e);
 }
 
 }  // namespace exact
@@ -103,7 +108,8 @@ inline std::optional<SphereRoots<T>> intersectSphere(const Vec<T>& o, const Vec<
         disc = rrHi - (perp.x * perp.x + perp.y * perp.y + perp.z * perp.z);
     }
     if (!(disc >= T(0))) return std::nullopt;
-    const T q = -b - std::copysign(std::sqrt(disc), b);
+    const T root = std::sqrt(disc);
+    const T q = -b - (b < T(0) ? -root : root);  // no cancellation: -b and the root agree in sign
     if (q == T(0)) return SphereRoots<T>{T(0), T(0)};  // origin at the centre of a point sphere
     const T t0 = c / q;
     const T t1 = q;

@@ -16,6 +16,7 @@
 
 #include "camera.h"
 #include "scene.h"
+#include "sphere_block.h"
 #include "sphere_intersect.h"
 
 namespace whitted {
@@ -42,9 +43,7 @@ struct Ray {
     Vec<T> dir;               // unit length
     int originSphere = -1;    // the sphere the ray leaves, -1 for camera rays
     bool intoOrigin = false;  // the ray goes into originSphere (refraction, inner reflection)
-    // Per sphere, |origin - centre|^2 - r^2 computed once for rays that share
-    // this origin (camera rays); null for others.
-    const std::vector<T>* offsetSquared = nullptr;
+    bool fromCamera = false;  // origin is the camera position: reuse its cached offsets
 };
 
 template <typename T>
@@ -70,7 +69,7 @@ struct PreparedScene {
     std::vector<Vec<T>> centre;
     std::vector<T> radius, rrHi, rrLo;  // rrHi + rrLo == radius^2 exactly
     std::vector<int> material;
-    std::vector<T> cameraOffsetSquared;  // accurateOffsetSquared() from the camera position
+    SphereBlocks<T> blocks;  // the same spheres, laid out for intersectBlock()
     std::vector<PreparedMaterial<T>> materials;
     std::vector<PreparedLight<T>> lights;
     Vec<T> background, ambient;
@@ -99,14 +98,27 @@ std::optional<Hit<T>> closestHit(const PreparedScene<T>& s, const Ray<T>& ray,
 template <typename T>
 Vec<T> traceRay(const PreparedScene<T>& s, const Ray<T>& ray, int depth, RayCounts& counts);
 
-// One camera sample through pixel (i, j) at sub-pixel offset (u, v); counts the camera ray.
+// A camera sample: pixel (i, j) at sub-pixel offset (u, v) in [0,1)^2.
+template <typename T>
+struct CameraSample {
+    int i, j;
+    T u, v;
+};
+
+// Radiance for `count` camera samples (any count; they are intersected with
+// the scene several rays at a time). Counts the camera rays. Each result is the
+// same as tracing that sample alone.
+template <typename T>
+void traceCameraSamples(const PreparedScene<T>& s, const CameraSample<T>* samples, int count,
+                        Vec<T>* radiance, RayCounts& counts);
+
+// One camera sample; the same result as traceCameraSamples() gives for it.
 template <typename T>
 Vec<T> tracePixelSample(const PreparedScene<T>& s, int i, int j, T u, T v, RayCounts& counts);
 
-// Mean of samples [first, last) of pixel (i, j), accumulated in sample order into `sum`.
+// Sub-pixel offset of sample n of pixel (i, j) for the scene's samples_per_pixel (SPEC §4).
 template <typename T>
-void accumulatePixel(const PreparedScene<T>& s, int i, int j, int first, int last,
-                     glm::dvec3& sum, RayCounts& counts);
+CameraSample<T> pixelSample(const PreparedScene<T>& s, int i, int j, int n);
 
 // Reflection of unit d about unit n.
 template <typename T>

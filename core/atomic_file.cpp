@@ -17,9 +17,14 @@ namespace {
 
 fs::path temporaryBeside(const fs::path& target) {
     static std::atomic<unsigned> counter{0};
-    const std::string name = "." + target.filename().string() + ".tmp" +
-                             std::to_string(::getpid()) + "-" + std::to_string(counter++) +
-                             target.extension().string();
+    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "." + std::string.
+    std::string name = ".";
+    name.append(target.filename().string())
+        .append(".tmp")
+        .append(std::to_string(::getpid()))
+        .append("-")
+        .append(std::to_string(counter++))
+        .append(target.extension().string());
     return target.parent_path() / name;
 }
 

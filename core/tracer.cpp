@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "ray_packet.h"
 #include "sampling.h"
 
 namespace whitted {
@@ -52,6 +53,7 @@ PreparedScene<T> prepareScene(const Scene& scene) {
         s.rrHi.push_back(hi);
         s.rrLo.push_back(lo);
         s.material.push_back(findMaterial(scene, sp.material));
+        s.transparency.push_back(s.materials[s.material.back()].transparency);
         cameraC.push_back(accurateOffsetSquared(s.camera.origin, s.centre.back(), hi, lo));
     }
     s.blocks.assign(s.centre, s.rrHi, s.rrLo, cameraC);
@@ -172,188 +174,180 @@ Vec<T> diffuseAt(const PreparedScene<T>& s, int k, const PreparedMaterial<T>& m,
     return odd ? m.checkerColor : m.diffuse;
 }
 
-// S_j: the product of the transparencies of every sphere between p and the light.
+// What shading needs to know about one lane's hit.
 template <typename T>
-T shadowTransmittance(const PreparedScene<T>& s, const Ray<T>& ray, T distance) {
-    constexpr int W = SphereBlock<T>::kWidth;
-    T transmittance = 1;
-    const int blocks = static_cast<int>(s.blocks.blocks.size());
-    for (int bi = 0; bi < blocks; ++bi) {
-        const BlockRoots<T> r =
-            intersectBlock(s.blocks.blocks[bi], ray.origin, ray.dir, false, lanesToTest(bi, ray));
-        for (unsigned bits = r.valid; bits; bits &= bits - 1) {
+struct SurfaceHit {
+    Vec<T> p;        // hit point
+    Vec<T> outward;  // unit outward normal
+    Vec<T> n;        // unit normal facing the incoming ray
+    Vec<T> kd;       // diffuse colour at p
+    const PreparedMaterial<T>* m;
+    int sphere;
+    bool inside;  // the ray hit the surface from within
+};
+
+// Adds every light's diffuse and specular term to `radiance`, with one packet of
+// shadow rays per light.
+template <typename T>
+void addLights(const PreparedScene<T>& s, const RayPacket<T>& rays, const SurfaceHit<T>* hit,
+               unsigned lanes, Vec<T>* radiance, RayCounts& counts) {
+    using V = typename Simd<T>::type;
+    constexpr int W = RayPacket<T>::kWidth;
+    for (const PreparedLight<T>& light : s.lights) {
+        RayPacket<T> shadow;
+        shadow.count = rays.count;
+        V distance{}, nl{};
+        unsigned active = 0;
+        for (unsigned bits = lanes; bits; bits &= bits - 1) {
             const int l = __builtin_ctz(bits);
-            const int k = bi * W + l;
-            const T tNear = r.tNear[l], tFar = r.tFar[l];
-            const bool crosses = k == ray.originSphere ? tFar < distance
-                                                       : (tNear > T(0) && tNear < distance) ||
-                                                             (tFar > T(0) && tFar < distance);
-            if (!crosses) continue;
-            transmittance *= s.materials[s.material[k]].transparency;
-            if (transmittance == T(0)) return transmittance;
-        }
-    }
-    return transmittance;
-}
-
-template <typename T>
-Vec<T> shade(const PreparedScene<T>& s, const Ray<T>& ray, const Hit<T>& hit, int depth,
-             RayCounts& counts) {
-    const int k = hit.sphere;
-    const PreparedMaterial<T>& m = s.materials[s.material[k]];
-    const Vec<T> p = ray.origin + hit.t * ray.dir;
-    // Normalised, not divided by the radius: p is off the surface by its rounding
-    // error, and a normal that is not unit length makes reflect() lengthen the
-    // ray, which puts the next hit further off; inside glass that error grew
-    // sevenfold per internal reflection until float renders showed speckles.
-    const Vec<T> outward = glm::normalize(p - s.centre[k]);
-    // The ray is inside the sphere when it hits the surface from within.
-    const bool inside = dot3(ray.dir, outward) > T(0);
-    const Vec<T> n = inside ? -outward : outward;
-    const Vec<T> kd = diffuseAt(s, k, m, p, outward);
-
-    Vec<T> colour = s.ambient * kd;
-    if (m.lit) {
-        for (const PreparedLight<T>& light : s.lights) {
-            Vec<T> l = light.position - p;
-            const T distance = std::sqrt(dot3(l, l));
-            if (!(distance > T(0))) continue;
-            l *= T(1) / distance;
-            const T nl = dot3(n, l);
-            if (nl <= T(0)) continue;
-            ++counts.shadow;
+            const SurfaceHit<T>& h = hit[l];
+            if (!h.m->lit) continue;
+            Vec<T> dir = light.position - h.p;
+            const T d = std::sqrt(dot3(dir, dir));
+            if (!(d > T(0))) continue;
+            dir *= T(1) / d;
+            const T cosine = dot3(h.n, dir);
+            if (cosine <= T(0)) continue;
             // The shadow ray goes into the sphere when it leaves p against the outward normal.
-            const Ray<T> shadowRay{p, l, k, dot3(l, outward) < T(0)};
-            const T sj = shadowTransmittance(s, shadowRay, distance);
-            if (sj == T(0)) continue;
-            Vec<T> term = kd * nl;
-            if (m.specular > T(0)) {
-                const Vec<T> h = glm::normalize(l - ray.dir);
-                const T nh = dot3(n, h);
+            shadow.set(l, h.p, dir, h.sphere, dot3(dir, h.outward) < T(0));
+            distance[l] = d;
+            nl[l] = cosine;
+            active |= 1u << l;
+        }
+        if (!active) continue;
+        counts.shadow += __builtin_popcount(active);
+        const V sj = packetTransmittance(s.blocks, s.transparency, shadow, distance, active);
+        for (unsigned bits = active; bits; bits &= bits - 1) {
+            const int l = __builtin_ctz(bits);
+            if (sj[l] == T(0)) continue;
+            const SurfaceHit<T>& h = hit[l];
+            Vec<T> term = h.kd * nl[l];
+            if (h.m->specular > T(0)) {
+                const Vec<T> half = glm::normalize(shadow.dir(l) - rays.dir(l));
+                const T nh = dot3(h.n, half);
                 if (nh > T(0)) {
-                    const T spec = m.integerShininess >= 0 ? powInt(nh, m.integerShininess)
-                                                           : std::pow(nh, m.shininess);
-                    term += Vec<T>(m.specular * spec);
+                    const T spec = h.m->integerShininess >= 0 ? powInt(nh, h.m->integerShininess)
+                                                              : std::pow(nh, h.m->shininess);
+                    term += Vec<T>(h.m->specular * spec);
                 }
             }
-            colour += sj * light.color * term;
+            radiance[l] += sj[l] * light.color * term;
         }
     }
+    (void)W;
+}
 
-    if (depth >= s.maxDepth) return colour;
-    T reflectWeight = m.reflectivity;
-    if (m.transparency > T(0)) {
-        const T eta = inside ? m.ior : T(1) / m.ior;
-        if (auto t = refract(ray.dir, n, eta)) {
-            ++counts.refraction;
-            // Refracted rays cross the surface: into the sphere from outside, out of it from
-            // inside.
-            const Ray<T> refracted{p, *t, k, !inside};
-            colour += m.transparency * traceRay(s, refracted, depth + 1, counts);
-        } else {
-            // Total internal reflection: the refracted share follows the reflected ray,
-            // which is traced once for both shares.
-            reflectWeight += m.transparency;
+// Radiance along every ray of a packet at the given depth: the Whitted sum of
+// SPEC §3 per lane, with the secondary rays of all lanes traced as packets.
+template <typename T>
+void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth, Vec<T>* radiance,
+                 RayCounts& counts) {
+    using V = typename Simd<T>::type;
+    constexpr int W = RayPacket<T>::kWidth;
+    V tHit, kHit;
+    packetClosestHits(s.blocks, rays, tHit, kHit);
+
+    SurfaceHit<T> hit[W];
+    unsigned lanes = 0;
+    for (int l = 0; l < rays.count; ++l) {
+        if (kHit[l] < T(0)) {
+            radiance[l] = s.background;
+            continue;
+        }
+        SurfaceHit<T>& h = hit[l];
+        h.sphere = static_cast<int>(kHit[l]);
+        h.m = &s.materials[s.material[h.sphere]];
+        const Vec<T> d = rays.dir(l);
+        h.p = rays.origin(l) + tHit[l] * d;
+        // Normalised, not divided by the radius: p is off the surface by its
+        // rounding error, and a normal that is not unit length makes reflect()
+        // lengthen the ray, which puts the next hit further off; inside glass
+        // that error grew sevenfold per internal reflection until float
+        // renders showed speckles.
+        h.outward = glm::normalize(h.p - s.centre[h.sphere]);
+        h.inside = dot3(d, h.outward) > T(0);
+        h.n = h.inside ? -h.outward : h.outward;
+        h.kd = diffuseAt(s, h.sphere, *h.m, h.p, h.outward);
+        radiance[l] = s.ambient * h.kd;
+        lanes |= 1u << l;
+    }
+    if (!lanes) return;
+    if (!s.lights.empty()) addLights(s, rays, hit, lanes, radiance, counts);
+    if (depth >= s.maxDepth) return;
+
+    // Refraction first, then reflection, each lane adding in the order of the formula.
+    RayPacket<T> refracted, reflected;
+    int refractedLane[W], reflectedLane[W];
+    T reflectWeight[W];
+    for (unsigned bits = lanes; bits; bits &= bits - 1) {
+        const int l = __builtin_ctz(bits);
+        const SurfaceHit<T>& h = hit[l];
+        const Vec<T> d = rays.dir(l);
+        reflectWeight[l] = h.m->reflectivity;
+        if (h.m->transparency > T(0)) {
+            const T eta = h.inside ? h.m->ior : T(1) / h.m->ior;
+            if (auto t = refract(d, h.n, eta)) {
+                // Refracted rays cross the surface: into the sphere from outside, out from inside.
+                refractedLane[refracted.count] = l;
+                refracted.set(refracted.count++, h.p, *t, h.sphere, !h.inside);
+            } else {
+                // Total internal reflection: the refracted share follows the reflected
+                // ray, which is traced once for both shares.
+                reflectWeight[l] += h.m->transparency;
+            }
+        }
+        if (reflectWeight[l] > T(0)) {
+            reflectedLane[reflected.count] = l;
+            reflected.set(reflected.count++, h.p, reflect(d, h.n), h.sphere, h.inside);
         }
     }
-    if (reflectWeight > T(0)) {
-        ++counts.reflection;
-        const Ray<T> reflected{p, reflect(ray.dir, n), k, inside};
-        colour += reflectWeight * traceRay(s, reflected, depth + 1, counts);
+    Vec<T> sub[W];
+    if (refracted.count) {
+        counts.refraction += refracted.count;
+        tracePacket(s, refracted, depth + 1, sub, counts);
+        for (int i = 0; i < refracted.count; ++i) {
+            const int l = refractedLane[i];
+            radiance[l] += hit[l].m->transparency * sub[i];
+        }
     }
-    return colour;
+    if (reflected.count) {
+        counts.reflection += reflected.count;
+        tracePacket(s, reflected, depth + 1, sub, counts);
+        for (int i = 0; i < reflected.count; ++i) {
+            const int l = reflectedLane[i];
+            radiance[l] += reflectWeight[l] * sub[i];
+        }
+    }
 }
 
 }  // namespace
 
 template <typename T>
 Vec<T> traceRay(const PreparedScene<T>& s, const Ray<T>& ray, int depth, RayCounts& counts) {
-    const auto hit = closestHit(s, ray);
-    if (!hit) return s.background;
-    return shade(s, ray, *hit, depth, counts);
+    RayPacket<T> packet;
+    packet.count = 1;
+    packet.set(0, ray.origin, ray.dir, ray.originSphere, ray.intoOrigin);
+    packet.fromCamera = ray.fromCamera;
+    Vec<T> radiance;
+    tracePacket(s, packet, depth, &radiance, counts);
+    return radiance;
 }
-
-namespace {
-
-// Nearest hits of up to one packet of camera rays. Camera rays share their
-// origin, so the offsets f = o - centre, |f|^2 and c are per sphere, not per ray,
-// and the packet runs over rays instead of spheres. Each lane performs the
-// operations of intersectBlock() for that sphere in the same order, so a
-// camera ray finds the same hit here as through closestHit().
-template <typename T>
-void cameraHits(const PreparedScene<T>& s, const Vec<T>* dirs, int count, T* tHit, int* kHit) {
-    using V = typename Simd<T>::type;
-    constexpr int W = SphereBlock<T>::kWidth;
-    V dx{}, dy{}, dz{};
-    for (int l = 0; l < count; ++l) {
-        dx[l] = dirs[l].x;
-        dy[l] = dirs[l].y;
-        dz[l] = dirs[l].z;
-    }
-    V bestT = V{} + std::numeric_limits<T>::infinity();
-    V bestK = V{} - T(1);  // sphere index as T: exact for any realistic count
-    const Vec<T>& o = s.camera.origin;
-    const int n = s.blocks.count;
-    for (int k = 0; k < n; ++k) {
-        const SphereBlock<T>& blk = s.blocks.blocks[k / W];
-        const int lane = k % W;
-        const T fx = o.x - blk.cx[lane], fy = o.y - blk.cy[lane], fz = o.z - blk.cz[lane];
-        const T ff = fx * fx + fy * fy + fz * fz;
-        const T c = blk.cameraC[lane];
-        const T rrHi = blk.rrHi[lane];
-        const bool outside = c > ff * (T(16) * std::numeric_limits<T>::epsilon());
-        const bool nearSurface = c < ff * T(0.0625) && c > -(ff * T(0.0625));
-        const V b = fx * dx + fy * dy + fz * dz;
-        V disc;
-        if (nearSurface) {
-            disc = b * b - c;
-        } else {
-            const V px = fx - b * dx, py = fy - b * dy, pz = fz - b * dz;
-            disc = rrHi - (px * px + py * py + pz * pz);
-        }
-        auto hit = disc >= T(0);
-        if (outside) hit &= ~(b > T(0));
-        if (!laneBits(hit)) continue;
-        const V root = laneSqrt(hit ? disc : V{});
-        const V q = -b - (b < T(0) ? -root : root);
-        const auto zero = q == T(0);
-        const V t0 = zero ? V{} : c / (zero ? V{} + T(1) : q);
-        const V t1 = zero ? V{} : q;
-        const auto ordered = t0 < t1;
-        const V tNear = ordered ? t0 : t1, tFar = ordered ? t1 : t0;
-        const V t = tNear > T(0) ? tNear : tFar;
-        const auto better = hit & (t > T(0)) & (t < bestT);
-        bestT = better ? t : bestT;
-        bestK = better ? V{} + T(k) : bestK;
-    }
-    for (int l = 0; l < count; ++l) {
-        tHit[l] = bestT[l];
-        kHit[l] = static_cast<int>(bestK[l]);
-    }
-}
-
-}  // namespace
 
 template <typename T>
 void traceCameraSamples(const PreparedScene<T>& s, const CameraSample<T>* samples, int count,
                         Vec<T>* radiance, RayCounts& counts) {
-    constexpr int W = SphereBlock<T>::kWidth;
+    constexpr int W = RayPacket<T>::kWidth;
     for (int first = 0; first < count; first += W) {
-        const int m = std::min(W, count - first);
-        Vec<T> dirs[W];
-        T t[W];
-        int k[W];
-        for (int l = 0; l < m; ++l) {
+        RayPacket<T> packet;
+        packet.count = std::min(W, count - first);
+        packet.fromCamera = true;
+        for (int l = 0; l < packet.count; ++l) {
             const CameraSample<T>& cs = samples[first + l];
-            dirs[l] = cameraDirection(s.camera, cs.i, cs.j, cs.u, cs.v);
+            packet.set(l, s.camera.origin, cameraDirection(s.camera, cs.i, cs.j, cs.u, cs.v), -1,
+                       false);
         }
-        cameraHits(s, dirs, m, t, k);
-        counts.camera += m;
-        for (int l = 0; l < m; ++l) {
-            const Ray<T> ray{s.camera.origin, dirs[l], -1, false, true};
-            radiance[first + l] =
-                k[l] < 0 ? s.background : shade(s, ray, Hit<T>{t[l], k[l]}, 0, counts);
-        }
+        counts.camera += packet.count;
+        tracePacket(s, packet, 0, radiance + first, counts);
     }
 }
 

@@ -69,7 +69,8 @@ struct PreparedScene {
     std::vector<Vec<T>> centre;
     std::vector<T> radius, rrHi, rrLo;  // rrHi + rrLo == radius^2 exactly
     std::vector<int> material;
-    SphereBlocks<T> blocks;  // the same spheres, laid out for intersectBlock()
+    std::vector<T> transparency;  // per sphere, from its material: the shadow-ray factor
+    SphereBlocks<T> blocks;       // the same spheres, laid out for intersectBlock()
     std::vector<PreparedMaterial<T>> materials;
     std::vector<PreparedLight<T>> lights;
     Vec<T> background, ambient;

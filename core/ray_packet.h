@@ -1,0 +1,157 @@
+// Packets of rays intersected with the scene several at a time.
+//
+// Where sphere_block.h runs one ray against several spheres, this runs several
+// rays (8 floats or 4 doubles) against one sphere after another: shadow rays
+// towards one light, the reflected rays of neighbouring pixels and camera rays
+// come in such groups. Every lane performs exactly the operations of
+// intersectSphere() in the same order, so a ray finds the same hit alone or in
+// a packet, whatever its neighbours (tests/core/test_ray_packet.cpp).
+#pragma once
+
+#include <limits>
+#include <type_traits>
+
+#include "sphere_block.h"
+
+namespace whitted {
+
+template <typename T>
+struct RayPacket {
+    static constexpr int kWidth = SphereBlock<T>::kWidth;
+    using V = typename Simd<T>::type;
+    using Mask = decltype(V{} < V{});
+    using MaskLane = std::remove_reference_t<decltype(Mask{}[0])>;  // int32 or int64
+
+    V ox{}, oy{}, oz{};  // origins
+    V dx{}, dy{}, dz{};  // unit directions
+    // The sphere each ray leaves (-1: none) as T, so lanes compare in one
+    // instruction; exact for any sphere count a scene file can hold in memory.
+    V originSphere = V{} - T(1);
+    Mask intoOrigin{};        // the ray goes into originSphere
+    bool fromCamera = false;  // every origin is the camera position
+    int count = 0;            // lanes in use: [0, count)
+
+    void set(int l, const Vec<T>& o, const Vec<T>& d, int sphere, bool into) {
+        ox[l] = o.x;
+        oy[l] = o.y;
+        oz[l] = o.z;
+        dx[l] = d.x;
+        dy[l] = d.y;
+        dz[l] = d.z;
+        originSphere[l] = T(sphere);
+        intoOrigin[l] = into ? MaskLane(-1) : MaskLane(0);
+    }
+    Vec<T> origin(int l) const { return {ox[l], oy[l], oz[l]}; }
+    Vec<T> dir(int l) const { return {dx[l], dy[l], dz[l]}; }
+    unsigned usedLanes() const { return (1u << count) - 1; }
+};
+
+// The mask with lane l set where bit l of `bits` is.
+template <typename T>
+inline typename RayPacket<T>::Mask maskFromBits(unsigned bits) {
+    using Mask = typename RayPacket<T>::Mask;
+    Mask laneBit{};
+    for (int l = 0; l < RayPacket<T>::kWidth; ++l) laneBit[l] = 1 << l;  // folded at compile time
+    return (laneBit & static_cast<typename RayPacket<T>::MaskLane>(bits)) != 0;
+}
+
+// Roots of every lane's ray against sphere k. Lanes not set in `lanes`, and the
+// ray leaving sphere k outwards, report no hit and cost no exact fix-up.
+template <typename T>
+struct PacketRoots {
+    using V = typename Simd<T>::type;
+    V tNear, tFar;
+    typename RayPacket<T>::Mask self;  // lanes whose ray leaves (into) sphere k
+    typename RayPacket<T>::Mask hit;   // lanes whose line meets sphere k
+    unsigned valid;                    // the same as bits: bit l for lane l
+};
+
+template <typename T>
+inline PacketRoots<T> intersectPacket(const SphereBlocks<T>& spheres, int k, const RayPacket<T>& r,
+                                      unsigned lanes) {
+    using V = typename Simd<T>::type;
+    constexpr int W = SphereBlock<T>::kWidth;
+    const SphereBlock<T>& blk = spheres.blocks[k / W];
+    const int lane = k % W;
+    const T cx = blk.cx[lane], cy = blk.cy[lane], cz = blk.cz[lane];
+    const T rrHi = blk.rrHi[lane], rrLo = blk.rrLo[lane];
+    PacketRoots<T> out;
+    out.self = r.originSphere == T(k);
+    lanes &= ~laneBits(out.self & ~r.intoOrigin);  // convex: leaving it, it cannot be hit again
+    out.valid = 0;
+    if (!lanes) return out;
+    const V fx = r.ox - cx, fy = r.oy - cy, fz = r.oz - cz;
+    const V b = fx * r.dx + fy * r.dy + fz * r.dz;
+    const V ff = fx * fx + fy * fy + fz * fz;
+    V c = r.fromCamera ? V{} + blk.cameraC[lane] : ff - rrHi;
+    const auto away = (b > T(0)) & (c > ff * (T(16) * std::numeric_limits<T>::epsilon()));
+    const auto nearSurface = (c < ff * T(0.0625)) & (c > -(ff * T(0.0625)));
+    if (!r.fromCamera) {
+        for (unsigned fix = laneBits(nearSurface & ~away) & lanes; fix; fix &= fix - 1) {
+            const int l = __builtin_ctz(fix);
+            c[l] = accurateOffsetSquared(r.origin(l), Vec<T>(cx, cy, cz), rrHi, rrLo);
+        }
+    }
+    const V px = fx - b * r.dx, py = fy - b * r.dy, pz = fz - b * r.dz;
+    const V discNear = b * b - c;
+    const V discFar = rrHi - (px * px + py * py + pz * pz);
+    const V disc = nearSurface ? discNear : discFar;
+    const auto hit = ~away & (disc >= T(0));
+    out.valid = laneBits(hit) & lanes;
+    if (!out.valid) return out;
+    out.hit = hit & maskFromBits<T>(lanes);
+    const V root = laneSqrt(hit ? disc : V{});
+    const V q = -b - (b < T(0) ? -root : root);  // as in intersectSphere()
+    const auto zero = q == T(0);
+    const V t0 = zero ? V{} : c / (zero ? V{} + T(1) : q);
+    const V t1 = zero ? V{} : q;
+    const auto ordered = t0 < t1;
+    out.tNear = ordered ? t0 : t1;
+    out.tFar = ordered ? t1 : t0;
+    return out;
+}
+
+// Nearest hit per lane with t in (0, infinity): t, and the sphere index as T
+// (-1 for a miss). Ties go to the lower sphere index, as in closestHit().
+template <typename T>
+inline void packetClosestHits(const SphereBlocks<T>& spheres, const RayPacket<T>& r,
+                              typename Simd<T>::type& tBest, typename Simd<T>::type& kBest) {
+    using V = typename Simd<T>::type;
+    tBest = V{} + std::numeric_limits<T>::infinity();
+    kBest = V{} - T(1);
+    for (int k = 0; k < spheres.count; ++k) {
+        const PacketRoots<T> roots = intersectPacket(spheres, k, r, r.usedLanes());
+        if (!roots.valid) continue;
+        // Going into its own sphere, a ray can only meet the far side.
+        const V t = roots.self ? roots.tFar : (roots.tNear > T(0) ? roots.tNear : roots.tFar);
+        const auto take = roots.hit & (t > T(0)) & (t < tBest);
+        tBest = take ? t : tBest;
+        kBest = take ? V{} + T(k) : kBest;
+    }
+}
+
+// S_j per lane: the product of the transparencies of the spheres each shadow
+// ray crosses before `distance`, in sphere order, as shadowTransmittance() does.
+template <typename T>
+inline typename Simd<T>::type packetTransmittance(const SphereBlocks<T>& spheres,
+                                                  const std::vector<T>& transparency,
+                                                  const RayPacket<T>& r,
+                                                  const typename Simd<T>::type& distance,
+                                                  unsigned lanes) {
+    using V = typename Simd<T>::type;
+    V s = V{} + T(1);
+    for (int k = 0; k < spheres.count && lanes; ++k) {
+        const PacketRoots<T> roots = intersectPacket(spheres, k, r, lanes);
+        if (!roots.valid) continue;
+        const auto crosses = roots.self ? roots.tFar < distance
+                                        : ((roots.tNear > T(0)) & (roots.tNear < distance)) |
+                                              ((roots.tFar > T(0)) & (roots.tFar < distance));
+        const auto take = crosses & roots.hit;
+        if (!laneBits(take)) continue;
+        s = take ? s * transparency[k] : s;
+        lanes &= ~laneBits(s == T(0));  // fully shadowed lanes are done
+    }
+    return s;
+}
+
+}  // namespace whitted

@@ -1,0 +1,262 @@
+// End-to-end tests of the whitted-render program (SPEC §7): exit codes, the image
+// and stats it writes, messages on stderr, and nothing left behind on failure.
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include <sys/wait.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "image_io.h"
+#include "test_support.h"
+
+namespace whitted {
+namespace {
+
+namespace fs = std::filesystem;
+using test::TempDir;
+
+const std::string kSeed = std::string(WHITTED_SCENES_DIR) + "/seed.json";
+
+std::string shellQuote(const std::string& s) {
+    std::string out = "'";
+    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+struct ProgramRun {
+    int exitCode = -1;
+    std::string err;  // everything on stderr
+    std::string out;  // everything on stdout
+};
+
+// Runs whitted-render with the arguments, stdout and stderr captured in files of `dir`.
+ProgramRun runRender(const TempDir& dir, const std::vector<std::string>& args) {
+    const fs::path errFile = dir.path().parent_path() / (dir.path().filename().string() + ".err");
+    const fs::path outFile = dir.path().parent_path() / (dir.path().filename().string() + ".out");
+    std::string cmd = shellQuote(WHITTED_RENDER_EXE);
+    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict, bug 105329) on
+    // "literal" + std::string chains at -O3.
+    for (const auto& a : args) cmd.append(" ").append(shellQuote(a));
+    cmd.append(" >").append(shellQuote(outFile.string()));
+    cmd.append(" 2>").append(shellQuote(errFile.string()));
+    const int status = std::system(cmd.c_str());
+    ProgramRun r;
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.err = test::readFile(errFile);
+    r.out = test::readFile(outFile);
+    fs::remove(errFile);
+    fs::remove(outFile);
+    return r;
+}
+
+std::string describe(const ProgramRun& r) {
+    return "exit " + std::to_string(r.exitCode) + "\n--- stderr ---\n" + r.err;
+}
+
+TEST(WhittedRender, SmallRender_ExitsZeroAndWritesImageOfRequestedSize) {
+    TempDir dir;
+    const fs::path out = dir / "seed.png";
+    const ProgramRun r = runRender(
+        dir, {kSeed, "-o", out.string(), "--width", "64", "--height", "48", "--threads", "2"});
+    ASSERT_EQ(r.exitCode, 0) << describe(r);
+    const Image img = readImage(out);
+    EXPECT_EQ(img.width, 64);
+    EXPECT_EQ(img.height, 48);
+    // The seed's floor and balls: not a blank image.
+    float lo = 1, hi = 0;
+    for (float v : img.rgb) lo = std::min(lo, v), hi = std::max(hi, v);
+    EXPECT_LT(lo, 0.05f);
+    EXPECT_GT(hi, 0.5f);
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"seed.png"}) << test::joined(dir.entries());
+}
+
+TEST(WhittedRender, EveryFormat_WritesReadableImage) {
+    TempDir dir;
+    for (const char* name : {"o.png", "o.jpg", "o.tif", "o.exr", "o.hdr"}) {
+        const fs::path out = dir / name;
+        const ProgramRun r = runRender(
+            dir, {kSeed, "-o", out.string(), "--width", "31", "--height", "17", "--quiet"});
+        ASSERT_EQ(r.exitCode, 0) << name << "\n" << describe(r);
+        const Image img = readImage(out);
+        EXPECT_EQ(img.width, 31) << name;
+        EXPECT_EQ(img.height, 17) << name;
+    }
+}
+
+TEST(WhittedRender, Stats_HaveEverySpecKeyAndConsistentRayCounts) {
+    TempDir dir;
+    const fs::path out = dir / "o.exr", stats = dir / "stats.json";
+    const ProgramRun r =
+        runRender(dir, {kSeed, "-o", out.string(), "--width", "40", "--height", "30", "--spp", "3",
+                        "--depth", "4", "--threads", "2", "--stats", stats.string()});
+    ASSERT_EQ(r.exitCode, 0) << describe(r);
+    const nlohmann::json j = nlohmann::json::parse(test::readFile(stats));
+    for (const char* key : {"width", "height", "samples_per_pixel", "max_depth", "precision",
+                            "threads", "seconds", "rays", "mrays_per_second"})
+        EXPECT_TRUE(j.contains(key)) << "missing " << key << " in\n" << j.dump(2);
+    for (const char* key : {"camera", "shadow", "reflection", "refraction", "total"})
+        EXPECT_TRUE(j["rays"].contains(key)) << "missing rays." << key << " in\n" << j.dump(2);
+    EXPECT_EQ(j["width"], 40);
+    EXPECT_EQ(j["height"], 30);
+    EXPECT_EQ(j["samples_per_pixel"], 3);
+    EXPECT_EQ(j["max_depth"], 4);
+    EXPECT_EQ(j["precision"], "float");  // the seed's own
+    EXPECT_EQ(j["threads"], 2);
+    EXPECT_GE(j["seconds"].get<double>(), 0.0);
+    EXPECT_GE(j["mrays_per_second"].get<double>(), 0.0);
+    const auto& rays = j["rays"];
+    const auto camera = rays["camera"].get<std::uint64_t>();
+    EXPECT_EQ(camera, 40u * 30u * 3u);
+    EXPECT_EQ(rays["total"].get<std::uint64_t>(), camera + rays["shadow"].get<std::uint64_t>() +
+                                                      rays["reflection"].get<std::uint64_t>() +
+                                                      rays["refraction"].get<std::uint64_t>());
+    EXPECT_GT(rays["shadow"].get<std::uint64_t>(), 0u);
+    EXPECT_GT(rays["reflection"].get<std::uint64_t>(), 0u);
+}
+
+TEST(WhittedRender, Flags_OverrideSceneSettings) {
+    TempDir dir;
+    const fs::path out = dir / "o.tif", stats = dir / "stats.json";
+    const ProgramRun r =
+        runRender(dir, {kSeed, "-o", out.string(), "--width", "20", "--height", "10", "--precision",
+                        "double", "--depth", "0", "--stats", stats.string(), "--quiet"});
+    ASSERT_EQ(r.exitCode, 0) << describe(r);
+    const nlohmann::json j = nlohmann::json::parse(test::readFile(stats));
+    EXPECT_EQ(j["precision"], "double");
+    EXPECT_EQ(j["max_depth"], 0);
+    EXPECT_EQ(j["samples_per_pixel"], 1);  // the seed's own
+    EXPECT_EQ(j["rays"]["reflection"], 0) << "depth 0 must trace no reflections";
+    EXPECT_EQ(j["rays"]["camera"], 200);
+}
+
+TEST(WhittedRender, Quiet_PrintsNothingOnSuccess) {
+    TempDir dir;
+    const ProgramRun r = runRender(
+        dir, {kSeed, "-o", (dir / "q.png").string(), "--width", "16", "--height", "12", "--quiet"});
+    ASSERT_EQ(r.exitCode, 0) << describe(r);
+    EXPECT_EQ(r.err, "");
+    EXPECT_EQ(r.out, "");
+}
+
+TEST(WhittedRender, WithoutQuiet_ReportsWhatItWrote) {
+    TempDir dir;
+    const fs::path out = dir / "v.png";
+    const ProgramRun r =
+        runRender(dir, {kSeed, "-o", out.string(), "--width", "16", "--height", "12"});
+    ASSERT_EQ(r.exitCode, 0) << describe(r);
+    EXPECT_NE(r.err.find(out.string()), std::string::npos) << r.err;
+}
+
+// ---- bad input: exit 2, message on stderr, no output -----------------------------
+
+TEST(WhittedRender, BadSceneFile_ExitsTwoNamingFileAndJsonPath) {
+    TempDir dir;
+    nlohmann::json j = nlohmann::json::parse(test::readFile(kSeed));
+    j["spheres"][2]["radius"] = -0.6;
+    const fs::path scene = dir / "bad.json", out = dir / "o.png";
+    test::writeFile(scene, j.dump(2));
+    const ProgramRun r = runRender(dir, {scene.string(), "-o", out.string()});
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_NE(r.err.find(scene.string()), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("spheres[2].radius"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"bad.json"}) << test::joined(dir.entries());
+}
+
+TEST(WhittedRender, SceneWithInfiniteNumber_ExitsTwoNamingJsonPath) {
+    TempDir dir;
+    std::string text = test::readFile(kSeed);
+    const std::string from = "\"radius\": 0.6";
+    ASSERT_NE(text.find(from), std::string::npos);
+    text.replace(text.find(from), from.size(), "\"radius\": 1e999");  // spheres[0]
+    const fs::path scene = dir / "inf.json", out = dir / "o.png";
+    test::writeFile(scene, text);
+    const ProgramRun r = runRender(dir, {scene.string(), "-o", out.string()});
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_NE(r.err.find(scene.string()), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("spheres[0].radius"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(WhittedRender, InvalidJson_ExitsTwoNamingFile) {
+    TempDir dir;
+    const fs::path scene = dir / "broken.json", out = dir / "o.png";
+    test::writeFile(scene, "{\"format\": \"whitted-scene\", \"version\": 1,");
+    const ProgramRun r = runRender(dir, {scene.string(), "-o", out.string()});
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_NE(r.err.find(scene.string()), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(WhittedRender, MissingSceneFile_ExitsTwo) {
+    TempDir dir;
+    const fs::path scene = dir / "nothing here.json", out = dir / "o.png";
+    const ProgramRun r = runRender(dir, {scene.string(), "-o", out.string()});
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_NE(r.err.find("nothing here.json"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(WhittedRender, BadFlags_ExitTwoWithMessageAndNoOutput) {
+    TempDir dir;
+    const fs::path out = dir / "o.png";
+    const std::vector<std::vector<std::string>> cases = {
+        {"--spp", "0"},        {"--spp", "65537"}, {"--precision", "half"}, {"--width", "0"},
+        {"--height", "16385"}, {"--depth", "65"},  {"--depth", "-1"},       {"--threads", "-2"},
+        {"--width", "many"},   {"--frobnicate"},
+    };
+    for (const auto& flags : cases) {
+        std::vector<std::string> args = {kSeed, "-o", out.string()};
+        args.insert(args.end(), flags.begin(), flags.end());
+        const ProgramRun r = runRender(dir, args);
+        std::string label;
+        for (const auto& f : flags) label += f + " ";
+        EXPECT_EQ(r.exitCode, 2) << label << describe(r);
+        EXPECT_FALSE(r.err.empty()) << label;
+        EXPECT_FALSE(fs::exists(out)) << label;
+    }
+    // No output flag at all, and no scene at all.
+    EXPECT_EQ(runRender(dir, {kSeed}).exitCode, 2);
+    EXPECT_EQ(runRender(dir, {"-o", out.string()}).exitCode, 2);
+    EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
+}
+
+TEST(WhittedRender, UnknownOutputExtension_ExitsTwoAndWritesNothing) {
+    TempDir dir;
+    for (const char* name : {"o.bmp", "o", "o.gif"}) {
+        const fs::path out = dir / name;
+        const ProgramRun r =
+            runRender(dir, {kSeed, "-o", out.string(), "--width", "8", "--height", "8"});
+        EXPECT_EQ(r.exitCode, 2) << name << "\n" << describe(r);
+        EXPECT_NE(r.err.find(name), std::string::npos) << r.err;
+    }
+    EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
+}
+
+// ---- other failures: exit 1 -------------------------------------------------------
+
+TEST(WhittedRender, UnwritableOutput_ExitsOneAndLeavesNoFile) {
+    TempDir dir;
+    const fs::path out = dir / "no such dir" / "o.png";
+    const ProgramRun r =
+        runRender(dir, {kSeed, "-o", out.string(), "--width", "8", "--height", "8", "--quiet"});
+    EXPECT_EQ(r.exitCode, 1) << describe(r);
+    EXPECT_NE(r.err.find("o.png"), std::string::npos) << r.err;
+    EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
+}
+
+TEST(WhittedRender, UnwritableStats_ExitsOneAndRemovesTheImage) {
+    TempDir dir;
+    const fs::path out = dir / "o.png", stats = dir / "no such dir" / "stats.json";
+    const ProgramRun r = runRender(dir, {kSeed, "-o", out.string(), "--width", "8", "--height", "8",
+                                         "--stats", stats.string(), "--quiet"});
+    EXPECT_EQ(r.exitCode, 1) << describe(r);
+    EXPECT_NE(r.err.find("stats.json"), std::string::npos) << r.err;
+    EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
+}
+
+}  // namespace
+}  // namespace whitted

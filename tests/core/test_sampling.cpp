@@ -1,0 +1,140 @@
+// Tests for core/sampling.*: the pixel centre for one sample, stratified samples in
+// [0,1)^2 otherwise, and every sample a pure function of (index, count, seed).
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "sampling.h"
+
+namespace whitted {
+namespace {
+
+// The seeds tried: some real pixel seeds, a few extremes, and random ones (printed).
+std::vector<std::uint32_t> seedsToTry() {
+    std::vector<std::uint32_t> seeds = {0u, 1u, 0xffffffffu, 0x80000000u};
+    for (int j : {0, 1, 239, 16383})
+        for (int i : {0, 1, 319, 16383}) seeds.push_back(pixelSeed(i, j));
+    const unsigned seed = std::random_device{}();
+    std::printf("random seed for the seed list: %u\n", seed);
+    std::mt19937 rng(seed);
+    for (int k = 0; k < 40; ++k) seeds.push_back(rng());
+    return seeds;
+}
+
+TEST(Sampling, OneSample_IsPixelCentre) {
+    for (std::uint32_t seed : {0u, 7u, pixelSeed(3, 4), 0xffffffffu}) {
+        const SubPixel p = subPixelSample(0, 1, seed);
+        EXPECT_EQ(p.u, 0.5) << "seed " << seed;
+        EXPECT_EQ(p.v, 0.5) << "seed " << seed;
+    }
+}
+
+class SamplingStratified : public ::testing::TestWithParam<int> {};
+class SamplingSquareCount : public ::testing::TestWithParam<int> {};
+
+TEST_P(SamplingStratified, SamplesInUnitSquare_OnePerRowOfHeightOneOverN) {
+    const int n = GetParam();
+    for (const std::uint32_t seed : seedsToTry()) {
+        SCOPED_TRACE("pixel seed " + std::to_string(seed) + ", count " + std::to_string(n));
+        std::vector<int> rows(n, 0);
+        for (int s = 0; s < n; ++s) {
+            const SubPixel p = subPixelSample(s, n, seed);
+            ASSERT_GE(p.u, 0.0) << "sample " << s;
+            ASSERT_LT(p.u, 1.0) << "sample " << s;
+            ASSERT_GE(p.v, 0.0) << "sample " << s;
+            ASSERT_LT(p.v, 1.0) << "sample " << s;
+            // Row k is [k/n, (k+1)/n).
+            const int row = int(std::floor(p.v * n));
+            ASSERT_GE(row, 0);
+            ASSERT_LT(row, n);
+            ++rows[row];
+        }
+        for (int k = 0; k < n; ++k) EXPECT_EQ(rows[k], 1) << "row " << k;
+    }
+}
+
+TEST_P(SamplingSquareCount, AlsoOnePerColumnAndPerGridCell) {
+    const int n = GetParam();
+    const int m = int(std::lround(std::sqrt(double(n))));
+    ASSERT_EQ(m * m, n) << "instantiate with square counts only";
+    for (const std::uint32_t seed : seedsToTry()) {
+        SCOPED_TRACE("pixel seed " + std::to_string(seed));
+        std::vector<int> columns(n, 0), cells(n, 0);
+        for (int s = 0; s < n; ++s) {
+            const SubPixel p = subPixelSample(s, n, seed);
+            ++columns[int(std::floor(p.u * n))];
+            // And one per cell of the m x m grid (2D stratification).
+            ++cells[int(std::floor(p.v * m)) * m + int(std::floor(p.u * m))];
+        }
+        for (int k = 0; k < n; ++k) {
+            EXPECT_EQ(columns[k], 1) << "column " << k;
+            EXPECT_EQ(cells[k], 1) << "cell " << k;
+        }
+    }
+}
+
+TEST_P(SamplingStratified, SameIndexCountAndSeed_GiveSameValue) {
+    const int n = GetParam();
+    for (const std::uint32_t seed : seedsToTry()) {
+        std::vector<SubPixel> first;
+        for (int s = 0; s < n; ++s) first.push_back(subPixelSample(s, n, seed));
+        // Asked again, backwards: nothing depends on call order or state.
+        for (int s = n - 1; s >= 0; --s) {
+            const SubPixel again = subPixelSample(s, n, seed);
+            EXPECT_EQ(again.u, first[s].u) << "seed " << seed << ", sample " << s;
+            EXPECT_EQ(again.v, first[s].v) << "seed " << seed << ", sample " << s;
+        }
+    }
+}
+
+TEST_P(SamplingStratified, DifferentPixels_GetDifferentPatterns) {
+    const int n = GetParam();
+    // Jittered, not a fixed grid: over 16 neighbouring pixels sample 0 takes many values.
+    std::set<std::pair<double, double>> firstSamples;
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) {
+            const SubPixel p = subPixelSample(0, n, pixelSeed(i, j));
+            firstSamples.insert({p.u, p.v});
+        }
+    EXPECT_GE(firstSamples.size(), 12u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Counts, SamplingStratified, ::testing::Values(2, 4, 5, 16, 64, 100, 1000),
+                         [](const ::testing::TestParamInfo<int>& info) {
+                             return std::string("N").append(std::to_string(info.param));
+                         });
+
+INSTANTIATE_TEST_SUITE_P(Counts, SamplingSquareCount, ::testing::Values(4, 16, 64, 256),
+                         [](const ::testing::TestParamInfo<int>& info) {
+                             return std::string("N").append(std::to_string(info.param));
+                         });
+
+TEST(Sampling, PixelSeed_IsDeterministicAndDistinguishesNeighbours) {
+    EXPECT_EQ(pixelSeed(12, 34), pixelSeed(12, 34));
+    std::set<std::uint32_t> seeds;
+    for (int j = 0; j < 64; ++j)
+        for (int i = 0; i < 64; ++i) seeds.insert(pixelSeed(i, j));
+    EXPECT_EQ(seeds.size(), 64u * 64u) << "two pixels of a 64x64 block share a seed";
+    EXPECT_NE(pixelSeed(1, 0), pixelSeed(0, 1));
+}
+
+TEST(Sampling, MeanOfManyStratifiedSamples_IsNearPixelCentre) {
+    // Stratified in v with one sample per 1/N row: the mean v is within 1/(2N) of 0.5.
+    const int n = 256;
+    double su = 0, sv = 0;
+    for (int s = 0; s < n; ++s) {
+        const SubPixel p = subPixelSample(s, n, pixelSeed(5, 9));
+        su += p.u;
+        sv += p.v;
+    }
+    EXPECT_NEAR(sv / n, 0.5, 0.5 / n + 1e-12);
+    EXPECT_NEAR(su / n, 0.5, 0.02);
+}
+
+}  // namespace
+}  // namespace whitted

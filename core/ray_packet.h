@@ -11,6 +11,7 @@
 #include <limits>
 #include <type_traits>
 
+#include "simd_vec3.h"
 #include "sphere_block.h"
 
 namespace whitted {
@@ -29,7 +30,7 @@ struct RayPacket {
     V originSphere = V{} - T(1);
     Mask intoOrigin{};        // the ray goes into originSphere
     bool fromCamera = false;  // every origin is the camera position
-    int count = 0;            // lanes in use: [0, count)
+    unsigned active = 0;      // bit l: lane l holds a ray
 
     void set(int l, const Vec<T>& o, const Vec<T>& d, int sphere, bool into) {
         ox[l] = o.x;
@@ -40,10 +41,25 @@ struct RayPacket {
         dz[l] = d.z;
         originSphere[l] = T(sphere);
         intoOrigin[l] = into ? MaskLane(-1) : MaskLane(0);
+        active |= 1u << l;
+    }
+    // Every lane at once; `lanes` says which of them hold rays.
+    void assign(const Vec3x<T>& o, const Vec3x<T>& d, const V& sphere, const Mask& into,
+                unsigned lanes) {
+        ox = o.x;
+        oy = o.y;
+        oz = o.z;
+        dx = d.x;
+        dy = d.y;
+        dz = d.z;
+        originSphere = sphere;
+        intoOrigin = into;
+        active = lanes;
     }
     Vec<T> origin(int l) const { return {ox[l], oy[l], oz[l]}; }
     Vec<T> dir(int l) const { return {dx[l], dy[l], dz[l]}; }
-    unsigned usedLanes() const { return (1u << count) - 1; }
+    Vec3x<T> origins() const { return {ox, oy, oz}; }
+    Vec3x<T> dirs() const { return {dx, dy, dz}; }
 };
 
 // The mask with lane l set where bit l of `bits` is.
@@ -120,7 +136,7 @@ inline void packetClosestHits(const SphereBlocks<T>& spheres, const RayPacket<T>
     tBest = V{} + std::numeric_limits<T>::infinity();
     kBest = V{} - T(1);
     for (int k = 0; k < spheres.count; ++k) {
-        const PacketRoots<T> roots = intersectPacket(spheres, k, r, r.usedLanes());
+        const PacketRoots<T> roots = intersectPacket(spheres, k, r, r.active);
         if (!roots.valid) continue;
         // Going into its own sphere, a ray can only meet the far side.
         const V t = roots.self ? roots.tFar : (roots.tNear > T(0) ? roots.tNear : roots.tFar);

@@ -174,149 +174,153 @@ Vec<T> diffuseAt(const PreparedScene<T>& s, int k, const PreparedMaterial<T>& m,
     return odd ? m.checkerColor : m.diffuse;
 }
 
-// What shading needs to know about one lane's hit.
+// x^n per lane for whole exponents n >= 0, by squaring as powInt() does.
 template <typename T>
-struct SurfaceHit {
-    Vec<T> p;        // hit point
-    Vec<T> outward;  // unit outward normal
-    Vec<T> n;        // unit normal facing the incoming ray
-    Vec<T> kd;       // diffuse colour at p
-    const PreparedMaterial<T>* m;
-    int sphere;
-    bool inside;  // the ray hit the surface from within
+typename Simd<T>::type powLanes(typename Simd<T>::type x, typename RayPacket<T>::Mask n) {
+    using V = typename Simd<T>::type;
+    V result = V{} + T(1);
+    while (laneBits(n > 0)) {
+        result = (n & 1) != 0 ? result * x : result;
+        x = x * x;
+        n >>= 1;
+    }
+    return result;
+}
+
+// The sphere and material of every lane's hit, gathered into lanes.
+template <typename T>
+struct LaneMaterials {
+    using V = typename Simd<T>::type;
+    using Mask = typename RayPacket<T>::Mask;
+    Vec3x<T> centre, diffuse;
+    V specular{}, reflectivity{}, transparency{}, ior{};
+    Mask lit{}, checker{};
+    Mask shininessInt{};  // the whole shininess, or -1 for lanes that need std::pow
+    V shininess{};
 };
 
-// Adds every light's diffuse and specular term to `radiance`, with one packet of
-// shadow rays per light.
 template <typename T>
-void addLights(const PreparedScene<T>& s, const RayPacket<T>& rays, const SurfaceHit<T>* hit,
-               unsigned lanes, Vec<T>* radiance, RayCounts& counts) {
-    using V = typename Simd<T>::type;
-    constexpr int W = RayPacket<T>::kWidth;
-    for (const PreparedLight<T>& light : s.lights) {
-        RayPacket<T> shadow;
-        shadow.count = rays.count;
-        V distance{}, nl{};
-        unsigned active = 0;
-        for (unsigned bits = lanes; bits; bits &= bits - 1) {
-            const int l = __builtin_ctz(bits);
-            const SurfaceHit<T>& h = hit[l];
-            if (!h.m->lit) continue;
-            Vec<T> dir = light.position - h.p;
-            const T d = std::sqrt(dot3(dir, dir));
-            if (!(d > T(0))) continue;
-            dir *= T(1) / d;
-            const T cosine = dot3(h.n, dir);
-            if (cosine <= T(0)) continue;
-            // The shadow ray goes into the sphere when it leaves p against the outward normal.
-            shadow.set(l, h.p, dir, h.sphere, dot3(dir, h.outward) < T(0));
-            distance[l] = d;
-            nl[l] = cosine;
-            active |= 1u << l;
-        }
-        if (!active) continue;
-        counts.shadow += __builtin_popcount(active);
-        const V sj = packetTransmittance(s.blocks, s.transparency, shadow, distance, active);
-        for (unsigned bits = active; bits; bits &= bits - 1) {
-            const int l = __builtin_ctz(bits);
-            if (sj[l] == T(0)) continue;
-            const SurfaceHit<T>& h = hit[l];
-            Vec<T> term = h.kd * nl[l];
-            if (h.m->specular > T(0)) {
-                const Vec<T> half = glm::normalize(shadow.dir(l) - rays.dir(l));
-                const T nh = dot3(h.n, half);
-                if (nh > T(0)) {
-                    const T spec = h.m->integerShininess >= 0 ? powInt(nh, h.m->integerShininess)
-                                                              : std::pow(nh, h.m->shininess);
-                    term += Vec<T>(h.m->specular * spec);
-                }
-            }
-            radiance[l] += sj[l] * light.color * term;
-        }
+LaneMaterials<T> gatherMaterials(const PreparedScene<T>& s, const typename Simd<T>::type& kHit,
+                                 unsigned lanes) {
+    using Lane = typename RayPacket<T>::MaskLane;
+    LaneMaterials<T> g;
+    for (unsigned bits = lanes; bits; bits &= bits - 1) {
+        const int l = __builtin_ctz(bits);
+        const int k = static_cast<int>(kHit[l]);
+        const PreparedMaterial<T>& m = s.materials[s.material[k]];
+        g.centre.setLane(l, s.centre[k]);
+        g.diffuse.setLane(l, m.diffuse);
+        g.specular[l] = m.specular;
+        g.reflectivity[l] = m.reflectivity;
+        g.transparency[l] = m.transparency;
+        g.ior[l] = m.ior;
+        g.lit[l] = m.lit ? Lane(-1) : Lane(0);
+        g.checker[l] = m.checkerInvSize != T(0) ? Lane(-1) : Lane(0);
+        g.shininessInt[l] = m.integerShininess;
+        g.shininess[l] = m.shininess;
     }
-    (void)W;
+    return g;
 }
 
 // Radiance along every ray of a packet at the given depth: the Whitted sum of
-// SPEC §3 per lane, with the secondary rays of all lanes traced as packets.
+// SPEC §3, computed for all lanes at once, with the shadow, reflected and
+// refracted rays of all lanes traced as packets.
 template <typename T>
-void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth, Vec<T>* radiance,
-                 RayCounts& counts) {
+void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth,
+                 Vec3x<T>& radiance, RayCounts& counts) {
     using V = typename Simd<T>::type;
-    constexpr int W = RayPacket<T>::kWidth;
     V tHit, kHit;
     packetClosestHits(s.blocks, rays, tHit, kHit);
-
-    SurfaceHit<T> hit[W];
-    unsigned lanes = 0;
-    for (int l = 0; l < rays.count; ++l) {
-        if (kHit[l] < T(0)) {
-            radiance[l] = s.background;
-            continue;
-        }
-        SurfaceHit<T>& h = hit[l];
-        h.sphere = static_cast<int>(kHit[l]);
-        h.m = &s.materials[s.material[h.sphere]];
-        const Vec<T> d = rays.dir(l);
-        h.p = rays.origin(l) + tHit[l] * d;
-        // Normalised, not divided by the radius: p is off the surface by its
-        // rounding error, and a normal that is not unit length makes reflect()
-        // lengthen the ray, which puts the next hit further off; inside glass
-        // that error grew sevenfold per internal reflection until float
-        // renders showed speckles.
-        h.outward = glm::normalize(h.p - s.centre[h.sphere]);
-        h.inside = dot3(d, h.outward) > T(0);
-        h.n = h.inside ? -h.outward : h.outward;
-        h.kd = diffuseAt(s, h.sphere, *h.m, h.p, h.outward);
-        radiance[l] = s.ambient * h.kd;
-        lanes |= 1u << l;
-    }
+    radiance = Vec3x<T>::broadcast(s.background);
+    const auto hit = (kHit >= T(0)) & maskFromBits<T>(rays.active);
+    const unsigned lanes = laneBits(hit);
     if (!lanes) return;
-    if (!s.lights.empty()) addLights(s, rays, hit, lanes, radiance, counts);
+
+    const LaneMaterials<T> g = gatherMaterials(s, kHit, lanes);
+    const Vec3x<T> d = rays.dirs();
+    const Vec3x<T> p = rays.origins() + tHit * d;
+    // Normalised, not divided by the radius: p is off the surface by its
+    // rounding error, and a normal that is not unit length makes reflect()
+    // lengthen the ray, which puts the next hit further off; inside glass that
+    // error grew sevenfold per internal reflection until float renders showed
+    // speckles.
+    const Vec3x<T> outward = normalize(p - g.centre);
+    const auto inside = dot(d, outward) > T(0);  // the ray hit the surface from within
+    const Vec3x<T> n = select(inside, -outward, outward);
+    Vec3x<T> kd = g.diffuse;
+    for (unsigned bits = laneBits(g.checker) & lanes; bits; bits &= bits - 1) {
+        const int l = __builtin_ctz(bits);
+        const int k = static_cast<int>(kHit[l]);
+        kd.setLane(l, diffuseAt(s, k, s.materials[s.material[k]], p.lane(l), outward.lane(l)));
+    }
+    radiance = select(hit, Vec3x<T>::broadcast(s.ambient) * kd, radiance);
+
+    for (const PreparedLight<T>& light : s.lights) {
+        Vec3x<T> l = Vec3x<T>::broadcast(light.position) - p;
+        const V distance = laneSqrt(dot(l, l));
+        l = l * (T(1) / distance);
+        const V nl = dot(n, l);
+        const auto lit = hit & g.lit & (distance > T(0)) & (nl > T(0));
+        const unsigned litLanes = laneBits(lit);
+        if (!litLanes) continue;
+        counts.shadow += __builtin_popcount(litLanes);
+        // The shadow ray goes into the sphere when it leaves p against the outward normal.
+        RayPacket<T> shadow;
+        shadow.assign(p, l, kHit, dot(l, outward) < T(0), litLanes);
+        const V sj = packetTransmittance(s.blocks, s.transparency, shadow, distance, litLanes);
+        const auto shaded = lit & (sj != T(0));
+        if (!laneBits(shaded)) continue;
+        Vec3x<T> term = kd * nl;
+        const auto glossy = shaded & (g.specular > T(0));
+        if (laneBits(glossy)) {
+            const V nh = dot(n, normalize(l - d));
+            const auto highlight = glossy & (nh > T(0));
+            V spec = powLanes<T>(nh, highlight & (g.shininessInt >= 0) ? g.shininessInt : 0);
+            for (unsigned bits = laneBits(highlight & (g.shininessInt < 0)); bits;
+                 bits &= bits - 1) {
+                const int i = __builtin_ctz(bits);
+                spec[i] = std::pow(nh[i], g.shininess[i]);
+            }
+            const V add = g.specular * spec;
+            term = select(highlight, term + Vec3x<T>{add, add, add}, term);
+        }
+        const Vec3x<T> colour = Vec3x<T>::broadcast(light.color);
+        radiance = select(shaded, radiance + (sj * colour) * term, radiance);
+    }
     if (depth >= s.maxDepth) return;
 
-    // Refraction first, then reflection, each lane adding in the order of the formula.
-    RayPacket<T> refracted, reflected;
-    int refractedLane[W], reflectedLane[W];
-    T reflectWeight[W];
-    for (unsigned bits = lanes; bits; bits &= bits - 1) {
-        const int l = __builtin_ctz(bits);
-        const SurfaceHit<T>& h = hit[l];
-        const Vec<T> d = rays.dir(l);
-        reflectWeight[l] = h.m->reflectivity;
-        if (h.m->transparency > T(0)) {
-            const T eta = h.inside ? h.m->ior : T(1) / h.m->ior;
-            if (auto t = refract(d, h.n, eta)) {
-                // Refracted rays cross the surface: into the sphere from outside, out from inside.
-                refractedLane[refracted.count] = l;
-                refracted.set(refracted.count++, h.p, *t, h.sphere, !h.inside);
-            } else {
-                // Total internal reflection: the refracted share follows the reflected
-                // ray, which is traced once for both shares.
-                reflectWeight[l] += h.m->transparency;
-            }
-        }
-        if (reflectWeight[l] > T(0)) {
-            reflectedLane[reflected.count] = l;
-            reflected.set(reflected.count++, h.p, reflect(d, h.n), h.sphere, h.inside);
+    // Refraction first, then reflection, each added in the order of the formula.
+    V reflectWeight = g.reflectivity;
+    const auto glass = hit & (g.transparency > T(0));
+    if (laneBits(glass)) {
+        const V eta = inside ? g.ior : T(1) / g.ior;
+        const V cosi = -dot(d, n);
+        const V k = T(1) - eta * eta * (T(1) - cosi * cosi);
+        const auto passes = glass & (k >= T(0));
+        // Total internal reflection: the refracted share follows the reflected
+        // ray, which is traced once for both shares.
+        reflectWeight = glass & ~(k >= T(0)) ? reflectWeight + g.transparency : reflectWeight;
+        if (const unsigned bits = laneBits(passes)) {
+            const V root = laneSqrt(passes ? k : V{});
+            const Vec3x<T> t = normalize(eta * d + (eta * cosi - root) * n);
+            // Refracted rays cross the surface: into the sphere from outside, out from inside.
+            RayPacket<T> refracted;
+            refracted.assign(p, t, kHit, ~inside, bits);
+            counts.refraction += __builtin_popcount(bits);
+            Vec3x<T> sub;
+            tracePacket(s, refracted, depth + 1, sub, counts);
+            radiance = select(passes, radiance + g.transparency * sub, radiance);
         }
     }
-    Vec<T> sub[W];
-    if (refracted.count) {
-        counts.refraction += refracted.count;
-        tracePacket(s, refracted, depth + 1, sub, counts);
-        for (int i = 0; i < refracted.count; ++i) {
-            const int l = refractedLane[i];
-            radiance[l] += hit[l].m->transparency * sub[i];
-        }
-    }
-    if (reflected.count) {
-        counts.reflection += reflected.count;
+    const auto mirror = hit & (reflectWeight > T(0));
+    if (const unsigned bits = laneBits(mirror)) {
+        const Vec3x<T> r = d - (T(2) * dot(d, n)) * n;  // reflect(d, n)
+        RayPacket<T> reflected;
+        reflected.assign(p, r, kHit, inside, bits);
+        counts.reflection += __builtin_popcount(bits);
+        Vec3x<T> sub;
         tracePacket(s, reflected, depth + 1, sub, counts);
-        for (int i = 0; i < reflected.count; ++i) {
-            const int l = reflectedLane[i];
-            radiance[l] += reflectWeight[l] * sub[i];
-        }
+        radiance = select(mirror, radiance + reflectWeight * sub, radiance);
     }
 }
 
@@ -325,12 +329,11 @@ void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth,
 template <typename T>
 Vec<T> traceRay(const PreparedScene<T>& s, const Ray<T>& ray, int depth, RayCounts& counts) {
     RayPacket<T> packet;
-    packet.count = 1;
     packet.set(0, ray.origin, ray.dir, ray.originSphere, ray.intoOrigin);
     packet.fromCamera = ray.fromCamera;
-    Vec<T> radiance;
-    tracePacket(s, packet, depth, &radiance, counts);
-    return radiance;
+    Vec3x<T> radiance;
+    tracePacket(s, packet, depth, radiance, counts);
+    return radiance.lane(0);
 }
 
 template <typename T>
@@ -338,16 +341,18 @@ void traceCameraSamples(const PreparedScene<T>& s, const CameraSample<T>* sample
                         Vec<T>* radiance, RayCounts& counts) {
     constexpr int W = RayPacket<T>::kWidth;
     for (int first = 0; first < count; first += W) {
+        const int m = std::min(W, count - first);
         RayPacket<T> packet;
-        packet.count = std::min(W, count - first);
         packet.fromCamera = true;
-        for (int l = 0; l < packet.count; ++l) {
+        for (int l = 0; l < m; ++l) {
             const CameraSample<T>& cs = samples[first + l];
             packet.set(l, s.camera.origin, cameraDirection(s.camera, cs.i, cs.j, cs.u, cs.v), -1,
                        false);
         }
-        counts.camera += packet.count;
-        tracePacket(s, packet, 0, radiance + first, counts);
+        counts.camera += m;
+        Vec3x<T> out;
+        tracePacket(s, packet, 0, out, counts);
+        for (int l = 0; l < m; ++l) radiance[first + l] = out.lane(l);
     }
 }
 

@@ -74,7 +74,7 @@ void checkBlocksAndPacketsMatchScalar(unsigned seed) {
     for (int trial = 0; trial < 200; ++trial) {
         const bool fromCamera = trial % 2 == 0;
         RayPacket<T> packet;
-        packet.count = W;
+        packet.active = (1u << W) - 1;
         packet.fromCamera = fromCamera;
         for (int l = 0; l < W; ++l) {
             // Secondary rays start on the floor's surface half the time: the
@@ -86,7 +86,7 @@ void checkBlocksAndPacketsMatchScalar(unsigned seed) {
             packet.set(l, o, randomDirection<T>(rng), -1, false);
         }
         for (int k = 0; k < sphereCount; ++k) {
-            const PacketRoots<T> pr = intersectPacket(s.blocks, k, packet, packet.usedLanes());
+            const PacketRoots<T> pr = intersectPacket(s.blocks, k, packet, packet.active);
             for (int l = 0; l < W; ++l) {
                 const T* knownC = fromCamera ? &s.cameraC[k] : nullptr;
                 const auto scalar = intersectSphere(packet.origin(l), packet.dir(l), s.centre[k],

@@ -4,12 +4,15 @@
 #include <cstddef>
 #include <vector>
 
+#include "huge_page_allocator.h"
+
 namespace whitted {
 
 struct Image {
     int width = 0;
     int height = 0;
-    std::vector<float> rgb;  // width * height * 3, pixel (x, y) at 3 * (y * width + x)
+    // width * height * 3, pixel (x, y) at 3 * (y * width + x)
+    std::vector<float, HugePageAllocator<float>> rgb;
 
     Image() = default;
     Image(int w, int h) : width(w), height(h), rgb(std::size_t(w) * std::size_t(h) * 3, 0.0f) {}

@@ -142,13 +142,15 @@ T floorOfPair(T hi, T lo) {
 template <typename T>
 T steepAxisCell(const PreparedScene<T>& s, int k, const Vec<T>& p, const Vec<T>& outward, int axis,
                 T invSize) {
-    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
-    const Vec<T>& c = s.centre[k];
-    const T da = p[a] - c[a], db = p[b] - c[b];
+    const int a = axis == 2 ? 0 : axis + 1, b = axis == 0 ? 2 : axis - 1;
+    // Components by pointer: glm's operator[] branches on the index.
+    const T* c = &s.centre[k].x;
+    const T* q = &p.x;
+    const T da = q[a] - c[a], db = q[b] - c[b];
     const T across = da * da + db * db;
     const T rest = (s.rrHi[k] - across) + s.rrLo[k];
     const T drop = across / (s.radius[k] + (rest > T(0) ? std::sqrt(rest) : T(0)));
-    const T sign = outward[axis] >= T(0) ? T(1) : T(-1);
+    const T sign = (&outward.x)[axis] >= T(0) ? T(1) : T(-1);
     T hi, lo, hi2, e;
     exact::twoSum(c[axis], sign * s.radius[k], hi, lo);
     exact::twoSum(hi, -sign * drop, hi2, e);
@@ -164,11 +166,11 @@ Vec<T> diffuseAt(const PreparedScene<T>& s, int k, const PreparedMaterial<T>& m,
                  const Vec<T>& outward) {
     if (m.checkerInvSize == T(0)) return m.diffuse;
     int axis = std::fabs(outward.x) >= std::fabs(outward.y) ? 0 : 1;
-    if (std::fabs(outward.z) > std::fabs(outward[axis])) axis = 2;
+    if (std::fabs(outward.z) > std::fabs((&outward.x)[axis])) axis = 2;
     bool odd = false;
     for (int i = 0; i < 3; ++i) {
         const T cell = i == axis ? steepAxisCell(s, k, p, outward, axis, m.checkerInvSize)
-                                 : std::floor(p[i] * m.checkerInvSize);
+                                 : std::floor((&p.x)[i] * m.checkerInvSize);
         odd = odd != isOdd(cell);
     }
     return odd ? m.checkerColor : m.diffuse;
@@ -342,13 +344,24 @@ void traceCameraSamples(const PreparedScene<T>& s, const CameraSample<T>* sample
     constexpr int W = RayPacket<T>::kWidth;
     for (int first = 0; first < count; first += W) {
         const int m = std::min(W, count - first);
-        RayPacket<T> packet;
-        packet.fromCamera = true;
+        // cameraDirection() for every lane at once, operation for operation.
+        using V = typename Simd<T>::type;
+        V x{}, y{};
         for (int l = 0; l < m; ++l) {
             const CameraSample<T>& cs = samples[first + l];
-            packet.set(l, s.camera.origin, cameraDirection(s.camera, cs.i, cs.j, cs.u, cs.v), -1,
-                       false);
+            x[l] = T(cs.i) + cs.u;
+            y[l] = T(cs.j) + cs.v;
         }
+        const CameraBasis<T>& cam = s.camera;
+        x = (x / T(cam.width) * T(2) - T(1)) * cam.tanHalfFov * cam.aspect;
+        y = (T(1) - y / T(cam.height) * T(2)) * cam.tanHalfFov;
+        const Vec3x<T> dir =
+            normalize(Vec3x<T>::broadcast(cam.forward) + x * Vec3x<T>::broadcast(cam.right) +
+                      y * Vec3x<T>::broadcast(cam.up));
+        RayPacket<T> packet;
+        packet.fromCamera = true;
+        packet.assign(Vec3x<T>::broadcast(cam.origin), dir, V{} - T(1),
+                      typename RayPacket<T>::Mask{}, (1u << m) - 1);
         counts.camera += m;
         Vec3x<T> out;
         tracePacket(s, packet, 0, out, counts);

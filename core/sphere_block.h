@@ -21,21 +21,28 @@
 
 namespace whitted {
 
-// 32-byte vectors of T (the attribute cannot be applied to a template parameter).
+// The widest vectors the target has: 64 bytes with AVX-512, else 32 (AVX, or
+// pairs of SSE instructions). The attribute cannot take a template parameter,
+// hence the two specialisations.
+#if defined(__AVX512F__)
+inline constexpr int kSimdBytes = 64;
+#else
+inline constexpr int kSimdBytes = 32;
+#endif
 template <typename T>
 struct Simd;
 template <>
 struct Simd<float> {
-    typedef float type __attribute__((vector_size(32)));
+    typedef float type __attribute__((vector_size(kSimdBytes)));
 };
 template <>
 struct Simd<double> {
-    typedef double type __attribute__((vector_size(32)));
+    typedef double type __attribute__((vector_size(kSimdBytes)));
 };
 
 template <typename T>
 struct SphereBlock {
-    static constexpr int kWidth = 32 / sizeof(T);
+    static constexpr int kWidth = kSimdBytes / sizeof(T);
     using V = typename Simd<T>::type;
     V cx, cy, cz;  // centre
     V rrHi, rrLo;  // radius^2 == rrHi + rrLo exactly; padding lanes have rrHi = -1 (never hit)
@@ -77,7 +84,13 @@ struct SphereBlocks {
 // has single instructions for both; the fallback loops give the same results.
 template <typename M>
 inline unsigned laneBits(const M& m) {
-#if defined(__AVX__)
+#if defined(__AVX512F__)
+    const __m512i v = reinterpret_cast<__m512i>(m);
+    if constexpr (sizeof(m[0]) == 4)
+        return static_cast<unsigned>(_mm512_test_epi32_mask(v, v));
+    else
+        return static_cast<unsigned>(_mm512_test_epi64_mask(v, v));
+#elif defined(__AVX__)
     if constexpr (sizeof(m[0]) == 4)
         return static_cast<unsigned>(_mm256_movemask_ps(reinterpret_cast<__m256>(m)));
     else
@@ -91,7 +104,12 @@ inline unsigned laneBits(const M& m) {
 
 template <typename V>
 inline V laneSqrt(const V& v) {
-#if defined(__AVX__)
+#if defined(__AVX512F__)
+    if constexpr (sizeof(v[0]) == 4)
+        return reinterpret_cast<V>(_mm512_maskz_sqrt_ps(0xFFFF, reinterpret_cast<__m512>(v)));
+    else
+        return reinterpret_cast<V>(_mm512_maskz_sqrt_pd(0xFF, reinterpret_cast<__m512d>(v)));
+#elif defined(__AVX__)
     if constexpr (sizeof(v[0]) == 4)
         return reinterpret_cast<V>(_mm256_sqrt_ps(reinterpret_cast<__m256>(v)));
     else

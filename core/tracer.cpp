@@ -228,8 +228,8 @@ LaneMaterials<T> gatherMaterials(const PreparedScene<T>& s, const typename Simd<
 // SPEC §3, computed for all lanes at once, with the shadow, reflected and
 // refracted rays of all lanes traced as packets.
 template <typename T>
-void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth,
-                 Vec3x<T>& radiance, RayCounts& counts) {
+void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth, Vec3x<T>& radiance,
+                 RayCounts& counts) {
     using V = typename Simd<T>::type;
     V tHit, kHit;
     packetClosestHits(s.blocks, rays, tHit, kHit);

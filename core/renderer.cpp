@@ -130,7 +130,6 @@ class TileRenderer {
     // False when stopped part-way: the tile is then incomplete and not reported.
     bool renderTile(const Pass& pass, const Tile& tile, RayCounts& counts) {
         if (pass.kind == PassKind::Preview) return renderPreviewTile(tile, counts);
-        std::vector<CameraSample<T>> samples(tile.w);
         std::vector<Vec<T>> radiance(tile.w);
         std::vector<glm::dvec3> sums(tile.w);
         for (int y = tile.y; y < tile.y + tile.h; ++y) {
@@ -143,8 +142,7 @@ class TileRenderer {
             // Sample by sample across the row: each pixel still sums its samples
             // in index order, as a one-shot render does.
             for (int n = pass.firstSample; n < pass.lastSample; ++n) {
-                for (int i = 0; i < tile.w; ++i) samples[i] = pixelSample(s_, tile.x + i, y, n);
-                traceCameraSamples(s_, samples.data(), tile.w, radiance.data(), counts);
+                traceCameraRow(s_, y, tile.x, tile.w, n, radiance.data(), counts);
                 for (int i = 0; i < tile.w; ++i) sums[i] += glm::dvec3(radiance[i]);
             }
             if (!sums_.empty()) std::copy_n(sums.begin(), tile.w, sums_.begin() + row);

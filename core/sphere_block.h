@@ -121,6 +121,27 @@ inline V laneSqrt(const V& v) {
 #endif
 }
 
+template <typename V>
+inline V laneFloor(const V& v) {
+#if defined(__AVX512F__)
+    if constexpr (sizeof(v[0]) == 4)
+        return reinterpret_cast<V>(
+            _mm512_maskz_roundscale_ps(0xFFFF, reinterpret_cast<__m512>(v), 0x09));
+    else
+        return reinterpret_cast<V>(
+            _mm512_maskz_roundscale_pd(0xFF, reinterpret_cast<__m512d>(v), 0x09));
+#elif defined(__AVX__)
+    if constexpr (sizeof(v[0]) == 4)
+        return reinterpret_cast<V>(_mm256_floor_ps(reinterpret_cast<__m256>(v)));
+    else
+        return reinterpret_cast<V>(_mm256_floor_pd(reinterpret_cast<__m256d>(v)));
+#else
+    V r;
+    for (unsigned l = 0; l < sizeof(V) / sizeof(v[0]); ++l) r[l] = std::floor(v[l]);
+    return r;
+#endif
+}
+
 // Roots of one ray against one block, for the lanes set in `lanes` (others are
 // reported as misses and cost no exact-arithmetic fix-up). Either root of a
 // valid lane may be behind the origin.

@@ -99,84 +99,8 @@ std::optional<Hit<T>> closestHit(const PreparedScene<T>& s, const Ray<T>& ray, T
 
 namespace {
 
-template <typename T>
-T dot3(const Vec<T>& a, const Vec<T>& b) {
-    return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-
-// x^n for a whole n by squaring: several times faster than std::pow for the
-// shininess values people use (10 to 200).
-template <typename T>
-T powInt(T x, int n) {
-    T result = 1;
-    while (n > 0) {
-        if (n & 1) result *= x;
-        x *= x;
-        n >>= 1;
-    }
-    return result;
-}
-
-template <typename T>
-bool isOdd(T cell) {
-    const T half = cell * T(0.5);
-    return half != std::floor(half);
-}
-
-// floor(hi + lo) for a pair with |lo| <= ulp(hi) / 2.
-template <typename T>
-T floorOfPair(T hi, T lo) {
-    const T f = std::floor(hi);
-    return (f == hi && lo < T(0)) ? f - T(1) : f;
-}
-
-// The checker cell index along the axis where the surface is steepest, from
-// the sphere's own equation rather than from the hit point.
-//
-// Why: the seed's floor touches the cell boundary plane y = -0.5 at the origin
-// and drops below it by only (x^2 + z^2) / 2r, about 3e-8 near the camera. The
-// hit point's y carries the ray's rounding error (1e-7 in float), so its cell
-// index would flicker there. Along that axis the surface is
-// centre + r - (a^2 + b^2) / (r + sqrt(r^2 - a^2 - b^2)), which is kept exactly
-// as a two-term sum, so the index comes out right to the last bit.
-template <typename T>
-T steepAxisCell(const PreparedScene<T>& s, int k, const Vec<T>& p, const Vec<T>& outward, int axis,
-                T invSize) {
-    const int a = axis == 2 ? 0 : axis + 1, b = axis == 0 ? 2 : axis - 1;
-    // Components by pointer: glm's operator[] branches on the index.
-    const T* c = &s.centre[k].x;
-    const T* q = &p.x;
-    const T da = q[a] - c[a], db = q[b] - c[b];
-    const T across = da * da + db * db;
-    const T rest = (s.rrHi[k] - across) + s.rrLo[k];
-    const T drop = across / (s.radius[k] + (rest > T(0) ? std::sqrt(rest) : T(0)));
-    const T sign = (&outward.x)[axis] >= T(0) ? T(1) : T(-1);
-    T hi, lo, hi2, e;
-    exact::twoSum(c[axis], sign * s.radius[k], hi, lo);
-    exact::twoSum(hi, -sign * drop, hi2, e);
-    exact::twoSum(hi2, lo + e, hi, lo);
-    T ph, pl;
-    exact::twoProduct(hi, invSize, ph, pl);
-    exact::twoSum(ph, pl + lo * invSize, hi, lo);
-    return floorOfPair(hi, lo);
-}
-
-template <typename T>
-Vec<T> diffuseAt(const PreparedScene<T>& s, int k, const PreparedMaterial<T>& m, const Vec<T>& p,
-                 const Vec<T>& outward) {
-    if (m.checkerInvSize == T(0)) return m.diffuse;
-    int axis = std::fabs(outward.x) >= std::fabs(outward.y) ? 0 : 1;
-    if (std::fabs(outward.z) > std::fabs((&outward.x)[axis])) axis = 2;
-    bool odd = false;
-    for (int i = 0; i < 3; ++i) {
-        const T cell = i == axis ? steepAxisCell(s, k, p, outward, axis, m.checkerInvSize)
-                                 : std::floor((&p.x)[i] * m.checkerInvSize);
-        odd = odd != isOdd(cell);
-    }
-    return odd ? m.checkerColor : m.diffuse;
-}
-
-// x^n per lane for whole exponents n >= 0, by squaring as powInt() does.
+// x^n per lane for whole exponents n >= 0, by squaring: several times faster
+// than std::pow for the shininess values people use (10 to 200).
 template <typename T>
 typename Simd<T>::type powLanes(typename Simd<T>::type x, typename RayPacket<T>::Mask n) {
     using V = typename Simd<T>::type;
@@ -199,6 +123,8 @@ struct LaneMaterials {
     Mask lit{}, checker{};
     Mask shininessInt{};  // the whole shininess, or -1 for lanes that need std::pow
     V shininess{};
+    Vec3x<T> checkerColor;
+    V checkerInvSize{}, radius{}, rrHi{}, rrLo{};
 };
 
 template <typename T>
@@ -220,8 +146,75 @@ LaneMaterials<T> gatherMaterials(const PreparedScene<T>& s, const typename Simd<
         g.checker[l] = m.checkerInvSize != T(0) ? Lane(-1) : Lane(0);
         g.shininessInt[l] = m.integerShininess;
         g.shininess[l] = m.shininess;
+        g.checkerColor.setLane(l, m.checkerColor);
+        g.checkerInvSize[l] = m.checkerInvSize;
+        g.radius[l] = s.radius[k];
+        g.rrHi[l] = s.rrHi[k];
+        g.rrLo[l] = s.rrLo[k];
     }
     return g;
+}
+
+// a * b == p + e exactly, per lane (Dekker's split: GCC's vectors have no fma).
+template <typename V, typename T>
+void twoProductLanes(const V& a, const V& b, V& p, V& e) {
+    constexpr T splitter = sizeof(T) == 4 ? T(4097) : T(134217729);  // 2^12+1, 2^27+1
+    p = a * b;
+    const V ta = splitter * a, tb = splitter * b;
+    const V ahi = ta - (ta - a), bhi = tb - (tb - b);
+    const V alo = a - ahi, blo = b - bhi;
+    e = ((ahi * bhi - p) + ahi * blo + alo * bhi) + alo * blo;
+}
+
+// kd(P) of SPEC §3 for every lane: checker colour where floor(Px/s) +
+// floor(Py/s) + floor(Pz/s) is odd, diffuse where even.
+//
+// The cell index along the axis where the surface is steepest comes from the
+// sphere's own equation rather than from the hit point. Why: the seed's floor
+// touches the cell boundary plane y = -0.5 at the origin and drops below it by
+// only (x^2 + z^2) / 2r, about 3e-8 near the camera, while the hit point's y
+// carries the ray's rounding error (1e-7 in float), so its cell index would
+// flicker there. Along that axis the surface is
+// centre + r - (a^2 + b^2) / (r + sqrt(r^2 - a^2 - b^2)), kept exactly as a
+// two-term sum, so the index comes out right to the last bit.
+template <typename T>
+Vec3x<T> checkerLanes(const LaneMaterials<T>& g, const Vec3x<T>& p, const Vec3x<T>& outward) {
+    using V = typename Simd<T>::type;
+    const V ax = outward.x < T(0) ? -outward.x : outward.x;
+    const V ay = outward.y < T(0) ? -outward.y : outward.y;
+    const V az = outward.z < T(0) ? -outward.z : outward.z;
+    const auto xOverY = ax >= ay;
+    const auto isZ = az > (xOverY ? ax : ay);
+    const auto isX = xOverY & ~isZ;
+    const auto isY = ~xOverY & ~isZ;
+    // Across-axis components a, b as steepAxisCell() picks them.
+    const V qa = isX ? p.y : (isY ? p.z : p.x), qb = isX ? p.z : (isY ? p.x : p.y);
+    const V ca = isX ? g.centre.y : (isY ? g.centre.z : g.centre.x);
+    const V cb = isX ? g.centre.z : (isY ? g.centre.x : g.centre.y);
+    const V cAxis = isX ? g.centre.x : (isY ? g.centre.y : g.centre.z);
+    const V oAxis = isX ? outward.x : (isY ? outward.y : outward.z);
+    const V da = qa - ca, db = qb - cb;
+    const V across = da * da + db * db;
+    const V rest = (g.rrHi - across) + g.rrLo;
+    const V drop = across / (g.radius + (rest > T(0) ? laneSqrt(rest > T(0) ? rest : V{}) : V{}));
+    const V sign = oAxis >= T(0) ? V{} + T(1) : V{} - T(1);
+    V hi, lo, hi2, e, ph, pl;
+    exact::twoSum<V>(cAxis, sign * g.radius, hi, lo);
+    exact::twoSum<V>(hi, -sign * drop, hi2, e);
+    exact::twoSum<V>(hi2, lo + e, hi, lo);
+    twoProductLanes<V, T>(hi, g.checkerInvSize, ph, pl);
+    exact::twoSum<V>(ph, pl + lo * g.checkerInvSize, hi, lo);
+    const V f = laneFloor(hi);
+    const V steepCell = (f == hi) & (lo < T(0)) ? f - T(1) : f;  // floorOfPair()
+    const V cx = isX ? steepCell : laneFloor(p.x * g.checkerInvSize);
+    const V cy = isY ? steepCell : laneFloor(p.y * g.checkerInvSize);
+    const V cz = isZ ? steepCell : laneFloor(p.z * g.checkerInvSize);
+    auto odd = [](const V& cell) {
+        const V half = cell * T(0.5);
+        return half != laneFloor(half);
+    };
+    const auto oddCell = (odd(cx) ^ odd(cy)) ^ odd(cz);
+    return select(oddCell, g.checkerColor, g.diffuse);
 }
 
 // Radiance along every ray of a packet at the given depth: the Whitted sum of
@@ -250,11 +243,7 @@ void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth,
     const auto inside = dot(d, outward) > T(0);  // the ray hit the surface from within
     const Vec3x<T> n = select(inside, -outward, outward);
     Vec3x<T> kd = g.diffuse;
-    for (unsigned bits = laneBits(g.checker) & lanes; bits; bits &= bits - 1) {
-        const int l = __builtin_ctz(bits);
-        const int k = static_cast<int>(kHit[l]);
-        kd.setLane(l, diffuseAt(s, k, s.materials[s.material[k]], p.lane(l), outward.lane(l)));
-    }
+    if (laneBits(g.checker & hit)) kd = select(g.checker, checkerLanes(g, p, outward), kd);
     radiance = select(hit, Vec3x<T>::broadcast(s.ambient) * kd, radiance);
 
     for (const PreparedLight<T>& light : s.lights) {
@@ -338,33 +327,71 @@ Vec<T> traceRay(const PreparedScene<T>& s, const Ray<T>& ray, int depth, RayCoun
     return radiance.lane(0);
 }
 
+namespace {
+
+// Camera rays through image-plane positions (x, y) = (i + u, j + v) for the
+// first m lanes: cameraDirection() for every lane at once, operation for operation.
+template <typename T>
+void traceCameraPacket(const PreparedScene<T>& s, typename Simd<T>::type x,
+                       typename Simd<T>::type y, int m, Vec3x<T>& radiance, RayCounts& counts) {
+    using V = typename Simd<T>::type;
+    const CameraBasis<T>& cam = s.camera;
+    x = (x / T(cam.width) * T(2) - T(1)) * cam.tanHalfFov * cam.aspect;
+    y = (T(1) - y / T(cam.height) * T(2)) * cam.tanHalfFov;
+    const Vec3x<T> dir =
+        normalize(Vec3x<T>::broadcast(cam.forward) + x * Vec3x<T>::broadcast(cam.right) +
+                  y * Vec3x<T>::broadcast(cam.up));
+    RayPacket<T> packet;
+    packet.fromCamera = true;
+    packet.assign(Vec3x<T>::broadcast(cam.origin), dir, V{} - T(1), typename RayPacket<T>::Mask{},
+                  (1u << m) - 1);
+    counts.camera += m;
+    tracePacket(s, packet, 0, radiance, counts);
+}
+
+}  // namespace
+
 template <typename T>
 void traceCameraSamples(const PreparedScene<T>& s, const CameraSample<T>* samples, int count,
                         Vec<T>* radiance, RayCounts& counts) {
     constexpr int W = RayPacket<T>::kWidth;
+    using V = typename Simd<T>::type;
     for (int first = 0; first < count; first += W) {
         const int m = std::min(W, count - first);
-        // cameraDirection() for every lane at once, operation for operation.
-        using V = typename Simd<T>::type;
         V x{}, y{};
         for (int l = 0; l < m; ++l) {
             const CameraSample<T>& cs = samples[first + l];
             x[l] = T(cs.i) + cs.u;
             y[l] = T(cs.j) + cs.v;
         }
-        const CameraBasis<T>& cam = s.camera;
-        x = (x / T(cam.width) * T(2) - T(1)) * cam.tanHalfFov * cam.aspect;
-        y = (T(1) - y / T(cam.height) * T(2)) * cam.tanHalfFov;
-        const Vec3x<T> dir =
-            normalize(Vec3x<T>::broadcast(cam.forward) + x * Vec3x<T>::broadcast(cam.right) +
-                      y * Vec3x<T>::broadcast(cam.up));
-        RayPacket<T> packet;
-        packet.fromCamera = true;
-        packet.assign(Vec3x<T>::broadcast(cam.origin), dir, V{} - T(1),
-                      typename RayPacket<T>::Mask{}, (1u << m) - 1);
-        counts.camera += m;
         Vec3x<T> out;
-        tracePacket(s, packet, 0, out, counts);
+        traceCameraPacket(s, x, y, m, out, counts);
+        for (int l = 0; l < m; ++l) radiance[first + l] = out.lane(l);
+    }
+}
+
+template <typename T>
+void traceCameraRow(const PreparedScene<T>& s, int y, int x0, int count, int n, Vec<T>* radiance,
+                    RayCounts& counts) {
+    constexpr int W = RayPacket<T>::kWidth;
+    using V = typename Simd<T>::type;
+    V laneIndex{};
+    for (int l = 0; l < W; ++l) laneIndex[l] = T(l);
+    for (int first = 0; first < count; first += W) {
+        const int m = std::min(W, count - first);
+        V px, py;
+        if (s.samplesPerPixel == 1) {  // pixel centres, as pixelSample() gives them
+            px = (laneIndex + T(x0 + first)) + T(0.5);
+            py = V{} + (T(y) + T(0.5));
+        } else {
+            for (int l = 0; l < m; ++l) {
+                const CameraSample<T> cs = pixelSample(s, x0 + first + l, y, n);
+                px[l] = T(cs.i) + cs.u;
+                py[l] = T(cs.j) + cs.v;
+            }
+        }
+        Vec3x<T> out;
+        traceCameraPacket(s, px, py, m, out, counts);
         for (int l = 0; l < m; ++l) radiance[first + l] = out.lane(l);
     }
 }
@@ -388,6 +415,8 @@ CameraSample<T> pixelSample(const PreparedScene<T>& s, int i, int j, int n) {
     template PreparedScene<T> prepareScene<T>(const Scene&);                                  \
     template std::optional<Hit<T>> closestHit<T>(const PreparedScene<T>&, const Ray<T>&, T);  \
     template Vec<T> traceRay<T>(const PreparedScene<T>&, const Ray<T>&, int, RayCounts&);     \
+    template void traceCameraRow<T>(const PreparedScene<T>&, int, int, int, int, Vec<T>*,     \
+                                    RayCounts&);                                              \
     template void traceCameraSamples<T>(const PreparedScene<T>&, const CameraSample<T>*, int, \
                                         Vec<T>*, RayCounts&);                                 \
     template Vec<T> tracePixelSample<T>(const PreparedScene<T>&, int, int, T, T, RayCounts&); \

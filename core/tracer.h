@@ -113,6 +113,12 @@ template <typename T>
 void traceCameraSamples(const PreparedScene<T>& s, const CameraSample<T>* samples, int count,
                         Vec<T>* radiance, RayCounts& counts);
 
+// Sample n of the pixels (x0 .. x0+count-1, y): the same results as
+// traceCameraSamples() with pixelSample() for each, without building the list.
+template <typename T>
+void traceCameraRow(const PreparedScene<T>& s, int y, int x0, int count, int n, Vec<T>* radiance,
+                    RayCounts& counts);
+
 // One camera sample; the same result as traceCameraSamples() gives for it.
 template <typename T>
 Vec<T> tracePixelSample(const PreparedScene<T>& s, int i, int j, T u, T v, RayCounts& counts);

@@ -144,3 +144,44 @@ TEST(RayPacket, CameraRayAloneEqualsCameraRayInPacket) {
 
 }  // namespace
 }  // namespace whitted
+
+namespace whitted {
+namespace {
+
+// The renderer's row path (traceCameraRow) and the list path
+// (traceCameraSamples with pixelSample) agree bit for bit, one sample and many.
+template <typename T>
+void checkRowMatchesList(int samplesPerPixel) {
+    Scene scene;
+    scene.camera = Camera{{0, 0.35, -1}, {0, 0.25, 0}, {0, 1, 0}, 73.74};
+    scene.render.width = 37;  // not a multiple of any packet width
+    scene.render.height = 5;
+    scene.render.samplesPerPixel = samplesPerPixel;
+    scene.materials = {Material{"m", {0.5, 0.2, 0.1}, 1, 50, 0.5, 0, 1.5, Checker{{0, 0, 0}, 0.5}}};
+    scene.lights = {Light{"key", {5, 5, -10}, {1, 1, 1}, 1}};
+    scene.spheres = {Sphere{"ball", {0, 0.2, 2}, 0.6, "m"},
+                     Sphere{"floor", {0, -99999.5, 0}, 99999, "m"}};
+    const PreparedScene<T> s = prepareScene<T>(scene);
+    for (int y = 0; y < scene.render.height; ++y)
+        for (int n = 0; n < samplesPerPixel; ++n) {
+            std::vector<Vec<T>> row(scene.render.width), list(scene.render.width);
+            std::vector<CameraSample<T>> samples;
+            for (int x = 0; x < scene.render.width; ++x) samples.push_back(pixelSample(s, x, y, n));
+            RayCounts a, b;
+            traceCameraRow(s, y, 0, scene.render.width, n, row.data(), a);
+            traceCameraSamples(s, samples.data(), int(samples.size()), list.data(), b);
+            for (int x = 0; x < scene.render.width; ++x)
+                ASSERT_EQ(row[x], list[x]) << "pixel " << x << "," << y << " sample " << n;
+            EXPECT_EQ(a.total(), b.total());
+        }
+}
+
+TEST(RayPacket, CameraRowEqualsSampleList) {
+    checkRowMatchesList<float>(1);
+    checkRowMatchesList<float>(5);
+    checkRowMatchesList<double>(1);
+    checkRowMatchesList<double>(5);
+}
+
+}  // namespace
+}  // namespace whitted

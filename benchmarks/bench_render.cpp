@@ -1,15 +1,21 @@
-// Render throughput of the seed scene at 1280x720, one-shot, in float and double,
-// on one thread and on all cores. Run:
+// Render speed of the seed scene at 1280x720, one sample per pixel, one-shot:
+// our tracer against a plain scalar tracer (plain_tracer.h) in the same run, in
+// float and double, on one thread and on all cores. Run:
 //   build/bin/bench_render --benchmark_repetitions=7 --benchmark_report_aggregates_only=true
-// Each run reports the median time and Mrays/s (rays traced per second of wall time).
+// Time is wall time per image; Mrays/s counts every ray traced (camera, shadow,
+// reflection, refraction) per second of wall time. Compare rows of one run: the
+// machines are shared, so absolute times drift between runs.
 #include <benchmark/benchmark.h>
 
+#include "plain_tracer.h"
 #include "renderer.h"
 #include "scene_io.h"
 
 namespace {
 
-whitted::Scene seedScene(whitted::Precision precision) {
+using whitted::Precision;
+
+whitted::Scene seedScene(Precision precision) {
     whitted::Scene scene = whitted::loadScene(WHITTED_SCENES_DIR "/seed.json");
     scene.render.width = 1280;
     scene.render.height = 720;
@@ -17,30 +23,57 @@ whitted::Scene seedScene(whitted::Precision precision) {
     return scene;
 }
 
-void renderSeed(benchmark::State& state, whitted::Precision precision) {
+void setRate(benchmark::State& state, double rays) {
+    state.counters["Mrays/s"] = benchmark::Counter(rays / 1e6, benchmark::Counter::kIsRate);
+}
+
+void ours(benchmark::State& state, Precision precision) {
     const whitted::Scene scene = seedScene(precision);
     whitted::RenderOptions options;
     options.progressive = false;
     options.threads = static_cast<int>(state.range(0));
-    std::uint64_t rays = 0;
+    double rays = 0;
     for (auto _ : state) {
         const whitted::RenderResult result = whitted::render(scene, options);
-        rays += result.rays.total();
+        rays += double(result.rays.total());
         benchmark::DoNotOptimize(result.image.rgb.data());
     }
-    state.counters["Mrays/s"] = benchmark::Counter(double(rays) / 1e6, benchmark::Counter::kIsRate);
+    setRate(state, rays);
+}
+
+template <typename T>
+void plain(benchmark::State& state) {
+    const whitted::Scene scene = seedScene(Precision::Float);
+    const int threads = whitted::resolveThreadCount(static_cast<int>(state.range(0)));
+    double rays = 0;
+    for (auto _ : state) {
+        whitted::Image image;
+        rays += double(whitted::bench::renderPlain<T>(scene, threads, image));
+        benchmark::DoNotOptimize(image.rgb.data());
+    }
+    setRate(state, rays);
 }
 
 void BM_SeedFloat(benchmark::State& state) {
-    renderSeed(state, whitted::Precision::Float);
+    ours(state, Precision::Float);
 }
 void BM_SeedDouble(benchmark::State& state) {
-    renderSeed(state, whitted::Precision::Double);
+    ours(state, Precision::Double);
+}
+void BM_PlainScalarFloat(benchmark::State& state) {
+    plain<float>(state);
+}
+void BM_PlainScalarDouble(benchmark::State& state) {
+    plain<double>(state);
 }
 
 // Arg: threads; 0 means all cores.
-BENCHMARK(BM_SeedFloat)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_SeedDouble)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
+#define WHITTED_BENCH(fn) \
+    BENCHMARK(fn)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime()
+WHITTED_BENCH(BM_SeedFloat);
+WHITTED_BENCH(BM_PlainScalarFloat);
+WHITTED_BENCH(BM_SeedDouble);
+WHITTED_BENCH(BM_PlainScalarDouble);
 
 }  // namespace
 

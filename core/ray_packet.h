@@ -1,7 +1,6 @@
 // Packets of rays intersected with the scene several at a time.
 //
-// Where sphere_block.h runs one ray against several spheres, this runs several
-// rays (8 floats or 4 doubles) against one sphere after another: shadow rays
+// Several rays (a SIMD vector's worth) go against one sphere after another: shadow rays
 // towards one light, the reflected rays of neighbouring pixels and camera rays
 // come in such groups. Every lane performs exactly the operations of
 // intersectSphere() in the same order, so a ray finds the same hit alone or in
@@ -11,14 +10,37 @@
 #include <limits>
 #include <type_traits>
 
+#include <vector>
+
+#include "simd.h"
 #include "simd_vec3.h"
-#include "sphere_block.h"
+#include "sphere_intersect.h"
 
 namespace whitted {
 
+// The scene's spheres as parallel arrays: all that intersection reads.
+template <typename T>
+struct SphereSet {
+    std::vector<Vec<T>> centre;
+    std::vector<T> radius;
+    std::vector<T> rrHi, rrLo;  // radius^2 == rrHi + rrLo exactly
+    std::vector<T> cameraC;     // accurateOffsetSquared() from the camera position
+
+    int count() const { return static_cast<int>(centre.size()); }
+    void add(const Vec<T>& c, T r, const Vec<T>& camera) {
+        T hi, lo;
+        splitRadiusSquared(r, hi, lo);
+        centre.push_back(c);
+        radius.push_back(r);
+        rrHi.push_back(hi);
+        rrLo.push_back(lo);
+        cameraC.push_back(accurateOffsetSquared(camera, c, hi, lo));
+    }
+};
+
 template <typename T>
 struct RayPacket {
-    static constexpr int kWidth = SphereBlock<T>::kWidth;
+    static constexpr int kWidth = kSimdBytes / sizeof(T);
     using V = typename Simd<T>::type;
     using Mask = decltype(V{} < V{});
     using MaskLane = std::remove_reference_t<decltype(Mask{}[0])>;  // int32 or int64
@@ -83,14 +105,11 @@ struct PacketRoots {
 };
 
 template <typename T>
-inline PacketRoots<T> intersectPacket(const SphereBlocks<T>& spheres, int k, const RayPacket<T>& r,
+inline PacketRoots<T> intersectPacket(const SphereSet<T>& spheres, int k, const RayPacket<T>& r,
                                       unsigned lanes) {
     using V = typename Simd<T>::type;
-    constexpr int W = SphereBlock<T>::kWidth;
-    const SphereBlock<T>& blk = spheres.blocks[k / W];
-    const int lane = k % W;
-    const T cx = blk.cx[lane], cy = blk.cy[lane], cz = blk.cz[lane];
-    const T rrHi = blk.rrHi[lane], rrLo = blk.rrLo[lane];
+    const T cx = spheres.centre[k].x, cy = spheres.centre[k].y, cz = spheres.centre[k].z;
+    const T rrHi = spheres.rrHi[k], rrLo = spheres.rrLo[k];
     PacketRoots<T> out;
     out.self = r.originSphere == T(k);
     lanes &= ~laneBits(out.self & ~r.intoOrigin);  // convex: leaving it, it cannot be hit again
@@ -99,7 +118,7 @@ inline PacketRoots<T> intersectPacket(const SphereBlocks<T>& spheres, int k, con
     const V fx = r.ox - cx, fy = r.oy - cy, fz = r.oz - cz;
     const V b = fx * r.dx + fy * r.dy + fz * r.dz;
     const V ff = fx * fx + fy * fy + fz * fz;
-    V c = r.fromCamera ? V{} + blk.cameraC[lane] : ff - rrHi;
+    V c = r.fromCamera ? V{} + spheres.cameraC[k] : ff - rrHi;
     const auto away = (b > T(0)) & (c > ff * (T(16) * std::numeric_limits<T>::epsilon()));
     const auto nearSurface = (c < ff * T(0.0625)) & (c > -(ff * T(0.0625)));
     if (!r.fromCamera) {
@@ -130,12 +149,12 @@ inline PacketRoots<T> intersectPacket(const SphereBlocks<T>& spheres, int k, con
 // Nearest hit per lane with t in (0, infinity): t, and the sphere index as T
 // (-1 for a miss). Ties go to the lower sphere index, as in closestHit().
 template <typename T>
-inline void packetClosestHits(const SphereBlocks<T>& spheres, const RayPacket<T>& r,
+inline void packetClosestHits(const SphereSet<T>& spheres, const RayPacket<T>& r,
                               typename Simd<T>::type& tBest, typename Simd<T>::type& kBest) {
     using V = typename Simd<T>::type;
     tBest = V{} + std::numeric_limits<T>::infinity();
     kBest = V{} - T(1);
-    for (int k = 0; k < spheres.count; ++k) {
+    for (int k = 0; k < spheres.count(); ++k) {
         const PacketRoots<T> roots = intersectPacket(spheres, k, r, r.active);
         if (!roots.valid) continue;
         // Going into its own sphere, a ray can only meet the far side.
@@ -149,14 +168,14 @@ inline void packetClosestHits(const SphereBlocks<T>& spheres, const RayPacket<T>
 // S_j per lane: the product of the transparencies of the spheres each shadow
 // ray crosses before `distance`, in sphere order, as shadowTransmittance() does.
 template <typename T>
-inline typename Simd<T>::type packetTransmittance(const SphereBlocks<T>& spheres,
+inline typename Simd<T>::type packetTransmittance(const SphereSet<T>& spheres,
                                                   const std::vector<T>& transparency,
                                                   const RayPacket<T>& r,
                                                   const typename Simd<T>::type& distance,
                                                   unsigned lanes) {
     using V = typename Simd<T>::type;
     V s = V{} + T(1);
-    for (int k = 0; k < spheres.count && lanes; ++k) {
+    for (int k = 0; k < spheres.count() && lanes; ++k) {
         const PacketRoots<T> roots = intersectPacket(spheres, k, r, lanes);
         if (!roots.valid) continue;
         const auto crosses = roots.self ? roots.tFar < distance

@@ -4,9 +4,14 @@
 // which other rays share its packet.
 #pragma once
 
-#include "sphere_block.h"
+#include <glm/vec3.hpp>
+
+#include "simd.h"
 
 namespace whitted {
+
+template <typename T>
+using Vec = glm::vec<3, T, glm::defaultp>;
 
 template <typename T>
 struct Vec3x {

@@ -44,57 +44,23 @@ PreparedScene<T> prepareScene(const Scene& scene) {
         if (c == Vec3(0.0)) continue;  // a dark light adds nothing: no shadow rays for it
         s.lights.push_back({Vec<T>(l.position), Vec<T>(c)});
     }
-    std::vector<T> cameraC;
     for (const Sphere& sp : scene.spheres) {
-        T hi, lo;
-        splitRadiusSquared(T(sp.radius), hi, lo);
-        s.centre.push_back(Vec<T>(sp.center));
-        s.radius.push_back(T(sp.radius));
-        s.rrHi.push_back(hi);
-        s.rrLo.push_back(lo);
+        s.spheres.add(Vec<T>(sp.center), T(sp.radius), s.camera.origin);
         s.material.push_back(findMaterial(scene, sp.material));
         s.transparency.push_back(s.materials[s.material.back()].transparency);
-        cameraC.push_back(accurateOffsetSquared(s.camera.origin, s.centre.back(), hi, lo));
     }
-    s.blocks.assign(s.centre, s.rrHi, s.rrLo, cameraC);
     return s;
 }
 
-namespace {
-
-// The lanes of block `bi` a ray must test: all but the sphere it leaves outwards.
-template <typename T>
-unsigned lanesToTest(int bi, const Ray<T>& ray) {
-    constexpr int W = SphereBlock<T>::kWidth;
-    unsigned lanes = (1u << W) - 1;
-    if (ray.originSphere / W == bi && !ray.intoOrigin)
-        lanes &= ~(1u << (ray.originSphere % W));  // convex: leaving it, it cannot be hit again
-    return lanes;
-}
-
-}  // namespace
-
 template <typename T>
 std::optional<Hit<T>> closestHit(const PreparedScene<T>& s, const Ray<T>& ray, T tMax) {
-    constexpr int W = SphereBlock<T>::kWidth;
-    std::optional<Hit<T>> best;
-    const int blocks = static_cast<int>(s.blocks.blocks.size());
-    for (int bi = 0; bi < blocks; ++bi) {
-        const BlockRoots<T> r = intersectBlock(s.blocks.blocks[bi], ray.origin, ray.dir,
-                                               ray.fromCamera, lanesToTest(bi, ray));
-        for (unsigned bits = r.valid; bits; bits &= bits - 1) {
-            const int l = __builtin_ctz(bits);
-            const int k = bi * W + l;
-            // Going into its own sphere, a ray can only meet the far side.
-            const T t =
-                k == ray.originSphere ? r.tFar[l] : (r.tNear[l] > T(0) ? r.tNear[l] : r.tFar[l]);
-            if (t > T(0) && t < tMax) {
-                tMax = t;
-                best = Hit<T>{t, k};
-            }
-        }
-    }
-    return best;
+    RayPacket<T> packet;
+    packet.set(0, ray.origin, ray.dir, ray.originSphere, ray.intoOrigin);
+    packet.fromCamera = ray.fromCamera;
+    typename Simd<T>::type t, k;
+    packetClosestHits(s.spheres, packet, t, k);
+    if (k[0] < T(0) || !(t[0] < tMax)) return std::nullopt;
+    return Hit<T>{t[0], static_cast<int>(k[0])};
 }
 
 namespace {
@@ -136,7 +102,7 @@ LaneMaterials<T> gatherMaterials(const PreparedScene<T>& s, const typename Simd<
         const int l = __builtin_ctz(bits);
         const int k = static_cast<int>(kHit[l]);
         const PreparedMaterial<T>& m = s.materials[s.material[k]];
-        g.centre.setLane(l, s.centre[k]);
+        g.centre.setLane(l, s.spheres.centre[k]);
         g.diffuse.setLane(l, m.diffuse);
         g.specular[l] = m.specular;
         g.reflectivity[l] = m.reflectivity;
@@ -148,9 +114,9 @@ LaneMaterials<T> gatherMaterials(const PreparedScene<T>& s, const typename Simd<
         g.shininess[l] = m.shininess;
         g.checkerColor.setLane(l, m.checkerColor);
         g.checkerInvSize[l] = m.checkerInvSize;
-        g.radius[l] = s.radius[k];
-        g.rrHi[l] = s.rrHi[k];
-        g.rrLo[l] = s.rrLo[k];
+        g.radius[l] = s.spheres.radius[k];
+        g.rrHi[l] = s.spheres.rrHi[k];
+        g.rrLo[l] = s.spheres.rrLo[k];
     }
     return g;
 }
@@ -225,7 +191,7 @@ void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth,
                  RayCounts& counts) {
     using V = typename Simd<T>::type;
     V tHit, kHit;
-    packetClosestHits(s.blocks, rays, tHit, kHit);
+    packetClosestHits(s.spheres, rays, tHit, kHit);
     radiance = Vec3x<T>::broadcast(s.background);
     const auto hit = (kHit >= T(0)) & maskFromBits<T>(rays.active);
     const unsigned lanes = laneBits(hit);
@@ -258,7 +224,7 @@ void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth,
         // The shadow ray goes into the sphere when it leaves p against the outward normal.
         RayPacket<T> shadow;
         shadow.assign(p, l, kHit, dot(l, outward) < T(0), litLanes);
-        const V sj = packetTransmittance(s.blocks, s.transparency, shadow, distance, litLanes);
+        const V sj = packetTransmittance(s.spheres, s.transparency, shadow, distance, litLanes);
         const auto shaded = lit & (sj != T(0));
         if (!laneBits(shaded)) continue;
         Vec3x<T> term = kd * nl;
@@ -351,49 +317,58 @@ void traceCameraPacket(const PreparedScene<T>& s, typename Simd<T>::type x,
 
 }  // namespace
 
-template <typename T>
-void traceCameraSamples(const PreparedScene<T>& s, const CameraSample<T>* samples, int count,
-                        Vec<T>* radiance, RayCounts& counts) {
+namespace {
+
+// Camera rays for `count` samples in packets; place(first, m, x, y) puts the
+// image-plane positions (i + u, j + v) of samples first .. first+m-1 in lanes.
+template <typename T, typename Place>
+void traceCameraPackets(const PreparedScene<T>& s, int count, Vec<T>* radiance, RayCounts& counts,
+                        Place place) {
     constexpr int W = RayPacket<T>::kWidth;
     using V = typename Simd<T>::type;
     for (int first = 0; first < count; first += W) {
         const int m = std::min(W, count - first);
         V x{}, y{};
-        for (int l = 0; l < m; ++l) {
-            const CameraSample<T>& cs = samples[first + l];
-            x[l] = T(cs.i) + cs.u;
-            y[l] = T(cs.j) + cs.v;
-        }
+        place(first, m, x, y);
         Vec3x<T> out;
         traceCameraPacket(s, x, y, m, out, counts);
         for (int l = 0; l < m; ++l) radiance[first + l] = out.lane(l);
     }
 }
 
+}  // namespace
+
+template <typename T>
+void traceCameraSamples(const PreparedScene<T>& s, const CameraSample<T>* samples, int count,
+                        Vec<T>* radiance, RayCounts& counts) {
+    using V = typename Simd<T>::type;
+    traceCameraPackets(s, count, radiance, counts, [&](int first, int m, V& x, V& y) {
+        for (int l = 0; l < m; ++l) {
+            const CameraSample<T>& cs = samples[first + l];
+            x[l] = T(cs.i) + cs.u;
+            y[l] = T(cs.j) + cs.v;
+        }
+    });
+}
+
 template <typename T>
 void traceCameraRow(const PreparedScene<T>& s, int y, int x0, int count, int n, Vec<T>* radiance,
                     RayCounts& counts) {
-    constexpr int W = RayPacket<T>::kWidth;
     using V = typename Simd<T>::type;
     V laneIndex{};
-    for (int l = 0; l < W; ++l) laneIndex[l] = T(l);
-    for (int first = 0; first < count; first += W) {
-        const int m = std::min(W, count - first);
-        V px, py;
+    for (int l = 0; l < RayPacket<T>::kWidth; ++l) laneIndex[l] = T(l);
+    traceCameraPackets(s, count, radiance, counts, [&](int first, int m, V& px, V& py) {
         if (s.samplesPerPixel == 1) {  // pixel centres, as pixelSample() gives them
             px = (laneIndex + T(x0 + first)) + T(0.5);
             py = V{} + (T(y) + T(0.5));
-        } else {
-            for (int l = 0; l < m; ++l) {
-                const CameraSample<T> cs = pixelSample(s, x0 + first + l, y, n);
-                px[l] = T(cs.i) + cs.u;
-                py[l] = T(cs.j) + cs.v;
-            }
+            return;
         }
-        Vec3x<T> out;
-        traceCameraPacket(s, px, py, m, out, counts);
-        for (int l = 0; l < m; ++l) radiance[first + l] = out.lane(l);
-    }
+        for (int l = 0; l < m; ++l) {
+            const CameraSample<T> cs = pixelSample(s, x0 + first + l, y, n);
+            px[l] = T(cs.i) + cs.u;
+            py[l] = T(cs.j) + cs.v;
+        }
+    });
 }
 
 template <typename T>

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "camera.h"
+#include "ray_packet.h"
 #include "scene.h"
-#include "sphere_block.h"
 #include "sphere_intersect.h"
 
 namespace whitted {
@@ -65,12 +65,9 @@ struct PreparedLight {
 template <typename T>
 struct PreparedScene {
     CameraBasis<T> camera;
-    // Spheres as parallel arrays: the hit loop touches only centre and r^2.
-    std::vector<Vec<T>> centre;
-    std::vector<T> radius, rrHi, rrLo;  // rrHi + rrLo == radius^2 exactly
-    std::vector<int> material;
+    SphereSet<T> spheres;         // geometry, in scene order
+    std::vector<int> material;    // per sphere: index into materials
     std::vector<T> transparency;  // per sphere, from its material: the shadow-ray factor
-    SphereBlocks<T> blocks;       // the same spheres, laid out for intersectBlock()
     std::vector<PreparedMaterial<T>> materials;
     std::vector<PreparedLight<T>> lights;
     Vec<T> background, ambient;

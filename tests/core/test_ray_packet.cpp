@@ -1,47 +1,27 @@
-// The SIMD paths (sphere_block.h: one ray against several spheres; ray_packet.h:
-// several rays against one sphere) must give exactly the roots of the scalar
-// intersectSphere() for every lane, or renders would depend on which rays happen
-// to share a packet. Seeded random rays, seed printed on failure.
+// The SIMD path (ray_packet.h: several rays against one sphere) must give
+// exactly the roots of the scalar intersectSphere() for every lane, or renders
+// would depend on which rays happen to share a packet. Seeded random rays, seed
+// printed on failure.
 #include <random>
 
 #include <gtest/gtest.h>
 
 #include "ray_packet.h"
-#include "sphere_block.h"
 #include "sphere_intersect.h"
 #include "tracer.h"
 
 namespace whitted {
 namespace {
 
+// Spheres from radius 1e-3 to 10 around the origin, and first a huge floor
+// sphere (the seed's) whose surface passes near the origin.
 template <typename T>
-struct RandomSpheres {
-    std::vector<Vec<T>> centre;
-    std::vector<T> rrHi, rrLo, cameraC;
-    SphereBlocks<T> blocks;
-};
-
-// Spheres from radius 1e-3 to 1e5 (the seed floor's size) around the origin,
-// including one huge floor sphere whose surface passes near the origin.
-template <typename T>
-RandomSpheres<T> makeSpheres(std::mt19937& rng, int count, const Vec<T>& camera) {
+SphereSet<T> makeSpheres(std::mt19937& rng, int count, const Vec<T>& camera) {
     std::uniform_real_distribution<double> pos(-5.0, 5.0), logR(-3.0, 1.0);
-    RandomSpheres<T> s;
-    for (int k = 0; k < count; ++k) {
-        Vec<T> c(T(pos(rng)), T(pos(rng)), T(pos(rng)));
-        T r = T(std::pow(10.0, logR(rng)));
-        if (k == 0) {
-            c = Vec<T>(T(0), T(-99999.5), T(0));
-            r = T(99999);
-        }
-        T hi, lo;
-        splitRadiusSquared(r, hi, lo);
-        s.centre.push_back(c);
-        s.rrHi.push_back(hi);
-        s.rrLo.push_back(lo);
-        s.cameraC.push_back(accurateOffsetSquared(camera, c, hi, lo));
-    }
-    s.blocks.assign(s.centre, s.rrHi, s.rrLo, s.cameraC);
+    SphereSet<T> s;
+    s.add(Vec<T>(T(0), T(-99999.5), T(0)), T(99999), camera);
+    for (int k = 1; k < count; ++k)
+        s.add(Vec<T>(T(pos(rng)), T(pos(rng)), T(pos(rng))), T(std::pow(10.0, logR(rng))), camera);
     return s;
 }
 
@@ -63,13 +43,14 @@ void expectSameRoots(std::optional<SphereRoots<T>> scalar, bool valid, T tNear, 
 }
 
 template <typename T>
-void checkBlocksAndPacketsMatchScalar(unsigned seed) {
+void checkPacketsMatchScalar(unsigned seed) {
     std::mt19937 rng(seed);
     const Vec<T> camera(T(0), T(0.35), T(-1));
-    const int sphereCount = 11;  // more than one block in float and in double
-    const RandomSpheres<T> s = makeSpheres<T>(rng, sphereCount, camera);
+    const int sphereCount = 11;
+    const SphereSet<T> s = makeSpheres<T>(rng, sphereCount, camera);
     std::uniform_real_distribution<double> pos(-3.0, 3.0);
     constexpr int W = RayPacket<T>::kWidth;
+    int hits = 0;
 
     for (int trial = 0; trial < 200; ++trial) {
         const bool fromCamera = trial % 2 == 0;
@@ -86,30 +67,26 @@ void checkBlocksAndPacketsMatchScalar(unsigned seed) {
             packet.set(l, o, randomDirection<T>(rng), -1, false);
         }
         for (int k = 0; k < sphereCount; ++k) {
-            const PacketRoots<T> pr = intersectPacket(s.blocks, k, packet, packet.active);
+            const PacketRoots<T> pr = intersectPacket(s, k, packet, packet.active);
             for (int l = 0; l < W; ++l) {
                 const T* knownC = fromCamera ? &s.cameraC[k] : nullptr;
                 const auto scalar = intersectSphere(packet.origin(l), packet.dir(l), s.centre[k],
                                                     s.rrHi[k], s.rrLo[k], knownC);
                 expectSameRoots(scalar, bool((pr.valid >> l) & 1u), pr.tNear[l], pr.tFar[l], seed,
                                 trial * W + l, k);
-                // The same ray against the block holding sphere k.
-                const int bw = SphereBlock<T>::kWidth;
-                const BlockRoots<T> br = intersectBlock(s.blocks.blocks[k / bw], packet.origin(l),
-                                                        packet.dir(l), fromCamera, ~0u);
-                expectSameRoots(scalar, bool((br.valid >> (k % bw)) & 1u), br.tNear[k % bw],
-                                br.tFar[k % bw], seed, trial * W + l, k);
+                hits += scalar.has_value();
             }
         }
     }
+    EXPECT_GT(hits, 200 * W / 4) << "seed " << seed << ": too few hits to compare";
 }
 
 TEST(RayPacket, LanesMatchScalarIntersectionBitForBit_Float) {
-    for (unsigned seed : {1u, 2u, 3u}) checkBlocksAndPacketsMatchScalar<float>(seed);
+    for (unsigned seed : {1u, 2u, 3u}) checkPacketsMatchScalar<float>(seed);
 }
 
 TEST(RayPacket, LanesMatchScalarIntersectionBitForBit_Double) {
-    for (unsigned seed : {1u, 2u, 3u}) checkBlocksAndPacketsMatchScalar<double>(seed);
+    for (unsigned seed : {1u, 2u, 3u}) checkPacketsMatchScalar<double>(seed);
 }
 
 // A ray traced alone (traceRay) and the same ray as one lane of a full packet of

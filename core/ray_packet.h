@@ -166,7 +166,7 @@ inline void packetClosestHits(const SphereSet<T>& spheres, const RayPacket<T>& r
 }
 
 // S_j per lane: the product of the transparencies of the spheres each shadow
-// ray crosses before `distance`, in sphere order, as shadowTransmittance() does.
+// ray crosses before `distance`, in sphere order (SPEC §3).
 template <typename T>
 inline typename Simd<T>::type packetTransmittance(const SphereSet<T>& spheres,
                                                   const std::vector<T>& transparency,

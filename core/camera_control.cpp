@@ -1,0 +1,101 @@
+#include "camera_control.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/gtx/rotate_vector.hpp>
+
+#include "tracer.h"
+
+namespace whitted {
+namespace {
+
+struct Frame {
+    Vec3 forward, right, up;
+    double distance;
+};
+
+Frame frameOf(const Camera& c) {
+    const Vec3 offset = c.lookAt - c.position;
+    Frame f;
+    f.distance = glm::length(offset);
+    f.forward = offset / f.distance;
+    f.right = glm::normalize(glm::cross(glm::normalize(c.up), f.forward));
+    f.up = glm::cross(f.forward, f.right);
+    return f;
+}
+
+constexpr double kPi = 3.14159265358979323846;
+
+}  // namespace
+
+Camera orbit(const Camera& c, double yaw, double pitch) {
+    const Frame f = frameOf(c);
+    const Vec3 axis = glm::normalize(c.up);
+    // Angle between the view direction (from look_at back to the camera) and up.
+    const Vec3 back = -f.forward;
+    const double polar = std::acos(std::clamp(glm::dot(back, axis), -1.0, 1.0));
+    const double limit = kPi / 180.0;
+    const double newPolar = std::clamp(polar - pitch, limit, kPi - limit);
+    Vec3 dir = glm::rotate(back, polar - newPolar, f.right);
+    dir = glm::rotate(dir, yaw, axis);
+    Camera out = c;
+    out.position = c.lookAt + glm::normalize(dir) * f.distance;
+    return out;
+}
+
+Camera pan(const Camera& c, double right, double up) {
+    const Frame f = frameOf(c);
+    const Vec3 delta = (f.right * right + f.up * up) * f.distance;
+    Camera out = c;
+    out.position += delta;
+    out.lookAt += delta;
+    return out;
+}
+
+Camera dolly(const Camera& c, double factor) {
+    const Frame f = frameOf(c);
+    const double distance = std::max(f.distance * factor, f.distance * 1e-6);
+    Camera out = c;
+    out.position = c.lookAt - f.forward * distance;
+    return out;
+}
+
+Camera walk(const Camera& c, double right, double up, double forward) {
+    const Frame f = frameOf(c);
+    const Vec3 delta = (f.right * right + f.up * up + f.forward * forward) * f.distance;
+    Camera out = c;
+    out.position += delta;
+    out.lookAt += delta;
+    return out;
+}
+
+Camera zoom(const Camera& c, double factor) {
+    Camera out = c;
+    out.vfovDegrees = std::clamp(c.vfovDegrees * factor, 1.0, 170.0);
+    return out;
+}
+
+Camera frameSphere(const Camera& c, const Vec3& centre, double radius) {
+    const Frame f = frameOf(c);
+    const double halfFov = c.vfovDegrees * kPi / 360.0;
+    // The sphere's angular radius is a third of the vertical field of view.
+    const double distance = radius / std::sin(halfFov * 2.0 / 3.0);
+    Camera out = c;
+    out.lookAt = centre;
+    out.position = centre - f.forward * distance;
+    return out;
+}
+
+std::optional<int> pickSphere(const Scene& scene, double x, double y) {
+    const PreparedScene<double> s = prepareScene<double>(scene);
+    const int i = static_cast<int>(std::floor(x)), j = static_cast<int>(std::floor(y));
+    const Ray<double> ray{s.camera.origin, cameraDirection(s.camera, i, j, x - i, y - j), -1,
+                          false, true};
+    const auto hit = closestHit(s, ray);
+    if (!hit) return std::nullopt;
+    return hit->sphere;
+}
+
+}  // namespace whitted

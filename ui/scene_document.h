@@ -1,0 +1,79 @@
+// The open scene: the value the editor shows, its file, and its undo history.
+//
+// Every change goes through edit() (or undo/redo), which records the scene
+// before and after as one QUndoCommand, so that each edit is one undo step and
+// a slider drag between beginGesture() and endGesture() is a single one.
+// Listeners re-read scene() on sceneChanged(); nothing else holds scene state.
+#pragma once
+
+#include <functional>
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+
+#include "scene.h"
+
+namespace whitted::ui {
+
+// What a list or property panel shows.
+enum class ItemKind { Sphere, Light, Material };
+
+class SceneDocument : public QObject {
+    Q_OBJECT
+public:
+    explicit SceneDocument(QObject* parent = nullptr);
+
+    const Scene& scene() const { return scene_; }
+    QString filePath() const { return filePath_; }  // empty for a new, unsaved scene
+    bool isModified() const { return !undo_.isClean(); }
+    QUndoStack* undoStack() { return &undo_; }
+
+    // Replaces the whole scene (New, Open) and forgets the undo history.
+    void reset(const Scene& scene, const QString& filePath);
+
+    // Loads a file; on failure returns false with core's message in `error`
+    // and leaves the current scene exactly as it was.
+    bool load(const QString& path, QString* error);
+
+    // Saves (atomically, SPEC §6) and marks the document clean. On failure
+    // returns false with the reason, and the document stays modified.
+    bool save(const QString& path, QString* error);
+
+    // Applies `change` to a copy of the scene as one undoable step named `text`.
+    // A change that leaves the scene invalid (validateScene) is refused: returns
+    // false with the reason in `error`, and nothing happens. A change that
+    // changes nothing records nothing.
+    bool edit(const QString& text, const std::function<void(Scene&)>& change,
+              QString* error = nullptr);
+
+    // Everything edited between these two calls is a single undo step (a slider drag).
+    void beginGesture(const QString& text);
+    void endGesture();
+
+    // A name for a new item of `kind` that no other item of that kind has ("sphere 4").
+    QString uniqueName(ItemKind kind, const QString& stem) const;
+
+signals:
+    // The scene's content changed in any way (edit, undo, redo, load, new).
+    void sceneChanged();
+    // Items were added, removed, renamed or reordered (list models reset on it).
+    void structureChanged();
+    void filePathChanged(const QString& path);
+    void modifiedChanged(bool modified);
+
+private:
+    friend class SceneEditCommand;
+    void apply(const Scene& scene);  // sets the scene and tells listeners
+
+    Scene scene_;
+    QString filePath_;
+    QUndoStack undo_;
+    int gestureDepth_ = 0;
+};
+
+// The number of items of a kind in a scene, and the name of item `index`.
+int itemCount(const Scene& scene, ItemKind kind);
+QString itemName(const Scene& scene, ItemKind kind, int index);
+
+}  // namespace whitted::ui

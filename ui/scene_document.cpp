@@ -24,13 +24,13 @@ bool sameStructure(const Scene& a, const Scene& b) {
 // The whole scene before and after: scenes are plain values, and a copy is
 // simpler and safer than an inverse for every kind of edit.
 class SceneEditCommand : public QUndoCommand {
-public:
+  public:
     SceneEditCommand(SceneDocument* doc, Scene before, Scene after, const QString& text)
         : QUndoCommand(text), doc_(doc), before_(std::move(before)), after_(std::move(after)) {}
     void undo() override { doc_->apply(before_); }
     void redo() override { doc_->apply(after_); }
 
-private:
+  private:
     SceneDocument* doc_;
     Scene before_, after_;
 };
@@ -89,8 +89,7 @@ bool SceneDocument::edit(const QString& text, const std::function<void(Scene&)>&
     change(after);
     if (after == scene_) return true;
     if (auto problem = validateScene(after)) {
-        if (error)
-            *error = QString::fromStdString(problem->jsonPath + ": " + problem->reason);
+        if (error) *error = QString::fromStdString(problem->jsonPath + ": " + problem->reason);
         return false;
     }
     undo_.push(new SceneEditCommand(this, scene_, std::move(after), text));
@@ -118,9 +117,12 @@ QString SceneDocument::uniqueName(ItemKind kind, const QString& stem) const {
 
 int itemCount(const Scene& scene, ItemKind kind) {
     switch (kind) {
-        case ItemKind::Sphere: return static_cast<int>(scene.spheres.size());
-        case ItemKind::Light: return static_cast<int>(scene.lights.size());
-        case ItemKind::Material: return static_cast<int>(scene.materials.size());
+        case ItemKind::Sphere:
+            return static_cast<int>(scene.spheres.size());
+        case ItemKind::Light:
+            return static_cast<int>(scene.lights.size());
+        case ItemKind::Material:
+            return static_cast<int>(scene.materials.size());
     }
     return 0;
 }
@@ -128,9 +130,12 @@ int itemCount(const Scene& scene, ItemKind kind) {
 QString itemName(const Scene& scene, ItemKind kind, int index) {
     if (index < 0 || index >= itemCount(scene, kind)) return {};
     switch (kind) {
-        case ItemKind::Sphere: return QString::fromStdString(scene.spheres[index].name);
-        case ItemKind::Light: return QString::fromStdString(scene.lights[index].name);
-        case ItemKind::Material: return QString::fromStdString(scene.materials[index].name);
+        case ItemKind::Sphere:
+            return QString::fromStdString(scene.spheres[index].name);
+        case ItemKind::Light:
+            return QString::fromStdString(scene.lights[index].name);
+        case ItemKind::Material:
+            return QString::fromStdString(scene.materials[index].name);
     }
     return {};
 }

@@ -21,7 +21,7 @@ enum class ItemKind { Sphere, Light, Material };
 
 class SceneDocument : public QObject {
     Q_OBJECT
-public:
+  public:
     explicit SceneDocument(QObject* parent = nullptr);
 
     const Scene& scene() const { return scene_; }
@@ -54,7 +54,7 @@ public:
     // A name for a new item of `kind` that no other item of that kind has ("sphere 4").
     QString uniqueName(ItemKind kind, const QString& stem) const;
 
-signals:
+  signals:
     // The scene's content changed in any way (edit, undo, redo, load, new).
     void sceneChanged();
     // Items were added, removed, renamed or reordered (list models reset on it).
@@ -62,7 +62,7 @@ signals:
     void filePathChanged(const QString& path);
     void modifiedChanged(bool modified);
 
-private:
+  private:
     friend class SceneEditCommand;
     void apply(const Scene& scene);  // sets the scene and tells listeners
 

@@ -1,0 +1,24 @@
+// whitted: the scene editor. Opens the scene given as its argument, or a new one.
+#include <QApplication>
+#include <QCommandLineParser>
+
+#include "main_window.h"
+
+int main(int argc, char** argv) {
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName("Whitted");
+    QApplication::setApplicationName("whitted");
+    QApplication::setApplicationDisplayName("Whitted");
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription("Scene editor for a classic Whitted ray tracer.");
+    parser.addHelpOption();
+    parser.addPositionalArgument("scene", "Scene file to open (JSON, whitted-scene v1).");
+    parser.process(app);
+
+    whitted::ui::MainWindow window;
+    window.show();
+    if (!parser.positionalArguments().isEmpty())
+        window.openFile(parser.positionalArguments().first());
+    return app.exec();
+}

@@ -1,0 +1,48 @@
+// srgbEncode8 answers from a table of thresholds; it must give exactly the
+// codes of the formula lround(srgbEncode(x) * 255) that SPEC §5 describes.
+#include <cmath>
+#include <cstring>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "srgb.h"
+
+namespace whitted {
+namespace {
+
+std::uint8_t byFormula(float x) {
+    return static_cast<std::uint8_t>(std::lround(srgbEncode(x) * 255.0f));
+}
+
+TEST(Srgb, Encode8EqualsFormulaOnEveryFloatFromZeroToOne) {
+    // Every 7th float bit pattern in [0, 1]: about 150 million values would be
+    // slow; a stride still lands on both sides of every threshold many times.
+    int checked = 0;
+    for (std::uint32_t bits = 0; bits <= 0x3f800000u; bits += 7) {
+        float x;
+        std::memcpy(&x, &bits, sizeof x);
+        ASSERT_EQ(srgbEncode8(x), byFormula(x)) << "x = " << x;
+        ++checked;
+    }
+    EXPECT_GT(checked, 100000000);
+}
+
+TEST(Srgb, Encode8ClampsAndHandlesOddInputs) {
+    EXPECT_EQ(srgbEncode8(-1.0f), 0);
+    EXPECT_EQ(srgbEncode8(0.0f), 0);
+    EXPECT_EQ(srgbEncode8(std::nanf("")), 0);
+    EXPECT_EQ(srgbEncode8(1.0f), 255);
+    EXPECT_EQ(srgbEncode8(7.5f), 255);
+    EXPECT_EQ(srgbEncode8(INFINITY), 255);
+    // Linear 0.5 is sRGB 1.055 * 0.5^(1/2.4) - 0.055 = 0.73536, times 255 = 187.52.
+    EXPECT_EQ(srgbEncode8(0.5f), 188);
+}
+
+TEST(Srgb, DecodeThenEncodeGivesTheSameCode) {
+    for (int code = 0; code < 256; ++code)
+        EXPECT_EQ(srgbEncode8(srgbDecode8(static_cast<std::uint8_t>(code))), code) << code;
+}
+
+}  // namespace
+}  // namespace whitted

@@ -1,0 +1,488 @@
+// GUI tests of the editor: the real MainWindow (document, render worker, view,
+// panels) driven offscreen through its widgets, mouse and keys, checking what the
+// user sees: the pixels of the view, the selection, the title, the files written.
+//
+// Scenes are rendered at 160x120 to keep every test well under a second of
+// rendering. Images are compared exactly (tolerance 0): the contract promises
+// bit-identical renders (SPEC §4); on a mismatch the two images and a diff are
+// written to the temporary directory and the paths printed.
+#include <QApplication>
+#include <QDir>
+#include <QFileInfo>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTest>
+#include <QUndoStack>
+#include <QWindow>
+
+#include <glm/geometric.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "camera_control.h"
+#include "color_button.h"
+#include "export_job.h"
+#include "image_convert.h"
+#include "image_io.h"
+#include "main_window.h"
+#include "render_view.h"
+#include "renderer.h"
+#include "scene_io.h"
+#include "scene_panel.h"
+#include "test_support.h"
+
+namespace whitted::ui {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kWidth = 160, kHeight = 120;
+constexpr int kRenderTimeoutMs =
+    20000;  // a 160x120 render takes milliseconds; CI machines are shared
+const std::string kSeedScene = WHITTED_SCENES_DIR "/seed.json";
+enum SeedSphere { kBlueBall = 0, kPurpleBall = 1, kWhiteBall = 2, kFloor = 3 };
+
+// Where scene point `p` appears in the image, in continuous pixel coordinates of
+// the render size (x right, y down; pixel (i, j) covers [i, i+1) x [j, j+1)): SPEC §1 inverted.
+QPointF project(const Scene& scene, const Vec3& p) {
+    const Camera& c = scene.camera;
+    const Vec3 forward = glm::normalize(c.lookAt - c.position);
+    const Vec3 right = glm::normalize(glm::cross(c.up, forward));
+    const Vec3 up = glm::cross(forward, right);
+    const Vec3 d = p - c.position;
+    const double depth = glm::dot(d, forward);
+    const double t = std::tan(c.vfovDegrees * kPi / 360.0);
+    const double w = scene.render.width, h = scene.render.height;
+    const double x = glm::dot(d, right) / depth, y = glm::dot(d, up) / depth;
+    return {(x / (t * w / h) + 1) / 2 * w, (1 - y / t) / 2 * h};
+}
+
+QPoint pixelOf(const Scene& scene, const Vec3& p) {
+    const QPointF f = project(scene, p);
+    return {int(std::floor(f.x())), int(std::floor(f.y()))};
+}
+
+// A colour channel that clearly dominates the other two.
+bool blueDominant(QColor c) {
+    return c.blue() > 2 * c.red() + 10 && c.blue() > 2 * c.green() + 10;
+}
+bool redDominant(QColor c) {
+    return c.red() > 2 * c.blue() + 10 && c.red() > 2 * c.green() + 10;
+}
+
+// Exact image equality; on failure writes actual, expected and a diff image.
+::testing::AssertionResult sameImage(const QImage& actual, const QImage& expected) {
+    const QImage a = actual.convertToFormat(QImage::Format_RGB32);
+    const QImage e = expected.convertToFormat(QImage::Format_RGB32);
+    if (a.size() != e.size())
+        return ::testing::AssertionFailure() << "size " << a.width() << "x" << a.height()
+                                             << ", expected " << e.width() << "x" << e.height();
+    int differing = 0, firstX = -1, firstY = -1;
+    QImage diff(a.size(), QImage::Format_RGB32);
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x) {
+            const QRgb p = a.pixel(x, y), q = e.pixel(x, y);
+            const bool same = p == q;
+            diff.setPixel(x, y, same ? qRgb(0, 0, 0) : qRgb(255, 255, 255));
+            if (!same && differing++ == 0) firstX = x, firstY = y;
+        }
+    if (differing == 0) return ::testing::AssertionSuccess();
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    const QString stem = QDir(QDir::tempPath())
+                             .filePath(QStringLiteral("whitted-%1-%2")
+                                           .arg(info ? info->name() : "image")
+                                           .arg(QCoreApplication::applicationPid()));
+    a.save(stem + "-actual.png");
+    e.save(stem + "-expected.png");
+    diff.save(stem + "-diff.png");
+    return ::testing::AssertionFailure()
+           << differing << " of " << a.width() * a.height() << " pixels differ, first at ("
+           << firstX << ", " << firstY << "): " << std::hex << a.pixel(firstX, firstY) << " vs "
+           << e.pixel(firstX, firstY) << std::dec << "; images written to " << stem.toStdString()
+           << "-{actual,expected,diff}.png";
+}
+
+// For "the image changed": equality without sameImage's diff files.
+bool identical(const QImage& a, const QImage& b) {
+    return a.convertToFormat(QImage::Format_RGB32) == b.convertToFormat(QImage::Format_RGB32);
+}
+
+// The core's own render of a scene, as the view shows it (8-bit sRGB).
+QImage coreRender(const Scene& scene) {
+    return toQImage(render(scene).image);
+}
+
+// Everything that reached the view (MainWindow::frameShown).
+class FrameLog {
+  public:
+    explicit FrameLog(MainWindow& window) {
+        connection_ = QObject::connect(&window, &MainWindow::frameShown, &window,
+                                       [this](const RenderFrame& f) {
+                                           generations.push_back(f.generation);
+                                           if (f.renderComplete) ++completed;
+                                       });
+    }
+    ~FrameLog() { QObject::disconnect(connection_); }
+    FrameLog(const FrameLog&) = delete;
+    FrameLog& operator=(const FrameLog&) = delete;
+
+    int completed = 0;                 // frames shown with renderComplete
+    std::vector<quint64> generations;  // of every frame shown, in order
+
+  private:
+    QMetaObject::Connection connection_;
+};
+
+// A window on a 160x120 copy of the seed scene, saved (clean) in a temporary directory.
+class MainWindowTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        Scene seed = loadScene(kSeedScene);
+        seed.render.width = kWidth;
+        seed.render.height = kHeight;
+        scenePath = QString::fromStdString((dir / "seed.json").string());
+        saveScene(seed, scenePath.toStdString());
+
+        window = std::make_unique<MainWindow>();
+        window->resize(1200, 800);
+        window->show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+        log = std::make_unique<FrameLog>(*window);
+        doc = window->document();
+        view = window->renderView();
+        const int before = log->completed;
+        ASSERT_TRUE(window->openFile(scenePath)) << window->lastError().toStdString();
+        ASSERT_TRUE(waitForRender(before));
+        ASSERT_EQ(view->frame().size(), QSize(kWidth, kHeight));
+    }
+
+    void TearDown() override {
+        // Frames reach the view newest generation last: a stale frame never follows a newer one.
+        if (log) {
+            EXPECT_TRUE(std::is_sorted(log->generations.begin(), log->generations.end()))
+                << "a frame of an older generation was shown after a newer one";
+        }
+        log.reset();
+        window.reset();
+    }
+
+    // Waits until a complete frame is shown after `completedBefore` were.
+    ::testing::AssertionResult waitForRender(int completedBefore) {
+        if (QTest::qWaitFor([&] { return log->completed > completedBefore; }, kRenderTimeoutMs))
+            return ::testing::AssertionSuccess();
+        return ::testing::AssertionFailure()
+               << "no complete frame within " << kRenderTimeoutMs << " ms";
+    }
+
+    // One document edit, then the complete frame of its render.
+    ::testing::AssertionResult editAndWait(const std::function<void(Scene&)>& change) {
+        const int before = log->completed;
+        QString error;
+        if (!doc->edit(QStringLiteral("test edit"), change, &error))
+            return ::testing::AssertionFailure() << "edit refused: " << error.toStdString();
+        return waitForRender(before);
+    }
+
+    // Undo or redo, then the complete frame.
+    ::testing::AssertionResult undoAndWait(bool redo = false) {
+        const int before = log->completed;
+        redo ? doc->undoStack()->redo() : doc->undoStack()->undo();
+        return waitForRender(before);
+    }
+
+    // The widget point over continuous image point `p` (pixels of the render size).
+    QPoint widgetPoint(QPointF p) const {
+        const QRect r = view->imageRect();
+        return r.topLeft() +
+               QPoint(int(p.x() * r.width() / kWidth), int(p.y() * r.height() / kHeight));
+    }
+
+    QString shownTitle() const { return window->windowHandle()->title(); }
+
+    test::TempDir dir;
+    QString scenePath;
+    std::unique_ptr<MainWindow> window;
+    std::unique_ptr<FrameLog> log;
+    SceneDocument* doc = nullptr;
+    RenderView* view = nullptr;
+};
+
+// 1.
+TEST_F(MainWindowTest, MaterialDiffuse_EditedToRed_BallTurnsRedAndBackgroundStays) {
+    const QImage before = view->frame();
+    const QPoint centre = pixelOf(doc->scene(), doc->scene().spheres[kBlueBall].center);
+    ASSERT_TRUE(blueDominant(before.pixelColor(centre)))
+        << before.pixelColor(centre).name().toStdString();
+
+    window->scenePanel()->select(ItemKind::Material, 0);  // "blue"
+    auto* diffuse = window->findChild<ColorButton*>("materialDiffuse");
+    ASSERT_NE(diffuse, nullptr);
+    ASSERT_TRUE(diffuse->isVisibleTo(window.get())) << "the material's diffuse button is not shown";
+    EXPECT_EQ(diffuse->color(), Vec3(0, 0, 1));
+
+    const int n = log->completed;
+    diffuse->edit(Vec3(1, 0, 0));
+    ASSERT_TRUE(waitForRender(n));
+    EXPECT_EQ(doc->scene().materials[0].diffuse, Vec3(1, 0, 0));
+    EXPECT_EQ(doc->undoStack()->count(), 1);
+
+    const QImage after = view->frame();
+    EXPECT_TRUE(redDominant(after.pixelColor(centre)))
+        << after.pixelColor(centre).name().toStdString();
+    // Pixels whose camera ray meets no sphere show the background, which no colour changes.
+    int background = 0, changed = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            changed += before.pixel(x, y) != after.pixel(x, y);
+            if (pickSphere(doc->scene(), x + 0.5, y + 0.5)) continue;
+            ++background;
+            ASSERT_EQ(before.pixel(x, y), after.pixel(x, y))
+                << "background pixel " << x << ", " << y;
+        }
+    EXPECT_GT(background, 100);
+    // The ball (~15 px radius) and its reflections change; most of the image does not.
+    EXPECT_GT(changed, 400);
+    EXPECT_LT(changed, kWidth * kHeight / 4);
+}
+
+// 2a.
+TEST_F(MainWindowTest, ArrowKey_Left_OrbitsFiveDegreesAndChangesImage) {
+    const Camera before = doc->scene().camera;
+    const QImage image = view->frame();
+    const int n = log->completed;
+    QTest::keyClick(view, Qt::Key_Left);
+    ASSERT_TRUE(waitForRender(n));
+
+    const Camera& after = doc->scene().camera;
+    EXPECT_EQ(after, orbit(before, kPi / 36, 0));
+    const Vec3 a = before.position - before.lookAt, b = after.position - after.lookAt;
+    EXPECT_EQ(after.lookAt, before.lookAt);
+    EXPECT_NEAR(glm::length(b), glm::length(a), 1e-12);
+    // Yaw about the camera's up axis (y): 5 degrees round it, the height stays.
+    EXPECT_NEAR(b.y, a.y, 1e-12);
+    const double turned = std::atan2(b.z, b.x) - std::atan2(a.z, a.x);
+    EXPECT_NEAR(std::abs(turned) * 180 / kPi, 5.0, 1e-9);
+    EXPECT_EQ(doc->undoStack()->count(), 1);
+    EXPECT_FALSE(identical(view->frame(), image));
+    EXPECT_TRUE(sameImage(view->frame(), coreRender(doc->scene())));
+}
+
+// 2b.
+TEST_F(MainWindowTest, MouseDrag_Left_OrbitsAsOneUndoStep) {
+    const Camera before = doc->scene().camera;
+    const QImage image = view->frame();
+    const int undoCount = doc->undoStack()->count();
+    const QPoint start = view->imageRect().center();
+    const int n = log->completed;
+    QTest::mousePress(view, Qt::LeftButton, {}, start);
+    for (int i = 1; i <= 10; ++i) QTest::mouseMove(view, start + QPoint(6 * i, 2 * i));
+    QTest::mouseRelease(view, Qt::LeftButton, {}, start + QPoint(60, 20));
+    ASSERT_TRUE(waitForRender(n));
+
+    const Camera after = doc->scene().camera;
+    EXPECT_NE(after.position, before.position);
+    EXPECT_EQ(after.lookAt, before.lookAt);
+    EXPECT_NEAR(glm::length(after.position - after.lookAt),
+                glm::length(before.position - before.lookAt), 1e-9);
+    EXPECT_EQ(doc->undoStack()->count(), undoCount + 1);
+    EXPECT_FALSE(identical(view->frame(), image));
+
+    // One undo takes the whole drag back.
+    ASSERT_TRUE(undoAndWait());
+    EXPECT_EQ(doc->scene().camera, before);
+    EXPECT_TRUE(sameImage(view->frame(), image));
+}
+
+// 3.
+TEST_F(MainWindowTest, Click_OnSpherePixel_SelectsThatSphere) {
+    ScenePanel* panel = window->scenePanel();
+    const Scene& s = doc->scene();
+    const int undoCount = doc->undoStack()->count();
+
+    QTest::mouseClick(view, Qt::LeftButton, {},
+                      widgetPoint(project(s, s.spheres[kPurpleBall].center)));
+    EXPECT_EQ(panel->currentKind(), ItemKind::Sphere);
+    EXPECT_EQ(panel->currentIndex(), int(kPurpleBall));
+
+    QTest::mouseClick(view, Qt::LeftButton, {},
+                      widgetPoint(project(s, s.spheres[kBlueBall].center)));
+    EXPECT_EQ(panel->currentKind(), ItemKind::Sphere);
+    EXPECT_EQ(panel->currentIndex(), int(kBlueBall));
+
+    // The floor, at the bottom middle of the image.
+    QTest::mouseClick(view, Qt::LeftButton, {}, widgetPoint({kWidth / 2.0, kHeight - 2.0}));
+    EXPECT_EQ(panel->currentIndex(), int(kFloor));
+
+    // Clicks pick; they are not edits.
+    EXPECT_EQ(doc->undoStack()->count(), undoCount);
+    EXPECT_EQ(doc->scene().camera, loadScene(scenePath.toStdString()).camera);
+}
+
+// 4.
+TEST_F(MainWindowTest, Undo_AfterRadiusEdit_RestoresImageBitForBit) {
+    const QImage original = view->frame();
+    ASSERT_TRUE(editAndWait([](Scene& s) { s.spheres[kBlueBall].radius = 0.8; }));
+    const QImage edited = view->frame();
+    EXPECT_FALSE(identical(edited, original));
+
+    ASSERT_TRUE(undoAndWait());
+    EXPECT_EQ(doc->scene().spheres[kBlueBall].radius, 0.6);
+    EXPECT_TRUE(sameImage(view->frame(), original));
+
+    ASSERT_TRUE(undoAndWait(/*redo=*/true));
+    EXPECT_TRUE(sameImage(view->frame(), edited));
+}
+
+// 5.
+TEST_F(MainWindowTest, SaveThenOpen_InFreshWindow_RoundTripsSceneAndBytes) {
+    ASSERT_TRUE(editAndWait([](Scene& s) {
+        s.lights[0].intensity = 0.75;
+        s.spheres[kWhiteBall].center.x = -0.3;
+    }));
+    const QString saved = QString::fromStdString((dir / "saved.json").string());
+    QString error;
+    ASSERT_TRUE(doc->save(saved, &error)) << error.toStdString();
+    EXPECT_FALSE(doc->isModified());
+    EXPECT_EQ(doc->filePath(), saved);
+    EXPECT_EQ(test::readFile(saved.toStdString()), sceneToJson(doc->scene()));
+
+    MainWindow other;
+    ASSERT_TRUE(other.openFile(saved)) << other.lastError().toStdString();
+    EXPECT_EQ(other.document()->scene(), doc->scene());
+    EXPECT_FALSE(other.document()->isModified());
+
+    const QString again = QString::fromStdString((dir / "again.json").string());
+    ASSERT_TRUE(other.document()->save(again, &error)) << error.toStdString();
+    EXPECT_EQ(test::readFile(again.toStdString()), test::readFile(saved.toStdString()));
+}
+
+// 6.
+TEST_F(MainWindowTest, Export_PngAndExr_WritesTheCoreRenderOfTheSettings) {
+    for (const char* name : {"export.exr", "export.png"}) {
+        SCOPED_TRACE(name);
+        ExportSettings settings;
+        settings.path = QString::fromStdString((dir / name).string());
+        settings.render = doc->scene().render;
+        settings.render.width = 96;  // none of them the scene's own
+        settings.render.height = 64;
+        settings.render.samplesPerPixel = 4;
+        settings.render.maxDepth = 3;
+
+        QSignalSpy finished(window.get(), &MainWindow::exportFinished);
+        window->startExport(settings);
+        ASSERT_TRUE(finished.wait(kRenderTimeoutMs));
+        ASSERT_EQ(finished.count(), 1);
+        ASSERT_TRUE(finished[0][0].toBool()) << finished[0][1].toString().toStdString();
+
+        Scene expectedScene = doc->scene();
+        expectedScene.render = settings.render;
+        const RenderResult expected = render(expectedScene);
+        ASSERT_TRUE(expected.completed);
+
+        const Image read = readImage((dir / name).string());
+        EXPECT_EQ(read.width, 96);
+        EXPECT_EQ(read.height, 64);
+        if (std::string(name).ends_with(".exr")) {
+            EXPECT_TRUE(read == expected.image) << "the EXR's floats differ from the core render";
+        } else {
+            EXPECT_TRUE(sameImage(QImage(settings.path), toQImage(expected.image)));
+        }
+    }
+    EXPECT_EQ(dir.entries(), (std::vector<std::string>{"export.exr", "export.png", "seed.json"}));
+    // Exporting is not an edit.
+    EXPECT_FALSE(doc->isModified());
+}
+
+// 7.
+TEST_F(MainWindowTest, OpenBrokenFile_KeepsSceneTitleAndNamesTheProblem) {
+    ASSERT_TRUE(editAndWait([](Scene& s) { s.spheres[kBlueBall].radius = 0.7; }));
+    const Scene before = doc->scene();
+    const QString title = shownTitle();
+    const QImage image = view->frame();
+
+    std::string text = test::readFile(kSeedScene);
+    const std::string radius = "\"radius\": 0.6";
+    const auto at = text.find(radius);  // the first sphere's
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, radius.size(), "\"radius\": -1");
+    const QString broken = QString::fromStdString((dir / "broken.json").string());
+    test::writeFile(broken.toStdString(), text);
+
+    EXPECT_FALSE(window->openFile(broken));
+    EXPECT_EQ(doc->scene(), before);
+    EXPECT_EQ(doc->filePath(), scenePath);
+    EXPECT_TRUE(doc->isModified());
+    EXPECT_EQ(doc->undoStack()->count(), 1);  // the history survives too
+    EXPECT_EQ(shownTitle(), title);
+    EXPECT_TRUE(window->lastError().contains("broken.json")) << window->lastError().toStdString();
+    EXPECT_TRUE(window->lastError().contains("spheres[0].radius"))
+        << window->lastError().toStdString();
+    QTest::qWait(100);  // nothing is re-rendered
+    EXPECT_TRUE(sameImage(view->frame(), image));
+}
+
+// 8.
+TEST_F(MainWindowTest, Title_ShowsFileNameAndStarOnlyWhileModified) {
+    EXPECT_EQ(shownTitle(), QStringLiteral("seed.json — Whitted"));
+    EXPECT_FALSE(window->isWindowModified());
+
+    ASSERT_TRUE(editAndWait([](Scene& s) { s.lights[0].intensity = 0.5; }));
+    EXPECT_TRUE(window->isWindowModified());
+    EXPECT_EQ(shownTitle(), QStringLiteral("seed.json* — Whitted"));
+
+    ASSERT_TRUE(undoAndWait());
+    EXPECT_FALSE(window->isWindowModified());
+    EXPECT_EQ(shownTitle(), QStringLiteral("seed.json — Whitted"));
+
+    ASSERT_TRUE(undoAndWait(/*redo=*/true));
+    EXPECT_EQ(shownTitle(), QStringLiteral("seed.json* — Whitted"));
+    QString error;
+    const QString renamed = QString::fromStdString((dir / "renamed.json").string());
+    ASSERT_TRUE(doc->save(renamed, &error)) << error.toStdString();
+    EXPECT_EQ(shownTitle(), QStringLiteral("renamed.json — Whitted"));
+}
+
+// 9.
+TEST_F(MainWindowTest, RapidEdits_FinalViewIsTheNewestSceneNotAStaleFrame) {
+    const int n = log->completed;
+    const size_t shownBefore = log->generations.size();
+    // A first edit whose frames, the complete one included, wait in the GUI
+    // thread's queue while it is busy: they are stale once the next edit is made.
+    ASSERT_TRUE(doc->edit("radius", [](Scene& s) { s.spheres[kBlueBall].radius = 0.25; }));
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    for (int i = 0; i < 20; ++i)  // no event processing in between: 20 requests in a row
+        ASSERT_TRUE(
+            doc->edit("radius", [i](Scene& s) { s.spheres[kBlueBall].radius = 0.3 + 0.03 * i; }));
+    ASSERT_TRUE(waitForRender(n));
+    const QImage expected = coreRender(doc->scene());
+    EXPECT_TRUE(sameImage(view->frame(), expected));
+    // Nothing older arrives later and overwrites it.
+    QTest::qWait(300);
+    EXPECT_EQ(log->completed, n + 1);
+    EXPECT_TRUE(sameImage(view->frame(), expected));
+    // Every frame the view showed since the edits belongs to the last request.
+    ASSERT_GT(log->generations.size(), shownBefore);
+    for (size_t i = shownBefore; i < log->generations.size(); ++i)
+        EXPECT_EQ(log->generations[i], log->generations.back()) << "frame " << i - shownBefore;
+}
+
+}  // namespace
+}  // namespace whitted::ui
+
+// QApplication for the whole run; QSettings (recent files, window state) in
+// Qt's test location, never the user's.
+int main(int argc, char** argv) {
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    QStandardPaths::setTestModeEnabled(true);
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName("WhittedTests");
+    QApplication::setApplicationName("test_main_window");
+    QSettings().clear();
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}

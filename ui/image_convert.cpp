@@ -1,0 +1,30 @@
+#include "image_convert.h"
+
+#include "srgb.h"
+
+namespace whitted::ui {
+
+void convertRegion(const Image& image, QImage& out, int x, int y, int w, int h) {
+    for (int row = y; row < y + h; ++row) {
+        const float* in = image.pixel(x, row);
+        auto* line = reinterpret_cast<QRgb*>(out.bits() + qsizetype(row) * out.bytesPerLine()) + x;
+        // Runs of equal pixels (the preview's blocks, the background) convert once.
+        float last[3] = {-1.0f, -1.0f, -1.0f};
+        QRgb lastRgb = 0;
+        for (int i = 0; i < w; ++i, in += 3) {
+            if (in[0] != last[0] || in[1] != last[1] || in[2] != last[2]) {
+                last[0] = in[0], last[1] = in[1], last[2] = in[2];
+                lastRgb = qRgb(srgbEncode8(in[0]), srgbEncode8(in[1]), srgbEncode8(in[2]));
+            }
+            line[i] = lastRgb;
+        }
+    }
+}
+
+QImage toQImage(const Image& image) {
+    QImage out(image.width, image.height, QImage::Format_RGB32);
+    convertRegion(image, out, 0, 0, image.width, image.height);
+    return out;
+}
+
+}  // namespace whitted::ui

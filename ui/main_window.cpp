@@ -1,0 +1,333 @@
+#include "main_window.h"
+
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QProgressDialog>
+#include <QSettings>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QTimer>
+
+#include "export_job.h"
+#include "property_panels.h"
+#include "render_view.h"
+#include "scene_panel.h"
+
+namespace whitted::ui {
+
+namespace {
+constexpr int kMaxRecentFiles = 8;
+const char* kSceneFilter = "Whitted scenes (*.json);;All files (*)";
+}  // namespace
+
+Scene MainWindow::newSceneTemplate() {
+    Scene s;
+    s.camera = Camera{{0, 1, -4}, {0, 0.4, 0}, {0, 1, 0}, 50};
+    s.background = {0.02, 0.02, 0.03};
+    s.render.maxDepth = 3;
+    s.materials = {
+        Material{"red", {0.8, 0.1, 0.1}, 0.6, 60, 0.2, 0, 1.5, std::nullopt},
+        Material{"floor", {0.8, 0.8, 0.8}, 0.2, 50, 0.1, 0, 1.5, Checker{{0.1, 0.1, 0.1}, 0.5}}};
+    s.lights = {Light{"key", {3, 5, -4}, {1, 1, 1}, 1}};
+    s.spheres = {Sphere{"ball", {0, 0.5, 0}, 0.5, "red"},
+                 Sphere{"floor", {0, -99999.5, 0}, 99999, "floor"}};
+    return s;
+}
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+    setAcceptDrops(true);
+    view_ = new RenderView(&doc_, this);
+    setCentralWidget(view_);
+    buildDocks();
+    buildMenus();
+
+    passLabel_ = new QLabel;
+    samplesLabel_ = new QLabel;
+    timeLabel_ = new QLabel;
+    speedLabel_ = new QLabel;
+    for (QLabel* l : {passLabel_, samplesLabel_, timeLabel_, speedLabel_})
+        statusBar()->addPermanentWidget(l);
+
+    connect(&doc_, &SceneDocument::sceneChanged, this, [this] { worker_.request(doc_.scene()); });
+    connect(&doc_, &SceneDocument::modifiedChanged, this, &MainWindow::updateTitle);
+    connect(&doc_, &SceneDocument::filePathChanged, this, &MainWindow::updateTitle);
+    connect(&worker_, &RenderWorker::frameReady, this, &MainWindow::onFrame);
+    connect(view_, &RenderView::spherePicked, this, [this](int index) {
+        if (index >= 0) scenePanel_->select(ItemKind::Sphere, index);
+    });
+
+    QSettings settings;
+    if (!restoreGeometry(settings.value("window/geometry").toByteArray())) {
+        // First start: room for the view, the docks only as wide as their forms.
+        resize(1400, 860);
+        // Once shown: before that the docks have no width to give away.
+        QTimer::singleShot(0, this, [this] {
+            resizeDocks(
+                {findChild<QDockWidget*>("sceneDock"), findChild<QDockWidget*>("settingsDock")},
+                {230, 340}, Qt::Horizontal);
+        });
+    }
+    restoreState(settings.value("window/state").toByteArray());
+    rebuildRecentMenu();
+
+    doc_.reset(newSceneTemplate(), QString());
+    view_->setHomeCamera(doc_.scene().camera);
+    updateTitle();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::buildDocks() {
+    scenePanel_ = new ScenePanel(&doc_);
+    auto* sceneDock = new QDockWidget(tr("Scene"), this);
+    sceneDock->setObjectName("sceneDock");
+    sceneDock->setWidget(scenePanel_);
+    addDockWidget(Qt::LeftDockWidgetArea, sceneDock);
+
+    propertyPanel_ = new PropertyPanel(&doc_);
+    auto* tabs = new QTabWidget;
+    tabs->setObjectName("settingsTabs");
+    tabs->addTab(propertyPanel_, tr("Properties"));
+    tabs->addTab(new CameraPanel(&doc_), tr("Camera"));
+    tabs->addTab(new RenderSettingsPanel(&doc_), tr("Render"));
+    auto* settingsDock = new QDockWidget(tr("Settings"), this);
+    settingsDock->setObjectName("settingsDock");
+    settingsDock->setWidget(tabs);
+    addDockWidget(Qt::RightDockWidgetArea, settingsDock);
+
+    connect(scenePanel_, &ScenePanel::selectionChanged, this,
+            [this, tabs](ItemKind kind, int index) {
+                propertyPanel_->showItem(kind, index);
+                view_->setSelectedSphere(kind == ItemKind::Sphere ? index : -1);
+                if (index >= 0) tabs->setCurrentWidget(propertyPanel_);
+            });
+}
+
+void MainWindow::buildMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&New"), QKeySequence::New, this, [this] {
+        if (!maybeSave()) return;
+        doc_.reset(newSceneTemplate(), QString());
+        view_->setHomeCamera(doc_.scene().camera);
+    });
+    file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::openDialog);
+    recentMenu_ = file->addMenu(tr("Open &Recent"));
+    file->addSeparator();
+    file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
+    file->addAction(tr("Save &As…"), QKeySequence::SaveAs, this, &MainWindow::saveAs);
+    file->addSeparator();
+    file->addAction(tr("&Export Image…"), QKeySequence(tr("Ctrl+E")), this,
+                    &MainWindow::exportDialog);
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = doc_.undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setShortcuts(QKeySequence::Undo);
+    QAction* redo = doc_.undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence(tr("Ctrl+Y"))});
+    edit->addAction(undo);
+    edit->addAction(redo);
+    edit->addSeparator();
+    edit->addAction(scenePanel_->addAction());
+    edit->addAction(scenePanel_->duplicateAction());
+    edit->addAction(scenePanel_->deleteAction());
+    edit->addAction(scenePanel_->renameAction());
+
+    QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
+    viewMenu->addAction(tr("Reset Camera"), QKeySequence(Qt::Key_Home), this, [this] {
+        QKeyEvent home(QEvent::KeyPress, Qt::Key_Home, Qt::NoModifier);
+        QApplication::sendEvent(view_, &home);
+    });
+    viewMenu->addAction(tr("Frame Selected Sphere"), QKeySequence(Qt::Key_F), this, [this] {
+        QKeyEvent f(QEvent::KeyPress, Qt::Key_F, Qt::NoModifier);
+        QApplication::sendEvent(view_, &f);
+    });
+    viewMenu->addSeparator();
+    for (QDockWidget* dock : findChildren<QDockWidget*>())
+        viewMenu->addAction(dock->toggleViewAction());
+}
+
+void MainWindow::onFrame(const RenderFrame& frame) {
+    // Stale: a newer request exists, and its frames must not be overwritten.
+    if (frame.generation != worker_.latestGeneration()) return;
+    view_->setFrame(frame.image);
+    passLabel_->setText(frame.preview
+                            ? tr("Preview")
+                            : tr("Pass %1 of %2").arg(frame.pass + 1).arg(frame.passCount));
+    samplesLabel_->setText(tr("%n sample(s) per pixel", nullptr, frame.samples));
+    timeLabel_->setText(tr("%1 s").arg(frame.seconds, 0, 'f', 2));
+    speedLabel_->setText(frame.renderComplete
+                             ? tr("%1 Mrays/s").arg(frame.mraysPerSecond, 0, 'f', 1)
+                             : tr("rendering…"));
+    emit frameShown(frame);
+}
+
+bool MainWindow::openFile(const QString& path) {
+    QString error;
+    if (!doc_.load(path, &error)) {
+        showError(tr("Cannot open scene"), error);
+        return false;
+    }
+    view_->setHomeCamera(doc_.scene().camera);
+    addRecentFile(path);
+    rememberDirectory(path);
+    return true;
+}
+
+void MainWindow::openDialog() {
+    if (!maybeSave()) return;
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open Scene"), lastDirectory(), tr(kSceneFilter));
+    if (!path.isEmpty()) openFile(path);
+}
+
+bool MainWindow::save() {
+    if (doc_.filePath().isEmpty()) return saveAs();
+    QString error;
+    if (!doc_.save(doc_.filePath(), &error)) {
+        showError(tr("Cannot save scene"), error);
+        return false;
+    }
+    view_->setHomeCamera(doc_.scene().camera);
+    return true;
+}
+
+bool MainWindow::saveAs() {
+    QString start = doc_.filePath();
+    if (start.isEmpty()) start = QDir(lastDirectory()).filePath(tr("untitled.json"));
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Save Scene As"), start, tr(kSceneFilter));
+    if (path.isEmpty()) return false;
+    QString error;
+    if (!doc_.save(path, &error)) {
+        showError(tr("Cannot save scene"), error);
+        return false;
+    }
+    view_->setHomeCamera(doc_.scene().camera);
+    addRecentFile(path);
+    rememberDirectory(path);
+    return true;
+}
+
+void MainWindow::exportDialog() {
+    const QString base =
+        doc_.filePath().isEmpty() ? tr("untitled") : QFileInfo(doc_.filePath()).completeBaseName();
+    ExportDialog dialog(doc_.scene(), lastDirectory(), base, this);
+    if (dialog.exec() != QDialog::Accepted) return;
+    startExport(dialog.settings());
+}
+
+void MainWindow::startExport(const ExportSettings& settings) {
+    if (export_) return;  // one at a time
+    rememberDirectory(settings.path);
+    export_ = std::make_unique<ExportJob>(doc_.scene(), settings);
+    exportProgress_ = new QProgressDialog(
+        tr("Rendering %1…").arg(QFileInfo(settings.path).fileName()), tr("Cancel"), 0, 100, this);
+    exportProgress_->setWindowModality(Qt::WindowModal);
+    exportProgress_->setMinimumDuration(300);
+    exportProgress_->setAutoClose(false);
+    exportProgress_->setAutoReset(false);
+    connect(exportProgress_, &QProgressDialog::canceled, export_.get(), &ExportJob::cancel);
+    connect(export_.get(), &ExportJob::progress, exportProgress_, &QProgressDialog::setValue);
+    connect(
+        export_.get(), &ExportJob::finished, this,
+        [this](bool ok, const QString& message) {
+            if (exportProgress_) exportProgress_->deleteLater();
+            export_.reset();
+            if (ok)
+                statusBar()->showMessage(message, 5000);
+            else
+                showError(tr("Export failed"), message);
+            emit exportFinished(ok, message);
+        },
+        Qt::QueuedConnection);
+    export_->start();
+}
+
+bool MainWindow::maybeSave() {
+    if (!doc_.isModified()) return true;
+    const auto answer = QMessageBox::warning(
+        this, tr("Unsaved changes"), tr("The scene has unsaved changes. Save them first?"),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Save) return save();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::showError(const QString& title, const QString& message) {
+    lastError_ = message;
+    // Window-modal but not blocking: the editor (and a test driving it) carries on.
+    auto* box = new QMessageBox(QMessageBox::Warning, title, message, QMessageBox::Ok, this);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+}
+
+void MainWindow::updateTitle() {
+    const QString name =
+        doc_.filePath().isEmpty() ? tr("Untitled") : QFileInfo(doc_.filePath()).fileName();
+    setWindowTitle(tr("%1[*] — Whitted").arg(name));
+    setWindowModified(doc_.isModified());
+}
+
+void MainWindow::addRecentFile(const QString& path) {
+    QSettings settings;
+    QStringList files = settings.value("recentFiles").toStringList();
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    files.removeAll(absolute);
+    files.prepend(absolute);
+    while (files.size() > kMaxRecentFiles) files.removeLast();
+    settings.setValue("recentFiles", files);
+    rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+    recentMenu_->clear();
+    const QStringList files = QSettings().value("recentFiles").toStringList();
+    for (const QString& f : files)
+        recentMenu_
+            ->addAction(QFileInfo(f).fileName(), this,
+                        [this, f] {
+                            if (maybeSave()) openFile(f);
+                        })
+            ->setToolTip(f);
+    recentMenu_->setEnabled(!files.isEmpty());
+}
+
+QString MainWindow::lastDirectory() const {
+    return QSettings().value("lastDirectory", QDir::currentPath()).toString();
+}
+
+void MainWindow::rememberDirectory(const QString& path) {
+    QSettings().setValue("lastDirectory", QFileInfo(path).absolutePath());
+}
+
+void MainWindow::closeEvent(QCloseEvent* e) {
+    if (!maybeSave()) {
+        e->ignore();
+        return;
+    }
+    QSettings settings;
+    settings.setValue("window/geometry", saveGeometry());
+    settings.setValue("window/state", saveState());
+    e->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* e) {
+    if (e->mimeData()->hasUrls() && e->mimeData()->urls().value(0).isLocalFile())
+        e->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* e) {
+    const QString path = e->mimeData()->urls().value(0).toLocalFile();
+    if (path.isEmpty() || !maybeSave()) return;
+    openFile(path);
+    e->acceptProposedAction();
+}
+
+}  // namespace whitted::ui

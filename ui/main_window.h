@@ -1,0 +1,91 @@
+// The editor's main window: the render view in the middle, the scene lists on
+// the left, properties, camera and render settings on the right, and the File,
+// Edit and View menus. It owns the document and the render worker and wires
+// them together: every scene change restarts the render, every frame that is
+// not stale reaches the view and the status bar.
+#pragma once
+
+#include <QLabel>
+#include <QMainWindow>
+#include <QPointer>
+
+#include <memory>
+
+#include "render_worker.h"
+#include "scene_document.h"
+
+class QMenu;
+class QProgressDialog;
+
+namespace whitted::ui {
+
+class RenderView;
+class ScenePanel;
+class PropertyPanel;
+class ExportJob;
+struct ExportSettings;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+  public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    // Opens a scene file without asking about unsaved changes; on failure shows
+    // core's message and keeps the current scene. Returns whether it opened.
+    bool openFile(const QString& path);
+    // Starts exporting with these settings (what the Export dialog does after OK).
+    void startExport(const ExportSettings& settings);
+
+    SceneDocument* document() { return &doc_; }
+    RenderView* renderView() { return view_; }
+    ScenePanel* scenePanel() { return scenePanel_; }
+    PropertyPanel* propertyPanel() { return propertyPanel_; }
+    QString lastError() const { return lastError_; }  // the last message shown to the user
+
+    // A scene to start from for File > New: a ball on a checker floor, one light.
+    static Scene newSceneTemplate();
+
+  signals:
+    // A frame reached the view (stale frames never do).
+    void frameShown(const whitted::ui::RenderFrame& frame);
+    void exportFinished(bool ok, const QString& message);
+
+  protected:
+    void closeEvent(QCloseEvent* e) override;
+    void dragEnterEvent(QDragEnterEvent* e) override;
+    void dropEvent(QDropEvent* e) override;
+
+  private:
+    void buildMenus();
+    void buildDocks();
+    void newScene();
+    void openDialog();
+    bool save();
+    bool saveAs();
+    void exportDialog();
+    bool maybeSave();  // false: the user cancelled
+    void showError(const QString& title, const QString& message);
+    void updateTitle();
+    void addRecentFile(const QString& path);
+    void rebuildRecentMenu();
+    QString lastDirectory() const;
+    void rememberDirectory(const QString& path);
+    void onFrame(const RenderFrame& frame);
+
+    SceneDocument doc_;
+    RenderWorker worker_;
+    RenderView* view_ = nullptr;
+    ScenePanel* scenePanel_ = nullptr;
+    PropertyPanel* propertyPanel_ = nullptr;
+    QMenu* recentMenu_ = nullptr;
+    QLabel* passLabel_ = nullptr;
+    QLabel* samplesLabel_ = nullptr;
+    QLabel* timeLabel_ = nullptr;
+    QLabel* speedLabel_ = nullptr;
+    QString lastError_;
+    std::unique_ptr<ExportJob> export_;
+    QPointer<QProgressDialog> exportProgress_;
+};
+
+}  // namespace whitted::ui

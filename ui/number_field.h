@@ -1,0 +1,154 @@
+// Number editors bound to one value of the scene: spin boxes (with an optional
+// slider) that turn user changes into SceneDocument edits, a slider drag being a
+// single undo step, and the shared way of telling the user an edit was refused.
+#pragma once
+
+#include <functional>
+
+#include <QDoubleSpinBox>
+#include <QPointer>
+#include <QSlider>
+#include <QSpinBox>
+#include <QString>
+#include <QWidget>
+
+#include "scene.h"
+#include "scene_document.h"
+
+namespace whitted::ui {
+
+// Shows a double in its shortest round-trip form ("0.6", "99999.5", "1e-06")
+// rather than with a fixed number of decimals, so values from a file appear as
+// written and very small radii do not show as 0. Accepts exponent notation.
+class NumberSpinBox : public QDoubleSpinBox {
+    Q_OBJECT
+  public:
+    explicit NumberSpinBox(QWidget* parent = nullptr);
+
+    QSize sizeHint() const override;
+    QSize minimumSizeHint() const override;
+
+  protected:
+    QString textFromValue(double value) const override;
+    double valueFromText(const QString& text) const override;
+    QValidator::State validate(QString& text, int& pos) const override;
+    void fixup(QString& text) const override;
+
+  private:
+    bool parse(QString text, double* value) const;
+};
+
+enum class SliderScale { None, Linear, Log };
+
+// Range, step and slider of a DoubleField, built as
+// DoubleFieldSpec::range(0, 1, 0.05).linearSlider(0, 1).
+struct DoubleFieldSpec {
+    double min = 0.0;
+    double max = 1.0;
+    double step = 0.1;
+    bool adaptiveStep = false;  // step by a tenth of the value's order of magnitude
+    SliderScale slider = SliderScale::None;
+    double sliderMin = 0.0;  // the slider's end values; the spin box may go beyond them
+    double sliderMax = 1.0;
+    QString suffix;  // unit, e.g. " °"
+
+    static DoubleFieldSpec range(double min, double max, double step) {
+        DoubleFieldSpec spec;
+        spec.min = min;
+        spec.max = max;
+        spec.step = step;
+        return spec;
+    }
+    DoubleFieldSpec adaptive() const {
+        DoubleFieldSpec spec = *this;
+        spec.adaptiveStep = true;
+        return spec;
+    }
+    DoubleFieldSpec linearSlider(double from, double to) const {
+        return withSlider(SliderScale::Linear, from, to);
+    }
+    DoubleFieldSpec logSlider(double from, double to) const {
+        return withSlider(SliderScale::Log, from, to);
+    }
+    DoubleFieldSpec unit(const QString& text) const {
+        DoubleFieldSpec spec = *this;
+        spec.suffix = text;
+        return spec;
+    }
+
+  private:
+    DoubleFieldSpec withSlider(SliderScale scale, double from, double to) const {
+        DoubleFieldSpec spec = *this;
+        spec.slider = scale;
+        spec.sliderMin = from;
+        spec.sliderMax = to;
+        return spec;
+    }
+};
+
+// A spin box, and a slider when the spec asks for one, editing one double of the
+// scene. `get` is only called by refresh(); `set` must ignore a scene in which
+// its item no longer exists. `undoText` names the step ("Change radius of ball").
+class DoubleField : public QWidget {
+    Q_OBJECT
+  public:
+    using Getter = std::function<double(const Scene&)>;
+    using Setter = std::function<void(Scene&, double)>;
+    using TextFn = std::function<QString()>;
+
+    DoubleField(SceneDocument* doc, const QString& objectName, const DoubleFieldSpec& spec,
+                Getter get, Setter set, TextFn undoText, QWidget* parent = nullptr);
+    ~DoubleField() override;
+
+    // Shows the scene's value; emits nothing.
+    void refresh();
+
+    NumberSpinBox* spinBox() const { return spin_; }
+    QSlider* slider() const { return slider_; }  // nullptr without one
+
+  protected:
+    void hideEvent(QHideEvent* event) override;
+
+  private:
+    static constexpr int kSliderSteps = 1000;
+    double sliderToValue(int position) const;
+    int valueToSlider(double value) const;
+    void commit(double value);
+    void endGestureIfOpen();
+
+    QPointer<SceneDocument> doc_;
+    DoubleFieldSpec spec_;
+    Getter get_;
+    Setter set_;
+    TextFn undoText_;
+    NumberSpinBox* spin_;
+    QSlider* slider_ = nullptr;
+    bool gestureOpen_ = false;
+};
+
+// A spin box editing one int of the scene; same contract as DoubleField.
+class IntField : public QSpinBox {
+    Q_OBJECT
+  public:
+    using Getter = std::function<int(const Scene&)>;
+    using Setter = std::function<void(Scene&, int)>;
+    using TextFn = std::function<QString()>;
+
+    IntField(SceneDocument* doc, const QString& objectName, int min, int max, Getter get,
+             Setter set, TextFn undoText, QWidget* parent = nullptr);
+
+    void refresh();
+
+  private:
+    SceneDocument* doc_;
+    Getter get_;
+    Setter set_;
+    TextFn undoText_;
+};
+
+// Tells the user why an edit was refused. The box is window-modal but opened
+// without a nested event loop, so a refused edit never blocks the caller (or a
+// test); a second refusal while it is open replaces its text.
+void showRefusal(QWidget* parent, const QString& reason);
+
+}  // namespace whitted::ui

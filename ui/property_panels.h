@@ -1,0 +1,94 @@
+// Property editors: the selected sphere, light or material, the camera, and the
+// render settings. Each re-reads the scene on every change (undo and redo
+// included) and turns user input into one SceneDocument edit.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include <QWidget>
+
+#include "scene_document.h"
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QStackedWidget;
+
+namespace whitted::ui {
+
+class ColorButton;
+class DoubleField;
+class IntField;
+
+class PropertyPanel : public QWidget {
+    Q_OBJECT
+  public:
+    explicit PropertyPanel(SceneDocument* doc, QWidget* parent = nullptr);
+
+    // Shows item `index` of `kind`; -1, or an index that stops existing, shows the
+    // empty page.
+    void showItem(ItemKind kind, int index);
+
+  private:
+    QWidget* buildSpherePage();
+    QWidget* buildLightPage();
+    QWidget* buildMaterialPage();
+    void refresh();
+    bool valid() const;
+    QString itemLabel() const;  // the shown item's name, for undo texts
+    // An undo text "<verb> <what> of <item>"; the item name is read when the edit happens.
+    std::function<QString()> changeText(const QString& what) const;
+    void editItem(const QString& what, const std::function<void(Scene&)>& change);
+
+    SceneDocument* doc_;
+    ItemKind kind_ = ItemKind::Sphere;
+    int index_ = -1;
+    QStackedWidget* pages_;
+    QWidget* emptyPage_;
+    QWidget* spherePage_;
+    QWidget* lightPage_;
+    QWidget* materialPage_;
+    QLabel* sphereName_;
+    QLabel* lightName_;
+    QLabel* materialName_;
+    QComboBox* sphereMaterial_;
+    ColorButton* lightColor_;
+    ColorButton* materialDiffuse_;
+    QCheckBox* materialChecker_;
+    ColorButton* checkerColor_;
+    DoubleField* checkerSize_;
+    std::vector<DoubleField*> sphereFields_, lightFields_, materialFields_;
+};
+
+// The camera: position, look-at point, up vector and vertical field of view.
+class CameraPanel : public QWidget {
+    Q_OBJECT
+  public:
+    explicit CameraPanel(SceneDocument* doc, QWidget* parent = nullptr);
+
+  private:
+    void refresh();
+
+    SceneDocument* doc_;
+    std::vector<DoubleField*> fields_;
+};
+
+// Render settings (image size, depth, samples, precision) and the scene's
+// background and ambient colours.
+class RenderSettingsPanel : public QWidget {
+    Q_OBJECT
+  public:
+    explicit RenderSettingsPanel(SceneDocument* doc, QWidget* parent = nullptr);
+
+  private:
+    void refresh();
+
+    SceneDocument* doc_;
+    std::vector<IntField*> fields_;
+    QComboBox* precision_;
+    ColorButton* background_;
+    ColorButton* ambient_;
+};
+
+}  // namespace whitted::ui

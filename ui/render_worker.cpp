@@ -1,0 +1,126 @@
+#include "render_worker.h"
+
+#include <chrono>
+#include <shared_mutex>
+
+#include "image_convert.h"
+
+namespace whitted::ui {
+
+RenderWorker::RenderWorker(QObject* parent) : QObject(parent) {
+    qRegisterMetaType<whitted::ui::RenderFrame>();
+    thread_ = std::thread([this] { run(); });
+}
+
+RenderWorker::~RenderWorker() {
+    {
+        std::lock_guard lock(mutex_);
+        quit_ = true;
+    }
+    quitting_ = true;
+    wake_.notify_one();
+    thread_.join();
+}
+
+quint64 RenderWorker::request(const Scene& scene) {
+    quint64 generation;
+    {
+        // Only the copy of the scene happens under the lock.
+        std::lock_guard lock(mutex_);
+        pending_ = scene;
+        generation = ++generation_;
+    }
+    wake_.notify_one();
+    return generation;
+}
+
+void RenderWorker::run() {
+    for (;;) {
+        Scene scene;
+        quint64 generation;
+        {
+            std::unique_lock lock(mutex_);
+            wake_.wait(lock, [this] { return quit_ || pending_.has_value(); });
+            if (quit_) return;
+            scene = std::move(*pending_);
+            pending_.reset();
+            generation = generation_.load();
+        }
+        renderOne(scene, generation);
+    }
+}
+
+void RenderWorker::renderOne(const Scene& scene, quint64 generation) {
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    const int width = scene.render.width, height = scene.render.height;
+    QImage display(width, height, QImage::Format_RGB32);
+    display.fill(Qt::black);
+
+    // Tile callbacks arrive from several pool threads at once. Tiles are disjoint,
+    // so they convert in parallel under a shared lock; copying a frame out takes
+    // it exclusively (about a millisecond every kFrameIntervalMs), so no frame
+    // holds half a tile. The bookkeeping has a mutex of its own.
+    std::shared_mutex imageLock;
+    std::mutex frameMutex;
+    int currentPass = -1, tilesInPass = 0;
+    int samplesDone = 0;  // samples in every pixel: those of the last complete pass
+    auto lastSent = start;
+    const int tile = RenderOptions{}.tileSize;
+    const int tilesPerPass = ((width + tile - 1) / tile) * ((height + tile - 1) / tile);
+
+    auto makeFrame = [&](const RenderProgress& p, bool passComplete) {
+        RenderFrame frame;
+        frame.generation = generation;
+        frame.pass = p.pass;
+        frame.passCount = p.passCount;
+        frame.preview = p.kind == PassKind::Preview;
+        frame.passComplete = passComplete;
+        frame.samples = samplesDone;
+        frame.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        return frame;
+    };
+
+    const auto shouldStop = [&] {
+        return quitting_.load(std::memory_order_relaxed) ||
+               generation_.load(std::memory_order_relaxed) != generation;
+    };
+    RenderProgress lastProgress;
+    const auto onTile = [&](const TileUpdate& t) {
+        {
+            std::shared_lock shared(imageLock);
+            convertRegion(t.image, display, t.x, t.y, t.width, t.height);
+        }
+        std::lock_guard lock(frameMutex);
+        lastProgress = t.progress;
+        if (t.progress.pass != currentPass) {
+            currentPass = t.progress.pass;
+            tilesInPass = 0;
+        }
+        const bool passComplete = ++tilesInPass == tilesPerPass;
+        if (passComplete && t.progress.kind == PassKind::Samples) samplesDone = t.progress.samples;
+        const bool lastPass = t.progress.pass + 1 == t.progress.passCount;
+        if ((passComplete && lastPass) || shouldStop()) return;  // the final frame follows below
+        if (passComplete || Clock::now() - lastSent > std::chrono::milliseconds(kFrameIntervalMs)) {
+            RenderFrame frame = makeFrame(t.progress, passComplete);
+            {
+                std::unique_lock exclusive(imageLock);
+                frame.image = display.copy();
+            }
+            emit frameReady(frame);
+            lastSent = Clock::now();
+        }
+    };
+    const RenderResult result = render(scene, RenderOptions{}, onTile, shouldStop);
+    if (!result.completed) return;  // superseded: a newer request is waiting
+
+    RenderFrame frame = makeFrame(lastProgress, true);
+    frame.image = display;  // no tile writes it any more
+    frame.renderComplete = true;
+    frame.samples = result.samples;
+    frame.seconds = result.seconds;
+    frame.mraysPerSecond = result.seconds > 0 ? result.rays.total() / result.seconds / 1e6 : 0.0;
+    emit frameReady(frame);
+}
+
+}  // namespace whitted::ui

@@ -11,7 +11,7 @@ packages=(
   libopenimageio-dev libglm-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   # the Qt6 editor, and running it headless in tests
-  qt6-base-dev xvfb xauth imagemagick
+  qt6-base-dev xvfb xauth x11-utils imagemagick
 )
 
 missing=()

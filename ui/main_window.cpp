@@ -178,6 +178,8 @@ bool MainWindow::openFile(const QString& path) {
     view_->setHomeCamera(doc_.scene().camera);
     addRecentFile(path);
     rememberDirectory(path);
+    // Something to edit straight away: the first sphere's properties.
+    if (!doc_.scene().spheres.empty()) scenePanel_->select(ItemKind::Sphere, 0);
     return true;
 }
 

@@ -192,13 +192,7 @@ void MainWindow::openDialog() {
 
 bool MainWindow::save() {
     if (doc_.filePath().isEmpty()) return saveAs();
-    QString error;
-    if (!doc_.save(doc_.filePath(), &error)) {
-        showError(tr("Cannot save scene"), error);
-        return false;
-    }
-    view_->setHomeCamera(doc_.scene().camera);
-    return true;
+    return saveTo(doc_.filePath());
 }
 
 bool MainWindow::saveAs() {
@@ -206,13 +200,16 @@ bool MainWindow::saveAs() {
     if (start.isEmpty()) start = QDir(lastDirectory()).filePath(tr("untitled.json"));
     const QString path =
         QFileDialog::getSaveFileName(this, tr("Save Scene As"), start, tr(kSceneFilter));
-    if (path.isEmpty()) return false;
+    return !path.isEmpty() && saveTo(path);
+}
+
+bool MainWindow::saveTo(const QString& path) {
     QString error;
     if (!doc_.save(path, &error)) {
         showError(tr("Cannot save scene"), error);
         return false;
     }
-    view_->setHomeCamera(doc_.scene().camera);
+    view_->setHomeCamera(doc_.scene().camera);  // Home now returns to the saved camera
     addRecentFile(path);
     rememberDirectory(path);
     return true;

@@ -63,6 +63,7 @@ class MainWindow : public QMainWindow {
     void openDialog();
     bool save();
     bool saveAs();
+    bool saveTo(const QString& path);
     void exportDialog();
     bool maybeSave();  // false: the user cancelled
     void showError(const QString& title, const QString& message);

@@ -65,11 +65,11 @@ class TileRenderer {
           options_(options),
           onTile_(onTile),
           shouldStop_(shouldStop),
+          settings_(scene.render),
           image_(scene.render.width, scene.render.height) {}
 
     RenderResult run() {
-        const std::vector<Pass> passes = planPasses(
-            RenderSettings{s_.width, s_.height, s_.maxDepth, s_.samplesPerPixel}, options_);
+        const std::vector<Pass> passes = planPasses(settings_, options_);
         // Sums survive between passes only when a pixel gets its samples in several passes.
         if (passes.back().firstSample > 0) sums_.assign(size_t(s_.width) * s_.height, {});
         for (const Pass& p : passes) totalWork_ += p.work;
@@ -112,9 +112,12 @@ class TileRenderer {
                 const double done = workDone_.fetch_add(workPerPixel * tile.w * tile.h) +
                                     workPerPixel * tile.w * tile.h;
                 if (onTile_) {
-                    RenderProgress progress{index, count, pass.kind,
+                    RenderProgress progress{index,
+                                            count,
+                                            pass.kind,
                                             pass.kind == PassKind::Preview ? 0 : pass.lastSample,
-                                            std::min(1.0, done / totalWork_)};
+                                            std::min(1.0, done / totalWork_),
+                                            int(tiles.size())};
                     onTile_(TileUpdate{image_, tile.x, tile.y, tile.w, tile.h, progress});
                 }
             }
@@ -182,6 +185,7 @@ class TileRenderer {
     const RenderOptions& options_;
     const TileCallback& onTile_;
     const StopPredicate& shouldStop_;
+    const RenderSettings settings_;
     Image image_;
     std::vector<glm::dvec3> sums_;
     std::atomic<bool> stopped_{false};

@@ -35,6 +35,7 @@ struct RenderProgress {
     PassKind kind = PassKind::Samples;
     int samples = 0;        // samples per pixel in the tile once this pass is done (0: preview)
     double fraction = 0.0;  // share of the whole render's work finished, in [0, 1]
+    int tilesInPass = 0;    // tiles the pass reports, each exactly once
 };
 
 // A finished tile. `image` is the whole image being refined; only the tile's

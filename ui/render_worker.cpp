@@ -63,11 +63,9 @@ void RenderWorker::renderOne(const Scene& scene, quint64 generation) {
     // holds half a tile. The bookkeeping has a mutex of its own.
     std::shared_mutex imageLock;
     std::mutex frameMutex;
-    int currentPass = -1, tilesInPass = 0;
-    int samplesDone = 0;  // samples in every pixel: those of the last complete pass
+    int currentPass = -1, tilesDone = 0;  // tiles of currentPass converted so far
+    int samplesDone = 0;                  // samples in every pixel: those of the last complete pass
     auto lastSent = start;
-    const int tile = RenderOptions{}.tileSize;
-    const int tilesPerPass = ((width + tile - 1) / tile) * ((height + tile - 1) / tile);
 
     auto makeFrame = [&](const RenderProgress& p, bool passComplete) {
         RenderFrame frame;
@@ -93,11 +91,12 @@ void RenderWorker::renderOne(const Scene& scene, quint64 generation) {
         }
         std::lock_guard lock(frameMutex);
         lastProgress = t.progress;
+        // Counted after the conversion, so a complete pass is complete in `display`.
         if (t.progress.pass != currentPass) {
             currentPass = t.progress.pass;
-            tilesInPass = 0;
+            tilesDone = 0;
         }
-        const bool passComplete = ++tilesInPass == tilesPerPass;
+        const bool passComplete = ++tilesDone == t.progress.tilesInPass;
         if (passComplete && t.progress.kind == PassKind::Samples) samplesDone = t.progress.samples;
         const bool lastPass = t.progress.pass + 1 == t.progress.passCount;
         if ((passComplete && lastPass) || shouldStop()) return;  // the final frame follows below

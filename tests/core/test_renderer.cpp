@@ -231,6 +231,24 @@ TEST(Renderer, ProgressWithSeveralThreads_EveryTileOnceAndReachesOne) {
         ASSERT_EQ(covered[p], log.front().passCount) << "pixel " << p % 97 << ", " << p / 97;
 }
 
+// tilesInPass is the number of tiles each pass reports: the editor's worker
+// counts reports against it to know when a pass is complete.
+TEST(Renderer, TilesInPass_IsTheNumberOfReportsOfEachPass) {
+    const Scene scene = smallSeed(5, Precision::Float);  // passes: preview, 1, 2, 4, 5
+    std::vector<int> reports(5, 0), announced(5, -1);
+    std::mutex mutex;
+    const RenderResult r = render(scene, options(3, 16, true), [&](const TileUpdate& t) {
+        std::lock_guard lock(mutex);
+        ++reports[t.progress.pass];
+        announced[t.progress.pass] = t.progress.tilesInPass;
+    });
+    ASSERT_TRUE(r.completed);
+    for (int p = 0; p < 5; ++p) {
+        EXPECT_EQ(reports[p], 7 * 4) << "pass " << p;  // 97x61 in tiles of 16
+        EXPECT_EQ(announced[p], reports[p]) << "pass " << p;
+    }
+}
+
 TEST(Renderer, OneShotRender_HasNoPreviewAndOnePass) {
     const Scene scene = smallSeed(5, Precision::Float);
     std::vector<Recorded> log;

@@ -62,8 +62,11 @@ struct PreparedLight {
     Vec<T> color;  // colour * intensity
 };
 
+// Positions in a prepared scene are relative to frameOrigin (world = frameOrigin +
+// prepared), so that T never has to hold a large coordinate the picture does not need.
 template <typename T>
 struct PreparedScene {
+    Vec3 frameOrigin{0.0};  // in scene (world) coordinates, double
     CameraBasis<T> camera;
     SphereSet<T> spheres;         // geometry, in scene order
     std::vector<int> material;    // per sphere: index into materials

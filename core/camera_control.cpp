@@ -91,8 +91,8 @@ Camera frameSphere(const Camera& c, const Vec3& centre, double radius) {
 std::optional<int> pickSphere(const Scene& scene, double x, double y) {
     const PreparedScene<double> s = prepareScene<double>(scene);
     const int i = static_cast<int>(std::floor(x)), j = static_cast<int>(std::floor(y));
-    const Ray<double> ray{s.camera.origin, cameraDirection(s.camera, i, j, x - i, y - j), -1,
-                          false, true};
+    const Ray<double> ray{s.camera.origin, cameraDirection(s.camera, i, j, x - i, y - j), -1, false,
+                          true};
     const auto hit = closestHit(s, ray);
     if (!hit) return std::nullopt;
     return hit->sphere;

@@ -61,12 +61,16 @@ inline void twoSquare(T a, T& p, T& e) {
 
 }  // namespace exact
 
-// |o - centre|^2 - r^2 to nearly full precision of T, given r^2 as rrHi + rrLo.
+// |o - centre|^2 - r^2 to nearly full precision of T, given the centre as
+// centre + centreLo and r^2 as rrHi + rrLo (two-term values: what T drops of a
+// double scene, see SphereSet::add).
 template <typename T>
-T accurateOffsetSquared(const Vec<T>& o, const Vec<T>& centre, T rrHi, T rrLo) {
+T accurateOffsetSquared(const Vec<T>& o, const Vec<T>& centre, const Vec<T>& centreLo, T rrHi,
+                        T rrLo) {
     T fh[3], fl[3], p[3], pe[3];
     for (int i = 0; i < 3; ++i) {
         exact::twoSum(o[i], -centre[i], fh[i], fl[i]);
+        fl[i] -= centreLo[i];
         exact::twoSquare(fh[i], p[i], pe[i]);
     }
     // Sum p0 + p1 + p2 - rrHi with every rounding error carried along (Sum2).
@@ -83,13 +87,13 @@ T accurateOffsetSquared(const Vec<T>& o, const Vec<T>& centre, T rrHi, T rrLo) {
 }
 
 // Roots of the ray o + t d (d unit length) against the sphere, or nothing on a miss.
-// rrHi + rrLo must equal radius^2 exactly (see splitRadiusSquared). `knownC`, if
-// given, is accurateOffsetSquared() for this origin, cached by the caller for
-// rays sharing an origin (camera rays).
+// The sphere's centre is centre + centreLo and its squared radius rrHi + rrLo
+// (see splitRadiusSquared). `knownC`, if given, is accurateOffsetSquared() for
+// this origin, cached by the caller for rays sharing an origin (camera rays).
 template <typename T>
 inline std::optional<SphereRoots<T>> intersectSphere(const Vec<T>& o, const Vec<T>& d,
-                                                     const Vec<T>& centre, T rrHi, T rrLo,
-                                                     const T* knownC = nullptr) {
+                                                     const Vec<T>& centre, const Vec<T>& centreLo,
+                                                     T rrHi, T rrLo, const T* knownC = nullptr) {
     const Vec<T> f = o - centre;
     const T b = f.x * d.x + f.y * d.y + f.z * d.z;
     const T ff = f.x * f.x + f.y * f.y + f.z * f.z;
@@ -101,7 +105,7 @@ inline std::optional<SphereRoots<T>> intersectSphere(const Vec<T>& o, const Vec<
     // relative to its size, so c must be exact enough, and b^2 - c then has no
     // cancellation of its own.
     if (std::fabs(c) < ff * T(0.0625)) {
-        if (!knownC) c = accurateOffsetSquared(o, centre, rrHi, rrLo);
+        if (!knownC) c = accurateOffsetSquared(o, centre, centreLo, rrHi, rrLo);
         disc = b * b - c;
     } else {
         const Vec<T> perp = f - b * d;
@@ -114,6 +118,14 @@ inline std::optional<SphereRoots<T>> intersectSphere(const Vec<T>& o, const Vec<
     const T t0 = c / q;
     const T t1 = q;
     return t0 < t1 ? SphereRoots<T>{t0, t1} : SphereRoots<T>{t1, t0};
+}
+
+// A sphere whose centre T holds exactly.
+template <typename T>
+inline std::optional<SphereRoots<T>> intersectSphere(const Vec<T>& o, const Vec<T>& d,
+                                                     const Vec<T>& centre, T rrHi, T rrLo,
+                                                     const T* knownC = nullptr) {
+    return intersectSphere(o, d, centre, Vec<T>(T(0)), rrHi, rrLo, knownC);
 }
 
 // rrHi + rrLo == r*r exactly.

@@ -13,7 +13,12 @@ template <typename T>
 PreparedScene<T> prepareScene(const Scene& scene) {
     PreparedScene<T> s;
     const RenderSettings& r = scene.render;
+    // The frame is centred on the camera: what the picture needs is where things
+    // are relative to the eye, which T then holds to its full precision however
+    // far the scene lies from the world origin.
+    s.frameOrigin = scene.camera.position;
     s.camera = makeCameraBasis<T>(scene.camera, r.width, r.height);
+    s.camera.origin = Vec<T>(T(0));
     s.width = r.width;
     s.height = r.height;
     s.maxDepth = r.maxDepth;
@@ -26,6 +31,21 @@ PreparedScene<T> prepareScene(const Scene& scene) {
         if (m.checker) {
             pm.checkerColor = Vec<T>(m.checker->color);
             pm.checkerInvSize = T(1.0 / m.checker->size);
+            const volatile T size = T(m.checker->size);  // volatile: see SphereSet::split
+            pm.checkerSize = size;
+            pm.checkerSizeLo = T(m.checker->size - double(pm.checkerSize));
+            // floor(world / size) == floor(frameOrigin / size + prepared / size):
+            // the frame origin's whole cells are kept apart, as a parity, so that
+            // T adds only a fraction in [0, 1) to the cell coordinate.
+            for (int i = 0; i < 3; ++i) {
+                const double q = s.frameOrigin[i] / m.checker->size;
+                const double whole = std::floor(q);
+                const double fraction = q - whole;
+                const volatile T hi = T(fraction);  // volatile: see SphereSet::split
+                pm.checkerFrameFraction[i] = hi;
+                pm.checkerFrameFractionLo[i] = T(fraction - double(hi));
+                pm.checkerFrameParity[i] = T(whole - 2.0 * std::floor(whole * 0.5));
+            }
         }
         pm.specular = T(m.specular);
         pm.shininess = T(m.shininess);
@@ -42,10 +62,12 @@ PreparedScene<T> prepareScene(const Scene& scene) {
     for (const Light& l : scene.lights) {
         const Vec3 c = l.color * l.intensity;
         if (c == Vec3(0.0)) continue;  // a dark light adds nothing: no shadow rays for it
-        s.lights.push_back({Vec<T>(l.position), Vec<T>(c)});
+        s.lights.push_back({Vec<T>(l.position - s.frameOrigin), Vec<T>(c)});
     }
     for (const Sphere& sp : scene.spheres) {
-        s.spheres.add(Vec<T>(sp.center), T(sp.radius), s.camera.origin);
+        Vec3 c, cLo;  // the centre in the frame, exactly: c + cLo
+        for (int i = 0; i < 3; ++i) exact::twoSum(sp.center[i], -s.frameOrigin[i], c[i], cLo[i]);
+        s.spheres.add(c, cLo, sp.radius, s.camera.origin);
         s.material.push_back(findMaterial(scene, sp.material));
         s.transparency.push_back(s.materials[s.material.back()].transparency);
     }
@@ -84,13 +106,13 @@ template <typename T>
 struct LaneMaterials {
     using V = typename Simd<T>::type;
     using Mask = typename RayPacket<T>::Mask;
-    Vec3x<T> centre, diffuse;
+    Vec3x<T> centre, centreLo, diffuse;
     V specular{}, reflectivity{}, transparency{}, ior{};
     Mask lit{}, checker{};
     Mask shininessInt{};  // the whole shininess, or -1 for lanes that need std::pow
     V shininess{};
-    Vec3x<T> checkerColor;
-    V checkerInvSize{}, radius{}, rrHi{}, rrLo{};
+    Vec3x<T> checkerColor, checkerFrameFraction, checkerFrameFractionLo, checkerFrameParity;
+    V checkerInvSize{}, checkerSize{}, checkerSizeLo{}, radius{}, radiusLo{}, rrHi{}, rrLo{};
 };
 
 template <typename T>
@@ -103,6 +125,7 @@ LaneMaterials<T> gatherMaterials(const PreparedScene<T>& s, const typename Simd<
         const int k = static_cast<int>(kHit[l]);
         const PreparedMaterial<T>& m = s.materials[s.material[k]];
         g.centre.setLane(l, s.spheres.centre[k]);
+        g.centreLo.setLane(l, s.spheres.centreLo[k]);
         g.diffuse.setLane(l, m.diffuse);
         g.specular[l] = m.specular;
         g.reflectivity[l] = m.reflectivity;
@@ -114,7 +137,13 @@ LaneMaterials<T> gatherMaterials(const PreparedScene<T>& s, const typename Simd<
         g.shininess[l] = m.shininess;
         g.checkerColor.setLane(l, m.checkerColor);
         g.checkerInvSize[l] = m.checkerInvSize;
+        g.checkerSize[l] = m.checkerSize;
+        g.checkerSizeLo[l] = m.checkerSizeLo;
+        g.checkerFrameFraction.setLane(l, m.checkerFrameFraction);
+        g.checkerFrameFractionLo.setLane(l, m.checkerFrameFractionLo);
+        g.checkerFrameParity.setLane(l, m.checkerFrameParity);
         g.radius[l] = s.spheres.radius[k];
+        g.radiusLo[l] = s.spheres.radiusLo[k];
         g.rrHi[l] = s.spheres.rrHi[k];
         g.rrLo[l] = s.spheres.rrLo[k];
     }
@@ -157,29 +186,47 @@ Vec3x<T> checkerLanes(const LaneMaterials<T>& g, const Vec3x<T>& p, const Vec3x<
     const V qa = isX ? p.y : (isY ? p.z : p.x), qb = isX ? p.z : (isY ? p.x : p.y);
     const V ca = isX ? g.centre.y : (isY ? g.centre.z : g.centre.x);
     const V cb = isX ? g.centre.z : (isY ? g.centre.x : g.centre.y);
+    const V caLo = isX ? g.centreLo.y : (isY ? g.centreLo.z : g.centreLo.x);
+    const V cbLo = isX ? g.centreLo.z : (isY ? g.centreLo.x : g.centreLo.y);
     const V cAxis = isX ? g.centre.x : (isY ? g.centre.y : g.centre.z);
+    const V cAxisLo = isX ? g.centreLo.x : (isY ? g.centreLo.y : g.centreLo.z);
     const V oAxis = isX ? outward.x : (isY ? outward.y : outward.z);
-    const V da = qa - ca, db = qb - cb;
+    const V da = (qa - ca) - caLo, db = (qb - cb) - cbLo;
     const V across = da * da + db * db;
     const V rest = (g.rrHi - across) + g.rrLo;
     const V drop = across / (g.radius + (rest > T(0) ? laneSqrt(rest > T(0) ? rest : V{}) : V{}));
     const V sign = oAxis >= T(0) ? V{} + T(1) : V{} - T(1);
+    // The surface along the axis, centre + sign * (r - drop), as the pair hi + lo,
+    // with the centre's and the radius's low terms (a float floor of radius 1e9).
     V hi, lo, hi2, e, ph, pl;
     exact::twoSum<V>(cAxis, sign * g.radius, hi, lo);
+    lo = lo + (cAxisLo + sign * g.radiusLo);
     exact::twoSum<V>(hi, -sign * drop, hi2, e);
     exact::twoSum<V>(hi2, lo + e, hi, lo);
-    twoProductLanes<V, T>(hi, g.checkerInvSize, ph, pl);
-    exact::twoSum<V>(ph, pl + lo * g.checkerInvSize, hi, lo);
+    // In cells, plus the frame origin's fraction of a cell.
+    const Vec3x<T>& fh = g.checkerFrameFraction;
+    const Vec3x<T>& fl = g.checkerFrameFractionLo;
+    const V fAxis = isX ? fh.x : (isY ? fh.y : fh.z);
+    const V fAxisLo = isX ? fl.x : (isY ? fl.y : fl.z);
+    // (hi + lo) / size as q1 + q2, dividing a two-term value by a two-term one.
+    const V q1 = hi / g.checkerSize;
+    twoProductLanes<V, T>(q1, g.checkerSize, ph, pl);
+    const V q2 = ((((hi - ph) - pl) + lo) - q1 * g.checkerSizeLo) / g.checkerSize;
+    exact::twoSum<V>(q1, fAxis, hi2, e);
+    exact::twoSum<V>(hi2, (e + fAxisLo) + q2, hi, lo);
     const V f = laneFloor(hi);
     const V steepCell = (f == hi) & (lo < T(0)) ? f - T(1) : f;  // floorOfPair()
-    const V cx = isX ? steepCell : laneFloor(p.x * g.checkerInvSize);
-    const V cy = isY ? steepCell : laneFloor(p.y * g.checkerInvSize);
-    const V cz = isZ ? steepCell : laneFloor(p.z * g.checkerInvSize);
+    const Vec3x<T>& frac = g.checkerFrameFraction;
+    const V cx = isX ? steepCell : laneFloor(frac.x + p.x * g.checkerInvSize);
+    const V cy = isY ? steepCell : laneFloor(frac.y + p.y * g.checkerInvSize);
+    const V cz = isZ ? steepCell : laneFloor(frac.z + p.z * g.checkerInvSize);
     auto odd = [](const V& cell) {
         const V half = cell * T(0.5);
         return half != laneFloor(half);
     };
-    const auto oddCell = (odd(cx) ^ odd(cy)) ^ odd(cz);
+    const Vec3x<T>& parity = g.checkerFrameParity;  // the frame origin's whole cells
+    const auto oddCell = ((odd(cx) ^ (parity.x != T(0))) ^ (odd(cy) ^ (parity.y != T(0)))) ^
+                         (odd(cz) ^ (parity.z != T(0)));
     return select(oddCell, g.checkerColor, g.diffuse);
 }
 

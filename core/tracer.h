@@ -51,6 +51,14 @@ struct PreparedMaterial {
     Vec<T> diffuse;
     Vec<T> checkerColor;
     T checkerInvSize = 0;  // 1 / checker size; 0 means no checker
+    // The size itself as hi + lo: the steep-axis cell divides by it, since
+    // multiplying by an inexact 1/size (1/50 in a seed scaled by 100) puts the
+    // floor's top, exactly one cell down, on the wrong side of the boundary.
+    T checkerSize = 0, checkerSizeLo = 0;
+    // The frame origin in checker cells is whole + fraction per axis: the
+    // fraction in [0, 1) as a two-term value (the steep-axis cell needs it to
+    // about eps^2), and whether whole is odd (0 or 1).
+    Vec<T> checkerFrameFraction{T(0)}, checkerFrameFractionLo{T(0)}, checkerFrameParity{T(0)};
     T specular = 0, shininess = 0, reflectivity = 0, transparency = 0, ior = 1;
     int integerShininess = -1;  // shininess when it is a small whole number, else -1
     bool lit = false;           // diffuse or specular can be non-zero: shadow rays are useful

@@ -160,5 +160,19 @@ TEST(RayPacket, CameraRowEqualsSampleList) {
     checkRowMatchesList<double>(5);
 }
 
+// The seed floor's centre relative to its camera, -99999.85, is 0.0015625 off
+// in float; the set keeps that as the low term, so the sphere is the double
+// scene's. (GCC 12 once optimised the low term away; see SphereSet::split.)
+TEST(RayPacket, TwoTermCentreKeepsWhatFloatDrops) {
+    SphereSet<float> s;
+    s.add(glm::dvec3(0.0, -99999.85, 1.0), glm::dvec3(0.0, 5.8e-12, 0.0), 99999.0,
+          Vec<float>(0.0f));
+    EXPECT_EQ(s.centre[0].y, -99999.8515625f);
+    EXPECT_NEAR(double(s.centre[0].y) + double(s.centreLo[0].y), -99999.85, 1e-9);
+    EXPECT_EQ(s.centreLo[0].x, 0.0f);
+    // c = |camera - centre|^2 - r^2 = 99999.85^2 - 99999^2 = 170000.0225
+    EXPECT_NEAR(s.cameraC[0], 170000.0225, 0.02);
+}
+
 }  // namespace
 }  // namespace whitted

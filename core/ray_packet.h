@@ -131,10 +131,10 @@ inline typename RayPacket<T>::Mask maskFromBits(unsigned bits) {
 template <typename T>
 struct PacketRoots {
     using V = typename Simd<T>::type;
-    V tNear, tFar;
-    typename RayPacket<T>::Mask self;  // lanes whose ray leaves (into) sphere k
-    typename RayPacket<T>::Mask hit;   // lanes whose line meets sphere k
-    unsigned valid;                    // the same as bits: bit l for lane l
+    V tNear{}, tFar{};
+    typename RayPacket<T>::Mask self{};  // lanes whose ray leaves (into) sphere k
+    typename RayPacket<T>::Mask hit{};   // lanes whose line meets sphere k
+    unsigned valid = 0;                  // the same as bits: bit l for lane l
 };
 
 template <typename T>
@@ -190,10 +190,16 @@ inline void packetClosestHits(const SphereSet<T>& spheres, const RayPacket<T>& r
     kBest = V{} - T(1);
     for (int k = 0; k < spheres.count(); ++k) {
         const PacketRoots<T> roots = intersectPacket(spheres, k, r, r.active);
-        if (!roots.valid) continue;
-        // Going into its own sphere, a ray can only meet the far side.
-        const V t = roots.self ? roots.tFar : (roots.tNear > T(0) ? roots.tNear : roots.tFar);
-        const auto take = roots.hit & (t > T(0)) & (t < tBest);
+        const auto inward = roots.self & r.intoOrigin & maskFromBits<T>(r.active);
+        if (!roots.valid && !laneBits(inward)) continue;
+        // Going into its own sphere, a ray can only meet the far side, and must
+        // meet it: where the origin's rounding error (off the surface by ~eps|p|)
+        // makes a grazing line miss or puts the exit behind it, the ray leaves
+        // where it starts, the smallest t > 0.
+        const auto exits = roots.hit & (roots.tFar > T(0));
+        const V tInward = exits ? roots.tFar : V{} + std::numeric_limits<T>::min();
+        const V t = inward ? tInward : (roots.tNear > T(0) ? roots.tNear : roots.tFar);
+        const auto take = (roots.hit | inward) & (t > T(0)) & (t < tBest);
         tBest = take ? t : tBest;
         kBest = take ? V{} + T(k) : kBest;
     }
@@ -211,11 +217,16 @@ inline typename Simd<T>::type packetTransmittance(const SphereSet<T>& spheres,
     V s = V{} + T(1);
     for (int k = 0; k < spheres.count() && lanes; ++k) {
         const PacketRoots<T> roots = intersectPacket(spheres, k, r, lanes);
-        if (!roots.valid) continue;
-        const auto crosses = roots.self ? roots.tFar < distance
-                                        : ((roots.tNear > T(0)) & (roots.tNear < distance)) |
-                                              ((roots.tFar > T(0)) & (roots.tFar < distance));
-        const auto take = crosses & roots.hit;
+        const auto inward = roots.self & r.intoOrigin & maskFromBits<T>(lanes);
+        if (!roots.valid && !laneBits(inward)) continue;
+        // A ray going into its own sphere crosses it before the light unless the
+        // light is inside; where rounding loses the exit (a grazing ray) the exit
+        // is at the origin, as in packetClosestHits().
+        const auto exits = roots.hit & (roots.tFar > T(0));
+        const auto crossesOwn = exits ? roots.tFar < distance : distance > T(0);
+        const auto crossesOther = ((roots.tNear > T(0)) & (roots.tNear < distance)) |
+                                  ((roots.tFar > T(0)) & (roots.tFar < distance));
+        const auto take = inward ? crossesOwn : crossesOther & roots.hit;
         if (!laneBits(take)) continue;
         s = take ? s * transparency[k] : s;
         lanes &= ~laneBits(s == T(0));  // fully shadowed lanes are done

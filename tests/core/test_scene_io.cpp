@@ -461,9 +461,10 @@ TEST(SceneIo, LoadMissingOrBadFile_ThrowsSceneErrorNamingTheFile) {
 
 // ---- saving --------------------------------------------------------------------
 
+// Recursive, so that scenes/extremes/ and any later subfolder are covered too.
 std::vector<fs::path> repositoryScenes() {
     std::vector<fs::path> files;
-    for (const auto& e : fs::directory_iterator(WHITTED_SCENES_DIR))
+    for (const auto& e : fs::recursive_directory_iterator(WHITTED_SCENES_DIR))
         if (e.path().extension() == ".json") files.push_back(e.path());
     std::sort(files.begin(), files.end());
     return files;

@@ -1,0 +1,190 @@
+// End-to-end tests of the whitted-numerics sweep program on a tiny image and its
+// --quick sweep: exit codes, the report, the CSV and the pictures it links.
+#include <cstdlib>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include <sys/wait.h>
+
+#include <gtest/gtest.h>
+
+#include "test_support.h"
+
+namespace whitted {
+namespace {
+
+namespace fs = std::filesystem;
+using test::TempDir;
+
+const std::string kSeed = std::string(WHITTED_SCENES_DIR) + "/seed.json";
+
+std::string shellQuote(const std::string& s) {
+    std::string out = "'";
+    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+struct ProgramRun {
+    int exitCode = -1;
+    std::string err;
+};
+
+// Runs whitted-numerics; stdout and stderr go to a file beside `dir`, not in it.
+ProgramRun runNumerics(const TempDir& dir, const std::vector<std::string>& args) {
+    const fs::path errFile = dir.path().parent_path() / (dir.path().filename().string() + ".err");
+    std::string cmd = shellQuote(WHITTED_NUMERICS_EXE);
+    for (const auto& a : args) cmd.append(" ").append(shellQuote(a));
+    cmd.append(" >").append(shellQuote(errFile.string())).append(" 2>&1");
+    const int status = std::system(cmd.c_str());
+    ProgramRun r;
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.err = test::readFile(errFile);
+    fs::remove(errFile);
+    return r;
+}
+
+// Fields of one CSV line; a quoted field (the offset "(1e2, 1e2, 1e2)") may hold commas.
+std::vector<std::string> splitCsvLine(const std::string& line) {
+    std::vector<std::string> fields;
+    std::string field;
+    bool quoted = false;
+    for (char c : line) {
+        if (c == '"')
+            quoted = !quoted;
+        else if (c == ',' && !quoted)
+            fields.push_back(std::exchange(field, {}));
+        else
+            field += c;
+    }
+    fields.push_back(field);
+    return fields;
+}
+
+// The lines of the report's point tables that start "| k | transform |", k signed
+// as the report writes it ("+2", "0", "-3").
+std::vector<std::string> tableRows(const std::string& md, int k, const std::string& transform) {
+    std::string start = "| ";
+    start.append(k > 0 ? "+" : "").append(std::to_string(k)).append(" | ").append(transform);
+    start.append(" |");
+    std::vector<std::string> rows;
+    std::istringstream lines(md);
+    for (std::string line; std::getline(lines, line);)
+        if (line.starts_with(start)) rows.push_back(line);
+    return rows;
+}
+
+class QuickSweep : public ::testing::Test {
+  protected:
+    static void SetUpTestSuite() {
+        dir_ = new TempDir;
+        run_ = runNumerics(*dir_, {"--scene", kSeed, "--out-dir", dir_->path().string(), "--width",
+                                   "24", "--height", "18", "--threads", "2", "--quick"});
+    }
+    static void TearDownTestSuite() {
+        delete dir_;
+        dir_ = nullptr;
+    }
+    static TempDir* dir_;
+    static ProgramRun run_;
+};
+TempDir* QuickSweep::dir_ = nullptr;
+ProgramRun QuickSweep::run_;
+
+TEST_F(QuickSweep, ExitsZeroAndWritesReportCsvAndReference) {
+    ASSERT_EQ(run_.exitCode, 0) << run_.err;
+    EXPECT_TRUE(fs::is_regular_file(*dir_ / "numerics.md"));
+    EXPECT_TRUE(fs::is_regular_file(*dir_ / "numerics.csv"));
+    EXPECT_TRUE(fs::is_regular_file(*dir_ / "images/numerics/reference.png"));
+    EXPECT_NE(run_.err.find("numerics.md"), std::string::npos) << run_.err;
+}
+
+TEST_F(QuickSweep, CsvHasOneRowPerQuickPoint_AndPowersOfTwoAreBitIdentical) {
+    ASSERT_EQ(run_.exitCode, 0) << run_.err;
+    std::istringstream csv(test::readFile(*dir_ / "numerics.csv"));
+    std::string line;
+    ASSERT_TRUE(std::getline(csv, line));
+    const std::vector<std::string> header = splitCsvLine(line);
+    ASSERT_GE(header.size(), 15u) << line;
+    EXPECT_EQ(header[0], "sweep");
+    EXPECT_EQ(header[11], "bit_identical");
+    std::map<std::tuple<std::string, std::string, int>, int> seen;
+    while (std::getline(csv, line)) {
+        const std::vector<std::string> f = splitCsvLine(line);
+        ASSERT_EQ(f.size(), header.size()) << line;
+        ++seen[{f[0], f[1], std::stoi(f[2])}];
+        if (f[0] == "scale2")
+            EXPECT_EQ(f[11], "yes") << "2^k must not change the image: " << line;
+        else
+            EXPECT_EQ(f[11], "") << line;
+        EXPECT_EQ(f[14], "") << "refused: " << line;
+    }
+    std::map<std::tuple<std::string, std::string, int>, int> expected;
+    for (const char* p : {"float", "double"}) {
+        for (int k = -2; k <= 2; ++k) expected[{"scale10", p, k}] = 1;
+        for (int k = -3; k <= 3; ++k) expected[{"scale2", p, k}] = 1;
+        for (int k = 0; k <= 2; ++k) expected[{"translate", p, k}] = 1;
+    }
+    EXPECT_EQ(seen, expected);
+}
+
+TEST_F(QuickSweep, ReportHasRangeTableAndEveryPointRow) {
+    ASSERT_EQ(run_.exitCode, 0) << run_.err;
+    const std::string md = test::readFile(*dir_ / "numerics.md");
+    EXPECT_NE(md.find("Generated"), std::string::npos);
+    EXPECT_NE(md.find("--quick"), std::string::npos) << "the header names the command";
+    EXPECT_NE(md.find("## Measured ranges"), std::string::npos);
+    EXPECT_NE(md.find("## Every point"), std::string::npos);
+    // One row per precision for each point; 2^k rows say bit-identical and hold.
+    for (int k = -2; k <= 2; ++k)
+        EXPECT_EQ(tableRows(md, k, "1e" + std::to_string(k)).size(), 2u) << "10^" << k;
+    for (int k = -3; k <= 3; ++k) {
+        const auto rows = tableRows(md, k, "2^" + std::to_string(k));
+        EXPECT_EQ(rows.size(), 2u) << "2^" << k;
+        for (const std::string& row : rows) {
+            EXPECT_NE(row.find("| yes |"), std::string::npos) << row;
+            EXPECT_NE(row.find("| holds |"), std::string::npos) << row;
+        }
+    }
+    for (int k = 0; k <= 2; ++k) {
+        const std::string t = "1e" + std::to_string(k);
+        std::string offset = "(";
+        offset.append(t).append(", ").append(t).append(", ").append(t).append(")");
+        EXPECT_EQ(tableRows(md, k, offset).size(), 2u) << offset;
+    }
+}
+
+TEST_F(QuickSweep, EveryLinkedPictureExists) {
+    ASSERT_EQ(run_.exitCode, 0) << run_.err;
+    const std::string md = test::readFile(*dir_ / "numerics.md");
+    const std::regex link(R"(\]\((images/numerics/[^)]+\.png)\))");
+    int links = 0;
+    for (auto it = std::sregex_iterator(md.begin(), md.end(), link); it != std::sregex_iterator();
+         ++it, ++links)
+        EXPECT_TRUE(fs::is_regular_file(*dir_ / (*it)[1].str())) << (*it)[1].str();
+    EXPECT_GE(links, 1);
+}
+
+TEST(WhittedNumerics, BadFlag_ExitsTwo) {
+    TempDir dir;
+    const ProgramRun r = runNumerics(dir, {"--width", "0", "--out-dir", dir.path().string()});
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("--width"), std::string::npos) << r.err;
+    EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
+}
+
+TEST(WhittedNumerics, MissingScene_ExitsTwo) {
+    TempDir dir;
+    const ProgramRun r = runNumerics(
+        dir, {"--scene", (dir / "none.json").string(), "--out-dir", dir.path().string()});
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("none.json"), std::string::npos) << r.err;
+    EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
+}
+
+}  // namespace
+}  // namespace whitted

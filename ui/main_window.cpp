@@ -116,6 +116,17 @@ void MainWindow::buildDocks() {
     QAction* togglePrecision = precisionDock->toggleViewAction();
     togglePrecision->setObjectName("togglePrecisionView");
     togglePrecision->setShortcut(QKeySequence(tr("Ctrl+Shift+F")));
+    connect(precisionDock, &QDockWidget::visibilityChanged, this,
+            [this, settingsDock, precisionDock](bool visible) {
+                // Shown squeezed under the settings, the heat map would be a thumbnail:
+                // then it takes half of the column.
+                const int column = settingsDock->height() + precisionDock->height();
+                if (!visible || settingsDock->isHidden() || precisionDock->isFloating() ||
+                    precisionDock->height() >= column * 2 / 5)
+                    return;
+                resizeDocks({settingsDock, precisionDock}, {column / 2, column - column / 2},
+                            Qt::Vertical);
+            });
 
     connect(scenePanel_, &ScenePanel::selectionChanged, this,
             [this, tabs](ItemKind kind, int index) {

@@ -162,11 +162,11 @@ void PrecisionView::onResult(const PrecisionResult& result) {
     hit_->setText(pixelsText(c.hitDiffers, c.pixels));
     shadow_->setText(pixelsText(c.shadowDiffers, c.pixels));
     tir_->setText(pixelsText(c.tirDiffers, c.pixels));
-    const Scene& scene = doc_->scene();
-    status_->setText(tr("Float against double at %1 × %2, %n sample(s) per pixel, in %3 s.",
-                        nullptr, scene.render.samplesPerPixel)
+    const int spp = doc_->scene().render.samplesPerPixel;
+    status_->setText(tr("Float against double at %1 × %2, %3 per pixel, in %4 s.")
                          .arg(c.width)
                          .arg(c.height)
+                         .arg(spp == 1 ? tr("1 sample") : tr("%1 samples").arg(spp))
                          .arg(result.seconds, 0, 'f', 2));
     emit comparisonShown(result);
 }

@@ -143,7 +143,7 @@ TEST_F(PrecisionViewTest, EditsWhileShown_DebouncedIntoOneNewComparisonOfTheLast
     // Three edits, each well inside the debounce delay of the one before.
     for (int i = 0; i < 3; ++i) {
         nudgeBall(0.05);
-        QTest::qWait(PrecisionView::kDebounceMs / 5);
+        QTest::qWait(PrecisionView::kDebounceMs / 10);
     }
     EXPECT_EQ(started.count(), 0) << "compared before the edits paused";
     ASSERT_TRUE(shown.wait(kTimeoutMs));

@@ -1,13 +1,26 @@
 #!/usr/bin/env bash
-# Takes the README's screenshot of the editor: starts Xvfb on a free display,
-# opens build/bin/whitted on scenes/seed.json, waits for the render to finish,
-# and writes the whole screen to docs/images/editor.png. Safe to re-run.
-# Needs xvfb, x11-utils (xwininfo) and imagemagick (import). Build first
-# (scripts/setup.sh). Usage: scripts/screenshot.sh [OUT.png]
+# Takes the README's screenshots of the editor: starts Xvfb on a free display,
+# opens build/bin/whitted on a scene (scenes/seed.json unless --scene), waits for
+# the render to finish, and writes the whole screen to docs/images/editor.png or
+# OUT.png. With --precision-view it first opens the Float vs Double dock (its
+# shortcut, Ctrl+Shift+F, sent with xdotool). Safe to re-run.
+# Needs xvfb, x11-utils (xwininfo) and imagemagick (import), and xdotool for
+# --precision-view. Build first (scripts/setup.sh).
+# Usage: scripts/screenshot.sh [--scene SCENE.json] [--precision-view] [OUT.png]
 set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
-out=${1:-docs/images/editor.png}
+out=docs/images/editor.png
+scene=scenes/seed.json
+precision_view=
+while [[ $# -gt 0 ]]; do
+  case $1 in
+    --scene) scene=$2; shift 2 ;;
+    --precision-view) precision_view=1; shift ;;
+    *) out=$1; shift ;;
+  esac
+done
+title=$(basename "$scene")
 size=1600x1000x24
 
 fail() {
@@ -16,8 +29,9 @@ fail() {
 }
 
 [[ -x build/bin/whitted ]] || fail "build/bin/whitted is not built (run scripts/setup.sh)"
-for tool in Xvfb xwininfo import; do
-  command -v "$tool" >/dev/null 2>&1 || fail "$tool not found (apt-get install xvfb x11-utils imagemagick)"
+tools="Xvfb xwininfo import${precision_view:+ xdotool}"
+for tool in $tools; do
+  command -v "$tool" >/dev/null 2>&1 || fail "$tool not found (apt-get install xvfb x11-utils imagemagick xdotool)"
 done
 
 # A display nobody uses: no lock file and no socket.
@@ -57,22 +71,34 @@ DISPLAY=$display xwininfo -root >/dev/null 2>&1 || fail "Xvfb on $display does n
 # A fresh settings directory, so a saved window layout or recent-files list of
 # the user's does not end up in the picture; the window fills the screen.
 DISPLAY=$display XDG_CONFIG_HOME=$home QT_QPA_PLATFORM=xcb \
-  build/bin/whitted scenes/seed.json -geometry 1600x1000+0+0 >"$home/editor.log" 2>&1 &
+  build/bin/whitted "$scene" -geometry 1600x1000+0+0 >"$home/editor.log" 2>&1 &
 editor_pid=$!
 
 # Wait for the main window ("seed.json — Whitted") to be mapped.
+window_shown() {
+  DISPLAY=$display xwininfo -root -tree 2>/dev/null | grep -qF "$title"
+}
 for _ in $(seq 100); do
   kill -0 "$editor_pid" 2>/dev/null || fail "the editor exited: $(cat "$home/editor.log")"
-  if DISPLAY=$display xwininfo -root -tree 2>/dev/null | grep -q 'seed.json.*Whitted'; then
+  if window_shown; then
     break
   fi
   sleep 0.1
 done
-DISPLAY=$display xwininfo -root -tree 2>/dev/null | grep -q 'seed.json.*Whitted' ||
+window_shown ||
   fail "no editor window on $display after 10 s: $(cat "$home/editor.log")"
 
-# The seed scene at 640x480 renders in well under a second; leave time for the
-# last frame and the repaint on a busy machine.
+if [[ -n "$precision_view" ]]; then
+  sleep 1
+  # No window manager runs on Xvfb: give the window the focus directly.
+  id=$(DISPLAY=$display xdotool search --name "$title" | head -n 1)
+  DISPLAY=$display xdotool windowfocus --sync "$id" key --clearmodifiers ctrl+shift+f ||
+    fail "could not send Ctrl+Shift+F to the editor"
+fi
+
+# The example scenes at 640x480 render in well under a second, and compare in
+# float and double at 480x360 in a fraction of one; leave time for the last
+# frame and the repaint on a busy machine.
 sleep 3
 kill -0 "$editor_pid" 2>/dev/null || fail "the editor exited: $(cat "$home/editor.log")"
 

@@ -12,6 +12,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   # the Qt6 editor, and running it headless in tests
   qt6-base-dev xvfb xauth x11-utils imagemagick
+  # scripts/screenshot.sh --precision-view opens the dock with a key press
+  xdotool
 )
 
 missing=()

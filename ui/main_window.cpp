@@ -15,6 +15,8 @@
 #include <QTimer>
 
 #include "export_job.h"
+#include "float_range_warning.h"
+#include "precision_view.h"
 #include "property_panels.h"
 #include "render_view.h"
 #include "scene_panel.h"
@@ -53,6 +55,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     speedLabel_ = new QLabel;
     for (QLabel* l : {passLabel_, samplesLabel_, timeLabel_, speedLabel_})
         statusBar()->addPermanentWidget(l);
+    floatRangeWarning_ = new FloatRangeWarning(&doc_, {}, statusBar());
+    statusBar()->addWidget(floatRangeWarning_);
 
     connect(&doc_, &SceneDocument::sceneChanged, this, [this] { worker_.request(doc_.scene()); });
     connect(&doc_, &SceneDocument::modifiedChanged, this, &MainWindow::updateTitle);
@@ -100,6 +104,29 @@ void MainWindow::buildDocks() {
     settingsDock->setObjectName("settingsDock");
     settingsDock->setWidget(tabs);
     addDockWidget(Qt::RightDockWidgetArea, settingsDock);
+
+    // Hidden until asked for from the View menu: it renders the scene twice more.
+    precisionView_ = new PrecisionView(&doc_);
+    auto* precisionDock = new QDockWidget(tr("Float vs Double"), this);
+    precisionDock->setObjectName("precisionDock");
+    precisionDock->setWidget(precisionView_);
+    addDockWidget(Qt::RightDockWidgetArea, precisionDock);
+    splitDockWidget(settingsDock, precisionDock, Qt::Vertical);
+    precisionDock->hide();
+    QAction* togglePrecision = precisionDock->toggleViewAction();
+    togglePrecision->setObjectName("togglePrecisionView");
+    togglePrecision->setShortcut(QKeySequence(tr("Ctrl+Shift+F")));
+    connect(precisionDock, &QDockWidget::visibilityChanged, this,
+            [this, settingsDock, precisionDock](bool visible) {
+                // Shown squeezed under the settings, the heat map would be a thumbnail:
+                // then it takes half of the column.
+                const int column = settingsDock->height() + precisionDock->height();
+                if (!visible || settingsDock->isHidden() || precisionDock->isFloating() ||
+                    precisionDock->height() >= column * 2 / 5)
+                    return;
+                resizeDocks({settingsDock, precisionDock}, {column / 2, column - column / 2},
+                            Qt::Vertical);
+            });
 
     connect(scenePanel_, &ScenePanel::selectionChanged, this,
             [this, tabs](ItemKind kind, int index) {

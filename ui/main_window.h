@@ -21,6 +21,8 @@ namespace whitted::ui {
 
 class RenderView;
 class ScenePanel;
+class PrecisionView;
+class FloatRangeWarning;
 class PropertyPanel;
 class ExportJob;
 struct ExportSettings;
@@ -41,6 +43,8 @@ class MainWindow : public QMainWindow {
     RenderView* renderView() { return view_; }
     ScenePanel* scenePanel() { return scenePanel_; }
     PropertyPanel* propertyPanel() { return propertyPanel_; }
+    PrecisionView* precisionView() { return precisionView_; }
+    FloatRangeWarning* floatRangeWarning() { return floatRangeWarning_; }
     QString lastError() const { return lastError_; }  // the last message shown to the user
 
     // A scene to start from for File > New: a ball on a checker floor, one light.
@@ -79,6 +83,8 @@ class MainWindow : public QMainWindow {
     RenderView* view_ = nullptr;
     ScenePanel* scenePanel_ = nullptr;
     PropertyPanel* propertyPanel_ = nullptr;
+    PrecisionView* precisionView_ = nullptr;
+    FloatRangeWarning* floatRangeWarning_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QLabel* passLabel_ = nullptr;
     QLabel* samplesLabel_ = nullptr;

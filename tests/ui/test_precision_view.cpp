@@ -1,0 +1,255 @@
+// GUI tests of the float-versus-double dock and the float-range warning: the real
+// MainWindow driven offscreen, as tests/ui/test_main_window.cpp does. What the dock
+// shows is checked against core's comparePrecisions() called directly on the same
+// scene at the same size: the comparison is deterministic, so counts, the largest
+// difference and the heat map's pixels must be equal, not close.
+#include <QAction>
+#include <QApplication>
+#include <QDockWidget>
+#include <QLabel>
+#include <QRegularExpression>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTest>
+#include <QUndoStack>
+
+#include <memory>
+#include <string>
+
+#include "float_range.h"
+#include "float_range_warning.h"
+#include "heat_map_view.h"
+#include "image_convert.h"
+#include "main_window.h"
+#include "precision_compare.h"
+#include "precision_view.h"
+#include "scene_io.h"
+#include "scene_transform.h"
+#include "test_support.h"
+
+namespace whitted::ui {
+namespace {
+
+constexpr int kWidth = 160, kHeight = 120;
+constexpr int kTimeoutMs = 20000;  // a comparison at 160x120 takes milliseconds; CI is shared
+const std::string kSeedScene = WHITTED_SCENES_DIR "/seed.json";
+
+// The pixel count in a label such as "0.016 % (3 px)"; -1 when there is none.
+long long pixelsIn(const QLabel* label) {
+    const auto m = QRegularExpression(QStringLiteral("\\((\\d+) px\\)")).match(label->text());
+    return m.hasMatch() ? m.captured(1).toLongLong() : -1;
+}
+
+// A window on a 160x120 copy of the seed scene, opened from a temporary file.
+class PrecisionViewTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        Scene seed = loadScene(kSeedScene);
+        seed.render.width = kWidth;
+        seed.render.height = kHeight;
+        const QString path = QString::fromStdString((dir / "seed.json").string());
+        saveScene(seed, path.toStdString());
+        window = std::make_unique<MainWindow>();
+        window->resize(1400, 900);
+        window->show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+        ASSERT_TRUE(window->openFile(path)) << window->lastError().toStdString();
+        doc = window->document();
+        view = window->precisionView();
+        dock = window->findChild<QDockWidget*>(QStringLiteral("precisionDock"));
+        toggle = window->findChild<QAction*>(QStringLiteral("togglePrecisionView"));
+        ASSERT_NE(view, nullptr);
+        ASSERT_NE(dock, nullptr);
+        ASSERT_NE(toggle, nullptr);
+    }
+
+    QLabel* label(const char* name) const {
+        auto* l = window->findChild<QLabel*>(QString::fromLatin1(name));
+        EXPECT_NE(l, nullptr) << name;
+        return l;
+    }
+
+    // Shows the dock and waits for its first comparison.
+    ::testing::AssertionResult showDock() {
+        QSignalSpy shown(view, &PrecisionView::comparisonShown);
+        toggle->trigger();
+        if (!dock->isVisible()) return ::testing::AssertionFailure() << "the dock did not show";
+        if (!shown.wait(kTimeoutMs))
+            return ::testing::AssertionFailure() << "no comparison within " << kTimeoutMs << " ms";
+        return ::testing::AssertionSuccess();
+    }
+
+    // The dock's labels and heat map against comparePrecisions() of the document's scene.
+    void expectShowsComparisonOfCurrentScene() {
+        const PrecisionComparison want =
+            comparePrecisions(doc->scene(), kWidth, kHeight);  // the scene is under the cap
+        ASSERT_FALSE(want.stopped);
+        EXPECT_EQ(pixelsIn(label("precisionOver1")), (long long)want.over1);
+        EXPECT_EQ(pixelsIn(label("precisionOver2")), (long long)want.over2);
+        EXPECT_EQ(pixelsIn(label("precisionHit")), (long long)want.hitDiffers);
+        EXPECT_EQ(pixelsIn(label("precisionShadow")), (long long)want.shadowDiffers);
+        EXPECT_EQ(pixelsIn(label("precisionTir")), (long long)want.tirDiffers);
+        EXPECT_EQ(label("precisionLargest")->text(),
+                  QStringLiteral("%1 steps of 1/255").arg(double(want.largest) * 255, 0, 'f', 1));
+        auto* heat = window->findChild<HeatMapView*>(QStringLiteral("precisionHeatMap"));
+        ASSERT_NE(heat, nullptr);
+        EXPECT_TRUE(heat->isVisible());
+        EXPECT_EQ(heat->image(), toQImage(want.heatMap));
+    }
+
+    // Moves the blue ball by dx as one edit.
+    void nudgeBall(double dx) {
+        QString error;
+        ASSERT_TRUE(doc->edit(
+            QStringLiteral("nudge"), [dx](Scene& s) { s.spheres[0].center.x += dx; }, &error))
+            << error.toStdString();
+    }
+
+    test::TempDir dir;
+    std::unique_ptr<MainWindow> window;
+    SceneDocument* doc = nullptr;
+    PrecisionView* view = nullptr;
+    QDockWidget* dock = nullptr;
+    QAction* toggle = nullptr;
+};
+
+TEST_F(PrecisionViewTest, Dock_HiddenByDefault_NoComparisonRuns) {
+    EXPECT_FALSE(dock->isVisible());
+    EXPECT_FALSE(toggle->isChecked());
+    QSignalSpy started(view, &PrecisionView::comparisonStarted);
+    nudgeBall(0.1);
+    QTest::qWait(PrecisionView::kDebounceMs * 2);
+    EXPECT_EQ(started.count(), 0) << "a hidden dock compared";
+}
+
+TEST_F(PrecisionViewTest, Toggled_ShowsHeatMapAndCountsOfComparePrecisions) {
+    ASSERT_TRUE(showDock());
+    EXPECT_TRUE(toggle->isChecked());
+    expectShowsComparisonOfCurrentScene();
+    // The seed in float and double (issue 4): well under 0.1 % of pixels over 2/255.
+    EXPECT_LT(pixelsIn(label("precisionOver2")), kWidth * kHeight / 1000);
+    EXPECT_TRUE(label("precisionOver1")->text().contains(QStringLiteral("%")));
+    EXPECT_TRUE(label("precisionStatus")->text().contains(QStringLiteral("160 × 120")));
+    // Hidden again: the toggle turns it off.
+    toggle->trigger();
+    EXPECT_FALSE(dock->isVisible());
+}
+
+TEST_F(PrecisionViewTest, EditsWhileShown_DebouncedIntoOneNewComparisonOfTheLastScene) {
+    ASSERT_TRUE(showDock());
+    QSignalSpy started(view, &PrecisionView::comparisonStarted);
+    QSignalSpy shown(view, &PrecisionView::comparisonShown);
+    // Three edits, each well inside the debounce delay of the one before.
+    for (int i = 0; i < 3; ++i) {
+        nudgeBall(0.05);
+        QTest::qWait(PrecisionView::kDebounceMs / 10);
+    }
+    EXPECT_EQ(started.count(), 0) << "compared before the edits paused";
+    ASSERT_TRUE(shown.wait(kTimeoutMs));
+    QTest::qWait(PrecisionView::kDebounceMs * 2);  // nothing else follows
+    ASSERT_EQ(started.count(), 1);
+    ASSERT_EQ(shown.count(), 1);
+    EXPECT_EQ(shown.at(0).at(0).value<PrecisionResult>().generation,
+              started.at(0).at(0).value<quint64>());
+    expectShowsComparisonOfCurrentScene();
+}
+
+TEST_F(PrecisionViewTest, Undo_ComparesAgain) {
+    ASSERT_TRUE(showDock());
+    nudgeBall(0.3);
+    QSignalSpy shown(view, &PrecisionView::comparisonShown);
+    ASSERT_TRUE(shown.wait(kTimeoutMs));
+    doc->undoStack()->undo();
+    ASSERT_TRUE(shown.wait(kTimeoutMs));
+    expectShowsComparisonOfCurrentScene();
+}
+
+TEST(PrecisionViewSize, CappedAtTheLongSideKeepingTheAspectRatio) {
+    Scene s;
+    s.render.width = 1920;
+    s.render.height = 1080;
+    EXPECT_EQ(PrecisionView::comparisonSize(s), QSize(480, 270));
+    s.render.width = 600;
+    s.render.height = 1200;
+    EXPECT_EQ(PrecisionView::comparisonSize(s), QSize(240, 480));
+    s.render.width = 320;
+    s.render.height = 240;
+    EXPECT_EQ(PrecisionView::comparisonSize(s), QSize(320, 240));
+}
+
+TEST_F(PrecisionViewTest, FloatRangeWarning_HiddenForTheSeed) {
+    ASSERT_NE(window->floatRangeWarning(), nullptr);
+    EXPECT_FALSE(window->floatRangeWarning()->isVisibleTo(window.get()));
+}
+
+// Needs the real thresholds of core/float_range.cpp (measured by issue 4's sweep):
+// while floatRangeProblem() is a placeholder that finds no problem anywhere, it skips.
+TEST_F(PrecisionViewTest, FloatRangeWarning_SceneScaledBy1e30_ClickSwitchesToDoubleUndoable) {
+    const Scene far = scaledScene(doc->scene(), 1e30);
+    if (!floatRangeProblem(far)) GTEST_SKIP() << "floatRangeProblem() has no thresholds yet";
+    ASSERT_TRUE(doc->edit(QStringLiteral("scale"), [&](Scene& s) { s = far; }));
+    FloatRangeWarning* warning = window->floatRangeWarning();
+    ASSERT_TRUE(warning->isVisibleTo(window.get()));
+    EXPECT_TRUE(
+        warning->text().startsWith(QStringLiteral("Scene lies outside float's measured range: ")));
+    EXPECT_TRUE(warning->text().endsWith(QStringLiteral(". Switch to double")));
+    const int steps = doc->undoStack()->count();
+    QTest::mouseClick(warning, Qt::LeftButton);
+    EXPECT_EQ(doc->scene().render.precision, Precision::Double);
+    EXPECT_EQ(doc->undoStack()->count(), steps + 1);
+    EXPECT_FALSE(warning->isVisibleTo(window.get()));
+    doc->undoStack()->undo();
+    EXPECT_EQ(doc->scene().render.precision, Precision::Float);
+    EXPECT_TRUE(warning->isVisibleTo(window.get()));
+}
+
+// The warning's own logic with a stand-in for the thresholds: it shows core's
+// reason, clicking it is one undoable switch to double, undo brings it back.
+TEST(FloatRangeWarningTest, StandInCheck_ShowsReason_ClickSwitchesToDouble_UndoRestores) {
+    SceneDocument doc;
+    doc.reset(loadScene(kSeedScene), QString());
+    QWidget bar;
+    const FloatRangeCheck tooFar = [](const Scene& s) -> std::optional<std::string> {
+        if (s.spheres.empty() || s.spheres[0].center.z < 100) return std::nullopt;
+        return "a sphere is 1e2 away";
+    };
+    auto* warning = new FloatRangeWarning(&doc, tooFar, &bar);
+    bar.show();
+    EXPECT_FALSE(warning->isVisibleTo(&bar));
+
+    ASSERT_TRUE(doc.edit(QStringLiteral("move"), [](Scene& s) { s.spheres[0].center.z = 100; }));
+    ASSERT_TRUE(warning->isVisibleTo(&bar));
+    EXPECT_EQ(warning->text(), QStringLiteral("Scene lies outside float's measured range: a "
+                                              "sphere is 1e2 away. Switch to double"));
+    QTest::mouseClick(warning, Qt::LeftButton);
+    EXPECT_EQ(doc.scene().render.precision, Precision::Double);
+    EXPECT_EQ(doc.undoStack()->count(), 2);
+    EXPECT_EQ(doc.undoStack()->undoText(), QStringLiteral("Switch to double precision"));
+    EXPECT_FALSE(warning->isVisibleTo(&bar));
+
+    doc.undoStack()->undo();
+    EXPECT_EQ(doc.scene().render.precision, Precision::Float);
+    EXPECT_TRUE(warning->isVisibleTo(&bar));
+    doc.undoStack()->undo();  // the sphere back where it was: inside the range
+    EXPECT_FALSE(warning->isVisibleTo(&bar));
+    // Opening a scene re-evaluates it too.
+    Scene far = doc.scene();
+    far.spheres[0].center.z = 500;
+    doc.reset(far, QString());
+    EXPECT_TRUE(warning->isVisibleTo(&bar));
+}
+
+}  // namespace
+}  // namespace whitted::ui
+
+int main(int argc, char** argv) {
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    QStandardPaths::setTestModeEnabled(true);
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName("WhittedTests");
+    QApplication::setApplicationName("test_precision_view");
+    QSettings().clear();
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}

@@ -15,9 +15,11 @@ namespace whitted::ui {
 
 namespace {
 
-// Enough to show any value a user types; QDoubleSpinBox rounds to these decimals,
-// which also hides float noise such as 0.1 + 0.2 = 0.30000000000000004 when stepping.
-constexpr int kDecimals = 10;
+// QDoubleSpinBox rounds every value to `decimals` places; its largest setting
+// (DBL_MAX_10_EXP + DBL_DIG) rounds nothing a double can hold, so a radius of
+// 5e-21 from a file (the seed scaled to the edge of float's range) stays 5e-21
+// rather than showing, and being saved back, as 0.
+constexpr int kDecimals = 323;
 
 QLocale displayLocale(const QLocale& base) {
     QLocale locale = base;
@@ -52,6 +54,22 @@ NumberSpinBox::NumberSpinBox(QWidget* parent) : QDoubleSpinBox(parent) {
     setDecimals(kDecimals);
     setKeyboardTracking(false);
     setAccelerated(true);
+}
+
+// Stepping adds binary fractions (0.1 + 0.2 is 0.30000000000000004), noise the
+// 323 decimals no longer round away: the stepped value keeps 15 significant
+// digits, all a double holds for sure. The base class steps (adaptive step
+// sizes included) with signals blocked, so the field sees one change.
+void NumberSpinBox::stepBy(int steps) {
+    double stepped;
+    {
+        const QSignalBlocker block(this);
+        const double before = value();
+        QDoubleSpinBox::stepBy(steps);
+        stepped = value();
+        setValue(before);
+    }
+    setValue(QString::number(stepped, 'g', 15).toDouble());
 }
 
 QString NumberSpinBox::textFromValue(double value) const {

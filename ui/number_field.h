@@ -27,6 +27,7 @@ class NumberSpinBox : public QDoubleSpinBox {
 
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
+    void stepBy(int steps) override;
 
   protected:
     QString textFromValue(double value) const override;

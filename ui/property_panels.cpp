@@ -1,6 +1,8 @@
 // The property, camera and render settings panels: forms of bound fields.
 #include "property_panels.h"
 
+#include <limits>
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
@@ -17,11 +19,14 @@ namespace whitted::ui {
 
 namespace {
 
-// Positions and directions: far beyond any sensible scene (the seed's floor
-// centre is -99999.5), so a value from a file is never clamped on display.
-const DoubleFieldSpec kCoordinate = DoubleFieldSpec::range(-1e9, 1e9, 0.1);
+// Positions, directions and lengths: every finite value the file format allows
+// (scenes/extremes/ holds floors of radius 1e9 and balls of radius 5e-5), so a
+// value from a file is never clamped on display or on the next edit.
+constexpr double kLargest = std::numeric_limits<double>::max();
+constexpr double kSmallestLength = std::numeric_limits<double>::denorm_min();
+const DoubleFieldSpec kCoordinate = DoubleFieldSpec::range(-kLargest, kLargest, 0.1);
 const DoubleFieldSpec kLength =
-    DoubleFieldSpec::range(1e-6, 1e9, 0.1).adaptive().logSlider(0.01, 100.0);
+    DoubleFieldSpec::range(kSmallestLength, kLargest, 0.1).adaptive().logSlider(0.01, 100.0);
 const DoubleFieldSpec kUnitInterval = DoubleFieldSpec::range(0.0, 1.0, 0.05).linearSlider(0.0, 1.0);
 
 // Item `i` of a list, const or not like the list, or nullptr when it is gone.
@@ -275,7 +280,7 @@ QWidget* PropertyPanel::buildMaterialPage() {
     // turning it back on restores what the user had.
     checkerSize_ = makeField(
         doc_, QStringLiteral("materialCheckerSize"),
-        DoubleFieldSpec::range(1e-6, 1e9, 0.1).adaptive(),
+        DoubleFieldSpec::range(kSmallestLength, kLargest, 0.1).adaptive(),
         [this, material](auto& s) {
             auto* m = material(s);
             return m && m->checker ? &m->checker->size : nullptr;

@@ -20,6 +20,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <thread>
@@ -31,6 +32,7 @@
 #include "image_convert.h"
 #include "image_io.h"
 #include "main_window.h"
+#include "number_field.h"
 #include "render_view.h"
 #include "renderer.h"
 #include "scene_io.h"
@@ -469,6 +471,50 @@ TEST_F(MainWindowTest, RapidEdits_FinalViewIsTheNewestSceneNotAStaleFrame) {
     ASSERT_GT(log->generations.size(), shownBefore);
     for (size_t i = shownBefore; i < log->generations.size(); ++i)
         EXPECT_EQ(log->generations[i], log->generations.back()) << "frame " << i - shownBefore;
+}
+
+// Every extreme scene shows its numbers exactly as the file has them: a floor
+// centre of -1e9 - 0.5 or a radius of 5e-5 is neither clamped nor rounded, so
+// the next edit cannot write a changed value back.
+TEST_F(MainWindowTest, ExtremeScenes_FieldsShowEveryCentreAndRadiusExactly) {
+    int checked = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(WHITTED_SCENES_DIR "/extremes")) {
+        if (entry.path().extension() != ".json") continue;
+        SCOPED_TRACE(entry.path().filename().string());
+        const Scene scene = loadScene(entry.path());
+        ASSERT_TRUE(window->openFile(QString::fromStdString(entry.path().string())))
+            << window->lastError().toStdString();
+        for (int i = 0; i < int(scene.spheres.size()); ++i) {
+            window->scenePanel()->select(ItemKind::Sphere, i);
+            const Sphere& sp = scene.spheres[i];
+            const char* axes[] = {"sphereCenterX", "sphereCenterY", "sphereCenterZ"};
+            for (int a = 0; a < 3; ++a) {
+                auto* spin = window->findChild<NumberSpinBox*>(axes[a]);
+                ASSERT_NE(spin, nullptr);
+                EXPECT_EQ(spin->value(), sp.center[a]) << sp.name << " " << axes[a];
+            }
+            auto* radius = window->findChild<NumberSpinBox*>("sphereRadius");
+            ASSERT_NE(radius, nullptr);
+            EXPECT_EQ(radius->value(), sp.radius) << sp.name;
+            ++checked;
+        }
+        EXPECT_FALSE(doc->isModified()) << "showing the scene changed it";
+    }
+    EXPECT_GT(checked, 20);
+}
+
+// Stepping does not show binary noise: 0.2 stepped by 0.1 is 0.3, not
+// 0.30000000000000004, and the edit stores 0.3.
+TEST_F(MainWindowTest, RadiusStepUp_FromPointTwo_GivesExactlyPointThree) {
+    ASSERT_TRUE(editAndWait([](Scene& s) { s.spheres[0].radius = 0.2; }));
+    window->scenePanel()->select(ItemKind::Sphere, 0);
+    auto* radius = window->findChild<NumberSpinBox*>("sphereRadius");
+    ASSERT_NE(radius, nullptr);
+    radius->setStepType(QAbstractSpinBox::DefaultStepType);
+    radius->setSingleStep(0.1);
+    radius->stepBy(1);
+    EXPECT_EQ(doc->scene().spheres[0].radius, 0.3);
+    EXPECT_EQ(radius->text(), QStringLiteral("0.3"));
 }
 
 }  // namespace

@@ -68,8 +68,9 @@ inline Vec3 randomUnit(Rng& rng) {
     }
 }
 
-// A unit vector perpendicular to unit n, uniformly around it.
+// A unit vector perpendicular to unit n (finite), uniformly around it.
 inline Vec3 randomPerpendicular(Rng& rng, const Vec3& n) {
+    if (!std::isfinite(glm::dot(n, n))) return Vec3(std::nan(""));
     for (;;) {
         const Vec3 v = randomUnit(rng);
         const Vec3 p = v - glm::dot(v, n) * n;

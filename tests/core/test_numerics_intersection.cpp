@@ -61,6 +61,10 @@ struct Tally {
     long failed = 0, raysAtOrigin = 0, failedAtOrigin = 0;
     test::Worst wrongHitWorst, wrongMissWorst, offSurfaceWorst, farSideWorst, tOffWorst;
     test::Worst dtWellConditioned, dtAll;
+    // For information: the largest ratios over all hits, and over the rays from a
+    // camera at the world origin (those show the intersection alone, without the
+    // rounding of the camera position into a world-centred frame).
+    test::Worst residualAll, residualAtOrigin, dtWellConditionedAtOrigin;
 };
 
 template <typename T>
@@ -157,6 +161,8 @@ void checkCameraRays() {
             const Quad t = hit->t;
             const double residual =
                 double(test::qabs(test::length(O + t * QVec(d) - C) - R) / unit);
+            tally.residualAll.note(residual, where(residual));
+            if (atOrigin) tally.residualAtOrigin.note(residual, where(residual));
             if (!(residual <= kBand)) {
                 ++tally.offSurface;
                 tally.offSurfaceWorst.note(residual, where(residual));
@@ -174,6 +180,7 @@ void checkCameraRays() {
             tally.dtAll.note(dt, where(dt));
             if (ref.halfChord >= R / 2) {
                 tally.dtWellConditioned.note(dt, where(dt));
+                if (atOrigin) tally.dtWellConditionedAtOrigin.note(dt, where(dt));
                 if (!(dt <= kBand)) {
                     ++tally.tOff;
                     tally.tOffWorst.note(dt, where(dt));
@@ -199,7 +206,11 @@ void checkCameraRays() {
               << "\n"
               << "  rays failing any check " << tally.failed << " of " << tally.rays
               << "; with the camera at the world origin " << tally.failedAtOrigin << " of "
-              << tally.raysAtOrigin << std::endl;
+              << tally.raysAtOrigin << "\n"
+              << "  largest | |o+td-c| - r | / (eps (|o-c|+r)): " << tally.residualAll.value
+              << "; camera at the origin: " << tally.residualAtOrigin.value << "\n"
+              << "  largest |dt|/(eps (|o-c|+r)) at <= 60 degrees, camera at the origin: "
+              << tally.dtWellConditionedAtOrigin.value << std::endl;
     EXPECT_EQ(tally.wrongHit, 0) << "worst " << tally.wrongHitWorst.where;
     EXPECT_EQ(tally.wrongMiss, 0) << "worst " << tally.wrongMissWorst.where;
     EXPECT_EQ(tally.wrongSphere, 0);

@@ -24,7 +24,11 @@ struct CameraBasis {
 template <typename T>
 CameraBasis<T> makeCameraBasis(const Camera& cam, int width, int height) {
     const Vec3 f = glm::normalize(cam.lookAt - cam.position);
-    const Vec3 r = glm::normalize(glm::cross(glm::normalize(cam.up), f));
+    Vec3 r = glm::normalize(glm::cross(glm::normalize(cam.up), f));
+    // With up within a small angle a of the view, the cross product keeps only
+    // about eps/a of its relative precision, so r leans off perpendicular by as
+    // much; one Gram-Schmidt step puts it back to a few eps.
+    r = glm::normalize(r - glm::dot(r, f) * f);
     const Vec3 u = glm::cross(f, r);
     CameraBasis<T> b;
     b.origin = Vec<T>(cam.position);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <limits>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -130,6 +131,15 @@ class TileRenderer {
         for (auto& h : helpers) h.join();
     }
 
+    // The image is float whatever the precision: radiance beyond the largest
+    // float (a light of intensity 1e300 in double, or sums that overflowed to
+    // infinity) is stored as the largest float, never as infinity.
+    template <typename V>
+    static void storePixel(float* out, const V& radiance) {
+        constexpr double kLargest = std::numeric_limits<float>::max();
+        for (int c = 0; c < 3; ++c) out[c] = float(std::min(double(radiance[c]), kLargest));
+    }
+
     // False when stopped part-way: the tile is then incomplete and not reported.
     bool renderTile(const Pass& pass, const Tile& tile, RayCounts& counts) {
         if (pass.kind == PassKind::Preview) return renderPreviewTile(tile, counts);
@@ -150,11 +160,7 @@ class TileRenderer {
             }
             if (!sums_.empty()) std::copy_n(sums.begin(), tile.w, sums_.begin() + row);
             for (int i = 0; i < tile.w; ++i) {
-                const glm::dvec3 mean = sums[i] / double(pass.lastSample);
-                float* out = image_.pixel(tile.x + i, y);
-                out[0] = float(mean.x);
-                out[1] = float(mean.y);
-                out[2] = float(mean.z);
+                storePixel(image_.pixel(tile.x + i, y), sums[i] / double(pass.lastSample));
             }
         }
         return true;
@@ -170,12 +176,7 @@ class TileRenderer {
                 const Vec<T> c =
                     tracePixelSample(s_, bx + bw / 2, by + bh / 2, T(0.5), T(0.5), counts);
                 for (int y = by; y < by + bh; ++y)
-                    for (int x = bx; x < bx + bw; ++x) {
-                        float* out = image_.pixel(x, y);
-                        out[0] = float(c.x);
-                        out[1] = float(c.y);
-                        out[2] = float(c.z);
-                    }
+                    for (int x = bx; x < bx + bw; ++x) storePixel(image_.pixel(x, y), c);
             }
         }
         return true;

@@ -9,6 +9,25 @@
 
 namespace whitted {
 
+namespace {
+
+// Colours, intensities and specular weights as T, at most sqrt(largest T) / 16
+// (1.1e18 in float, 8e152 in double): a product of two of them, and the sums of
+// a few such products, stay finite, so no infinity can meet a zero and make a
+// NaN (a light of intensity 1e300 on a material whose red is 0).
+template <typename T>
+T boundedInput(double v) {
+    static const double kLargest = std::sqrt(double(std::numeric_limits<T>::max())) / 16.0;
+    return T(std::min(v, kLargest));
+}
+
+template <typename T>
+Vec<T> boundedInput(const Vec3& v) {
+    return {boundedInput<T>(v.x), boundedInput<T>(v.y), boundedInput<T>(v.z)};
+}
+
+}  // namespace
+
 template <typename T>
 PreparedScene<T> prepareScene(const Scene& scene) {
     PreparedScene<T> s;
@@ -23,13 +42,13 @@ PreparedScene<T> prepareScene(const Scene& scene) {
     s.height = r.height;
     s.maxDepth = r.maxDepth;
     s.samplesPerPixel = r.samplesPerPixel;
-    s.background = Vec<T>(scene.background);
-    s.ambient = Vec<T>(scene.ambient);
+    s.background = boundedInput<T>(scene.background);
+    s.ambient = boundedInput<T>(scene.ambient);
     for (const Material& m : scene.materials) {
         PreparedMaterial<T> pm;
-        pm.diffuse = Vec<T>(m.diffuse);
+        pm.diffuse = boundedInput<T>(m.diffuse);
         if (m.checker) {
-            pm.checkerColor = Vec<T>(m.checker->color);
+            pm.checkerColor = boundedInput<T>(m.checker->color);
             pm.checkerInvSize = T(1.0 / m.checker->size);
             const volatile T size = T(m.checker->size);  // volatile: see SphereSet::split
             pm.checkerSize = size;
@@ -47,7 +66,7 @@ PreparedScene<T> prepareScene(const Scene& scene) {
                 pm.checkerFrameParity[i] = T(whole - 2.0 * std::floor(whole * 0.5));
             }
         }
-        pm.specular = T(m.specular);
+        pm.specular = boundedInput<T>(m.specular);
         pm.shininess = T(m.shininess);
         pm.reflectivity = T(m.reflectivity);
         pm.transparency = T(m.transparency);
@@ -62,7 +81,7 @@ PreparedScene<T> prepareScene(const Scene& scene) {
     for (const Light& l : scene.lights) {
         const Vec3 c = l.color * l.intensity;
         if (c == Vec3(0.0)) continue;  // a dark light adds nothing: no shadow rays for it
-        s.lights.push_back({Vec<T>(l.position - s.frameOrigin), Vec<T>(c)});
+        s.lights.push_back({Vec<T>(l.position - s.frameOrigin), boundedInput<T>(c)});
     }
     for (const Sphere& sp : scene.spheres) {
         Vec3 c, cLo;  // the centre in the frame, exactly: c + cLo

@@ -134,37 +134,62 @@ struct LaneMaterials {
     V checkerInvSize{}, checkerSize{}, checkerSizeLo{}, radius{}, radiusLo{}, rrHi{}, rrLo{};
 };
 
+// Writes one hit's sphere and material into a LaneMaterials, field by field,
+// through `put` (one lane, or all lanes at once).
+template <typename T, typename Put>
+void describeHit(const PreparedScene<T>& s, int k, LaneMaterials<T>& g, Put put) {
+    using Lane = typename RayPacket<T>::MaskLane;
+    const PreparedMaterial<T>& m = s.materials[s.material[k]];
+    put(g.centre, s.spheres.centre[k]);
+    put(g.centreLo, s.spheres.centreLo[k]);
+    put(g.diffuse, m.diffuse);
+    put(g.specular, m.specular);
+    put(g.reflectivity, m.reflectivity);
+    put(g.transparency, m.transparency);
+    put(g.ior, m.ior);
+    put(g.lit, m.lit ? Lane(-1) : Lane(0));
+    put(g.checker, m.checkerInvSize != T(0) ? Lane(-1) : Lane(0));
+    put(g.shininessInt, Lane(m.integerShininess));
+    put(g.shininess, m.shininess);
+    put(g.checkerColor, m.checkerColor);
+    put(g.checkerInvSize, m.checkerInvSize);
+    put(g.checkerSize, m.checkerSize);
+    put(g.checkerSizeLo, m.checkerSizeLo);
+    put(g.checkerFrameFraction, m.checkerFrameFraction);
+    put(g.checkerFrameFractionLo, m.checkerFrameFractionLo);
+    put(g.checkerFrameParity, m.checkerFrameParity);
+    put(g.radius, s.spheres.radius[k]);
+    put(g.radiusLo, s.spheres.radiusLo[k]);
+    put(g.rrHi, s.spheres.rrHi[k]);
+    put(g.rrLo, s.spheres.rrLo[k]);
+}
+
 template <typename T>
 LaneMaterials<T> gatherMaterials(const PreparedScene<T>& s, const typename Simd<T>::type& kHit,
                                  unsigned lanes) {
-    using Lane = typename RayPacket<T>::MaskLane;
     LaneMaterials<T> g;
+    // Neighbouring rays mostly hit one sphere: then every field is one
+    // broadcast instead of a store per lane, which made a packet's gather cost
+    // as much as its shading.
+    const T first = kHit[__builtin_ctz(lanes)];
+    if ((laneBits(kHit == first) & lanes) == lanes) {
+        describeHit(s, static_cast<int>(first), g, [](auto& field, const auto& value) {
+            using Field = std::remove_reference_t<decltype(field)>;
+            if constexpr (requires { field.setLane(0, value); })
+                field = Field::broadcast(value);
+            else
+                field = Field{} + value;
+        });
+        return g;
+    }
     for (unsigned bits = lanes; bits; bits &= bits - 1) {
         const int l = __builtin_ctz(bits);
-        const int k = static_cast<int>(kHit[l]);
-        const PreparedMaterial<T>& m = s.materials[s.material[k]];
-        g.centre.setLane(l, s.spheres.centre[k]);
-        g.centreLo.setLane(l, s.spheres.centreLo[k]);
-        g.diffuse.setLane(l, m.diffuse);
-        g.specular[l] = m.specular;
-        g.reflectivity[l] = m.reflectivity;
-        g.transparency[l] = m.transparency;
-        g.ior[l] = m.ior;
-        g.lit[l] = m.lit ? Lane(-1) : Lane(0);
-        g.checker[l] = m.checkerInvSize != T(0) ? Lane(-1) : Lane(0);
-        g.shininessInt[l] = m.integerShininess;
-        g.shininess[l] = m.shininess;
-        g.checkerColor.setLane(l, m.checkerColor);
-        g.checkerInvSize[l] = m.checkerInvSize;
-        g.checkerSize[l] = m.checkerSize;
-        g.checkerSizeLo[l] = m.checkerSizeLo;
-        g.checkerFrameFraction.setLane(l, m.checkerFrameFraction);
-        g.checkerFrameFractionLo.setLane(l, m.checkerFrameFractionLo);
-        g.checkerFrameParity.setLane(l, m.checkerFrameParity);
-        g.radius[l] = s.spheres.radius[k];
-        g.radiusLo[l] = s.spheres.radiusLo[k];
-        g.rrHi[l] = s.spheres.rrHi[k];
-        g.rrLo[l] = s.spheres.rrLo[k];
+        describeHit(s, static_cast<int>(kHit[l]), g, [l](auto& field, const auto& value) {
+            if constexpr (requires { field.setLane(l, value); })
+                field.setLane(l, value);
+            else
+                field[l] = value;
+        });
     }
     return g;
 }
@@ -227,10 +252,12 @@ Vec3x<T> checkerLanes(const LaneMaterials<T>& g, const Vec3x<T>& p, const Vec3x<
     const Vec3x<T>& fl = g.checkerFrameFractionLo;
     const V fAxis = isX ? fh.x : (isY ? fh.y : fh.z);
     const V fAxisLo = isX ? fl.x : (isY ? fl.y : fl.z);
-    // (hi + lo) / size as q1 + q2, dividing a two-term value by a two-term one.
-    const V q1 = hi / g.checkerSize;
+    // (hi + lo) / size as q1 + q2: q1 from the rounded 1/size, q2 from the exact
+    // remainder (hi + lo) - q1 * size, so the pair is right to ~eps^2 without a
+    // division (1/size alone is inexact for sizes such as 50).
+    const V q1 = hi * g.checkerInvSize;
     twoProductLanes<V, T>(q1, g.checkerSize, ph, pl);
-    const V q2 = ((((hi - ph) - pl) + lo) - q1 * g.checkerSizeLo) / g.checkerSize;
+    const V q2 = ((((hi - ph) - pl) + lo) - q1 * g.checkerSizeLo) * g.checkerInvSize;
     exact::twoSum<V>(q1, fAxis, hi2, e);
     exact::twoSum<V>(hi2, (e + fAxisLo) + q2, hi, lo);
     const V f = laneFloor(hi);

@@ -8,6 +8,7 @@
 #include <initializer_list>
 #include <map>
 #include <sstream>
+#include <system_error>
 
 #include <nlohmann/json.hpp>
 
@@ -557,12 +558,11 @@ std::string sceneToJson(const Scene& s) {
 
 void saveScene(const Scene& scene, const fs::path& file) {
     const std::string text = sceneToJson(scene);
-    replaceFileAtomically(file, [&](const fs::path& temp) {
-        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        out << text;
-        out.close();
-        if (!out) throw std::runtime_error(file.string() + ": cannot write file");
-    });
+    try {
+        replaceFileAtomically(file, [&](const fs::path& temp) { writeAllBytes(temp, text); });
+    } catch (const std::system_error& e) {
+        throw std::runtime_error(file.string() + ": " + e.code().message());
+    }
 }
 
 }  // namespace whitted

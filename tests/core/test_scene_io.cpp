@@ -582,5 +582,24 @@ TEST(SceneIo, SaveIntoMissingDirectory_ThrowsAndCreatesNothing) {
     EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
 }
 
+// A full disk: saving to a link to /dev/full says "No space left on device",
+// names the file, and leaves the device node and the directory as they were.
+TEST(SceneIo, SaveToFullDisk_ThrowsNoSpaceNamingTheFile) {
+    if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
+    TempDir dir;
+    const fs::path link = dir / "scene.json";
+    fs::create_symlink("/dev/full", link);
+    try {
+        saveScene(loadScene(WHITTED_SCENES_DIR "/seed.json"), link);
+        ADD_FAILURE() << "saved to a full disk";
+    } catch (const std::runtime_error& e) {
+        EXPECT_EQ(std::string(e.what()), link.string() + ": No space left on device");
+    }
+    EXPECT_TRUE(fs::is_symlink(link));
+    EXPECT_TRUE(fs::is_character_file("/dev/full"));
+    fs::remove(link);
+    EXPECT_TRUE(fs::is_empty(dir.path()));
+}
+
 }  // namespace
 }  // namespace whitted

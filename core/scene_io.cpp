@@ -450,6 +450,14 @@ Scene parseScene(const std::string& text, const std::string& sourceName) {
 Scene loadScene(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
     if (!in) throw SceneError(file.string(), "", "cannot open file");
+    std::error_code noSize;
+    const std::uintmax_t size = fs::file_size(file, noSize);
+    if (!noSize && size > kMaxSceneFileBytes) {
+        std::ostringstream reason;
+        reason << "is " << (size + (1u << 20) - 1) / (1u << 20) << " MB; scene files larger than "
+               << kMaxSceneFileBytes / (1u << 20) << " MB are refused";
+        throw SceneError(file.string(), "", reason.str());
+    }
     std::ostringstream text;
     text << in.rdbuf();
     if (in.bad()) throw SceneError(file.string(), "", "cannot read file");

@@ -601,5 +601,30 @@ TEST(SceneIo, SaveToFullDisk_ThrowsNoSpaceNamingTheFile) {
     EXPECT_TRUE(fs::is_empty(dir.path()));
 }
 
+// A file over the size limit is refused before it is read, by name and size.
+TEST(SceneIo, FileOverSizeLimit_RefusedWithItsSize) {
+    TempDir dir;
+    const fs::path file = dir / "huge.json";
+    {
+        std::ofstream out(file, std::ios::binary);
+        out << "{";
+    }
+    fs::resize_file(file, kMaxSceneFileBytes + 1);  // sparse: costs no disk
+    try {
+        loadScene(file);
+        ADD_FAILURE() << "loaded";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  file.string() + ": is 65 MB; scene files larger than 64 MB are refused");
+    }
+    fs::resize_file(file, kMaxSceneFileBytes);  // at the limit: read, then refused as JSON
+    try {
+        loadScene(file);
+        ADD_FAILURE() << "loaded";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()).find("refused"), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace whitted

@@ -44,6 +44,8 @@
 namespace whitted::ui {
 namespace {
 
+namespace fs = std::filesystem;
+
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kWidth = 160, kHeight = 120;
 constexpr int kRenderTimeoutMs =
@@ -517,6 +519,37 @@ TEST_F(MainWindowTest, RadiusStepUp_FromPointTwo_GivesExactlyPointThree) {
     radius->stepBy(1);
     EXPECT_EQ(doc->scene().spheres[0].radius, 0.3);
     EXPECT_EQ(radius->text(), QStringLiteral("0.3"));
+}
+
+// Export errors (issue 6): a missing directory, a full disk and an unknown
+// extension each end the export with a message naming the file; no file is
+// left, the scene is untouched and unmodified.
+TEST_F(MainWindowTest, ExportErrors_MessageNamesTheFileAndNothingIsLeftOrChanged) {
+    const Scene before = doc->scene();
+    fs::create_symlink("/dev/full", dir / "full.png");
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {(dir / "missing" / "out.png").string(), "out.png"},
+        {(dir / "full.png").string(), "No space left on device"},
+        {(dir / "out.bmp").string(), "unknown image extension"},
+    };
+    for (const auto& [path, expected] : cases) {
+        SCOPED_TRACE(path);
+        ExportSettings settings;
+        settings.path = QString::fromStdString(path);
+        settings.render = doc->scene().render;
+        QSignalSpy finished(window.get(), &MainWindow::exportFinished);
+        window->startExport(settings);
+        ASSERT_TRUE(finished.wait(kRenderTimeoutMs));
+        ASSERT_EQ(finished.count(), 1);
+        EXPECT_FALSE(finished[0][0].toBool());
+        const std::string message = finished[0][1].toString().toStdString();
+        EXPECT_NE(message.find(fs::path(path).filename().string()), std::string::npos) << message;
+        EXPECT_NE(message.find(expected), std::string::npos) << message;
+    }
+    EXPECT_EQ(dir.entries(), (std::vector<std::string>{"full.png", "seed.json"}));
+    EXPECT_TRUE(fs::is_character_file("/dev/full"));
+    EXPECT_EQ(doc->scene(), before);
+    EXPECT_FALSE(doc->isModified());
 }
 
 // Stress (issue 6): thousands of random edits, undos and redos as fast as the

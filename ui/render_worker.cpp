@@ -1,6 +1,8 @@
 #include "render_worker.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <shared_mutex>
 
 #include "image_convert.h"
@@ -50,9 +52,23 @@ void RenderWorker::run() {
     }
 }
 
-void RenderWorker::renderOne(const Scene& scene, quint64 generation) {
+Scene viewSized(const Scene& scene) {
+    Scene view = scene;
+    const int longest = std::max(scene.render.width, scene.render.height);
+    if (longest > kMaxViewSize) {
+        auto scaled = [&](int size) {
+            return std::max(1, int(std::lround(double(size) * kMaxViewSize / longest)));
+        };
+        view.render.width = scaled(scene.render.width);
+        view.render.height = scaled(scene.render.height);
+    }
+    return view;
+}
+
+void RenderWorker::renderOne(const Scene& requested, quint64 generation) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
+    const Scene scene = viewSized(requested);
     const int width = scene.render.width, height = scene.render.height;
     QImage display(width, height, QImage::Format_RGB32);
     display.fill(Qt::black);

@@ -25,9 +25,18 @@
 
 namespace whitted::ui {
 
+// The view never needs more pixels than a screen has: a scene larger than this
+// on its long side is rendered for the view at a reduced size (same camera and
+// aspect), so that opening a 16384x16384 scene neither allocates nor copies
+// gigabytes per frame. Export renders the full size.
+inline constexpr int kMaxViewSize = 2048;
+
+// The scene as the view renders it: render size capped at kMaxViewSize.
+Scene viewSized(const Scene& scene);
+
 struct RenderFrame {
     quint64 generation = 0;
-    QImage image;  // 8-bit sRGB at the scene's render size
+    QImage image;  // 8-bit sRGB at the scene's render size (viewSized())
     int pass = 0;  // 0-based pass the frame belongs to
     int passCount = 0;
     bool preview = false;         // the coarse first pass
@@ -57,7 +66,7 @@ class RenderWorker : public QObject {
 
   private:
     void run();
-    void renderOne(const Scene& scene, quint64 generation);
+    void renderOne(const Scene& requested, quint64 generation);
 
     std::mutex mutex_;
     std::condition_variable wake_;

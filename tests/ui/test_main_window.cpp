@@ -552,6 +552,44 @@ TEST_F(MainWindowTest, ExportErrors_MessageNamesTheFileAndNothingIsLeftOrChanged
     EXPECT_FALSE(doc->isModified());
 }
 
+// The largest render the format allows (issue 6): the editor starts it, shows
+// its first frame, and the next edit cancels it at once; the small scene's
+// render then arrives whole. Figures printed, bounds generous.
+TEST_F(MainWindowTest, LargestScene_FirstFrameThenAnEditCancelsItAtOnce) {
+    using Clock = std::chrono::steady_clock;
+    const size_t shown = log->generations.size();
+    const Clock::time_point start = Clock::now();
+    ASSERT_TRUE(doc->edit("huge", [](Scene& s) {
+        s.render.width = kMaxImageSize;
+        s.render.height = kMaxImageSize;
+        s.render.samplesPerPixel = kMaxSamplesPerPixel;
+    }));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return log->generations.size() > shown; }, kRenderTimeoutMs))
+        << "no frame of the 16384x16384 render";
+    const double firstFrame = std::chrono::duration<double>(Clock::now() - start).count();
+    // The view renders at most kMaxViewSize on the long side, whatever the scene says.
+    EXPECT_EQ(view->frame().size(), QSize(kMaxViewSize, kMaxViewSize));
+    Scene wide = doc->scene();
+    wide.render.width = 16384;
+    wide.render.height = 3;
+    EXPECT_EQ(viewSized(wide).render.width, kMaxViewSize);
+    EXPECT_EQ(viewSized(wide).render.height, 1);
+    EXPECT_EQ(viewSized(doc->scene()).render.width, kMaxViewSize);
+    const int before = log->completed;
+    const Clock::time_point edit = Clock::now();
+    ASSERT_TRUE(doc->edit("small", [](Scene& s) {
+        s.render.width = kWidth;
+        s.render.height = kHeight;
+        s.render.samplesPerPixel = 1;
+    }));
+    ASSERT_TRUE(waitForRender(before));
+    const double toSmall = std::chrono::duration<double>(Clock::now() - edit).count();
+    std::cout << "[ FIGURES  ] first frame of 16384x16384 after " << firstFrame
+              << " s; the small scene complete " << toSmall << " s after the edit\n";
+    EXPECT_LT(toSmall, 5.0);
+    EXPECT_TRUE(sameImage(view->frame(), coreRender(doc->scene())));
+}
+
 // Stress (issue 6): thousands of random edits, undos and redos as fast as the
 // GUI thread can make them while the worker renders (events processed after
 // each, so renders start and are abandoned all the time). Nothing crashes or

@@ -11,7 +11,27 @@ namespace whitted::ui {
 
 RenderWorker::RenderWorker(QObject* parent) : QObject(parent) {
     qRegisterMetaType<whitted::ui::RenderFrame>();
+    connect(this, &RenderWorker::framePosted, this, &RenderWorker::deliver, Qt::QueuedConnection);
     thread_ = std::thread([this] { run(); });
+}
+
+void RenderWorker::post(RenderFrame frame) {
+    {
+        std::lock_guard lock(outboxMutex_);
+        outbox_.push_back(std::move(frame));
+    }
+    emit framePosted();  // one event per frame: deliver() takes one each time
+}
+
+void RenderWorker::deliver() {
+    RenderFrame frame;
+    {
+        std::lock_guard lock(outboxMutex_);
+        if (outbox_.empty()) return;
+        frame = std::move(outbox_.front());
+        outbox_.pop_front();
+    }
+    emit frameReady(frame);
 }
 
 RenderWorker::~RenderWorker() {
@@ -122,7 +142,7 @@ void RenderWorker::renderOne(const Scene& requested, quint64 generation) {
                 std::unique_lock exclusive(imageLock);
                 frame.image = display.copy();
             }
-            emit frameReady(frame);
+            post(std::move(frame));
             lastSent = Clock::now();
         }
     };
@@ -135,7 +155,7 @@ void RenderWorker::renderOne(const Scene& requested, quint64 generation) {
     frame.samples = result.samples;
     frame.seconds = result.seconds;
     frame.mraysPerSecond = result.seconds > 0 ? result.rays.total() / result.seconds / 1e6 : 0.0;
-    emit frameReady(frame);
+    post(std::move(frame));
 }
 
 }  // namespace whitted::ui

@@ -3,11 +3,8 @@
 // reflection happens. Float and double renders that agree on all of them differ
 // only by rounding in the shading; a pixel where one flips differs visibly.
 //
-// The tree is walked with the tracer's own rules (tracer.cpp's tracePacket, in
-// scalar form, operation for operation): closest hit, per-light shadow rays
-// through packetTransmittance, refraction before reflection, the same
-// self-intersection policy and the same depth limit. Only the camera ray
-// through the pixel centre is followed, whatever samples_per_pixel says.
+// The tree is walked with the tracer's own rules (core/ray_tree.h). Only the
+// camera ray through the pixel centre is followed, whatever samples_per_pixel says.
 #pragma once
 
 #include <cstdint>

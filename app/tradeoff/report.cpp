@@ -55,9 +55,17 @@ std::string sceneSection(const SceneSummary& s) {
        << "are compared stretched, as a viewer shows them.\n\n";
     md << "Depth truncation at the scene's own max_depth " << s.sceneDepth
        << ": the largest cut-off weight is " << fixed(s.truncation, 4)
-       << (s.truncation == 0.0f ? " (raising the depth changes nothing)" : "") << "; past depth "
-       << s.depthWithinTolerance << " it stays below 1/1024 everywhere. "
-       << "[Map](" << s.directory << "/truncation.png) (white: weight 1).\n\n";
+       << (s.truncation == 0.0f ? " (raising the depth changes nothing)" : "") << "; ";
+    if (s.depthWithinTolerance >= kMaxDepth)
+        md << "it stays above 1/1024 somewhere up to max_depth " << kMaxDepth
+           << " (rays trapped in glass keep their weight). ";
+    else
+        md << "from max_depth " << s.depthWithinTolerance
+           << " on it is below 1/1024 everywhere, so deeper renders change nothing visible. ";
+    md << "The reference and the truncation map (black: nothing cut off; white: the largest "
+          "weight):\n\n| reference | truncation at max_depth "
+       << s.sceneDepth << " |\n|---|---|\n| ![reference](" << s.directory
+       << "/reference.png) | ![truncation map](" << s.directory << "/truncation.png) |\n\n";
     md << "The Pareto front (no other point is both faster and more accurate); every point is "
        << "in [table.md](" << s.directory << "/table.md) and [points.csv](" << s.directory
        << "/points.csv).\n\n";

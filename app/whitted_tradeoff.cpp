@@ -16,6 +16,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -81,6 +82,22 @@ std::string fixed(double v, int decimals) {
     return buffer;
 }
 
+// The command line as a reader would type it in the repository root: the
+// program as build/bin/whitted-tradeoff whatever path started it.
+std::string commandLine(int argc, char** argv) {
+    std::string command = "build/bin/whitted-tradeoff";
+    for (int i = 1; i < argc; ++i) command.append(" ").append(argv[i]);
+    return command;
+}
+
+// Today's date (UTC), for the report's "measured on".
+std::string today() {
+    const std::time_t now = std::time(nullptr);
+    char buffer[32];
+    std::strftime(buffer, sizeof buffer, "%Y-%m-%d", std::gmtime(&now));
+    return buffer;
+}
+
 std::size_t gridSize(const TradeoffGrid& g) {
     return g.samples.size() * g.depths.size() * g.precisions.size() * g.scales.size();
 }
@@ -105,6 +122,8 @@ json summaryJson(const tradeoff::SceneSummary& s) {
              {"psnr_srgb8", std::isfinite(c.error.psnrSrgb8) ? c.error.psnrSrgb8 : 999.0},
              {"psnr_linear", std::isfinite(c.error.psnrLinear) ? c.error.psnrLinear : 999.0}});
     return {{"name", s.name},
+            {"command", s.command},
+            {"date", s.date},
             {"reference", json::parse(sceneToJson(s.reference))},
             {"reference_seconds", s.referenceSeconds},
             {"scene_depth", s.sceneDepth},
@@ -119,6 +138,8 @@ tradeoff::SceneSummary readSummary(const fs::path& dir) {
     const json j = json::parse(in);
     tradeoff::SceneSummary s;
     s.name = j.at("name").get<std::string>();
+    s.command = j.value("command", std::string());
+    s.date = j.value("date", std::string());
     s.reference = parseScene(j.at("reference").dump(), (dir / "summary.json").string());
     s.referenceSeconds = j.at("reference_seconds").get<double>();
     s.sceneDepth = j.at("scene_depth").get<int>();
@@ -206,9 +227,7 @@ int main(int argc, char** argv) {
                 std::cerr << "whitted-tradeoff: --report needs --dirs\n";
                 return kExitBadInput;
             }
-            std::string command;
-            for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
-            return writeReport(report, reportDirs, command);
+            return writeReport(report, reportDirs, commandLine(argc, argv));
         }
         if (scenePath.empty()) {
             std::cerr << "whitted-tradeoff: a scene file is required\n";
@@ -288,6 +307,8 @@ int main(int argc, char** argv) {
                   << scene.render.height << ": reference (double, " << referenceSpp << " spp)...\n";
         tradeoff::SceneSummary summary;
         summary.name = name;
+        summary.command = commandLine(argc, argv);
+        summary.date = today();
         const ReferenceRender ref = renderReference(scene, referenceSpp, stop);
         if (interrupted) return kExitFailure;
         summary.reference = ref.scene;

@@ -4,8 +4,9 @@
 // points.csv, table.md, plot.png (error against time, Pareto front marked),
 // progressive.csv, progressive.png, truncation.png, reference.png, summary.md
 // and summary.json.
-//   whitted-tradeoff --report OUT.md DIR...
-// writes docs/tradeoff.md from the summaries of earlier runs, presets included.
+//   whitted-tradeoff --report OUT.md --dirs DIR...
+// writes docs/tradeoff.md from the summaries of earlier runs, presets included,
+// and rewrites each directory's summary.md in the same words.
 // Exit codes as whitted-render: 0 success, 2 bad input, 1 any other failure.
 #include <unistd.h>
 
@@ -168,6 +169,9 @@ int writeReport(const std::string& output, const std::vector<std::string>& dirs,
     const fs::path base = fs::absolute(output).parent_path();
     for (const std::string& d : dirs) {
         tradeoff::SceneSummary s = readSummary(d);
+        // Each directory's own summary follows the report's wording too.
+        s.directory = ".";
+        writeText(fs::path(d) / "summary.md", tradeoff::sceneSection(s));
         s.directory = fs::relative(fs::absolute(d), base).generic_string();
         scenes.push_back(std::move(s));
     }

@@ -74,7 +74,8 @@ std::string sceneSection(const SceneSummary& s) {
            << " (rays trapped in glass keep their weight). ";
     else
         md << "from max_depth " << s.depthWithinTolerance
-           << " on it is below 1/1024 everywhere, so deeper renders change nothing visible. ";
+           << " on it is below 1/1024 everywhere: deeper renders change no pixel by more than "
+              "1/1024 of the missing rays' radiance. ";
     md << "The reference and the truncation map (black: nothing cut off; white: the largest "
           "weight):\n\n| reference | truncation at max_depth "
        << s.sceneDepth << " |\n|---|---|\n| ![reference](" << s.directory

@@ -99,7 +99,7 @@ void MainWindow::buildDocks() {
     tabs->setObjectName("settingsTabs");
     tabs->addTab(propertyPanel_, tr("Properties"));
     tabs->addTab(new CameraPanel(&doc_), tr("Camera"));
-    tabs->addTab(new RenderSettingsPanel(&doc_), tr("Render"));
+    tabs->addTab(new RenderSettingsPanel(&doc_, &record_), tr("Render"));
     auto* settingsDock = new QDockWidget(tr("Settings"), this);
     settingsDock->setObjectName("settingsDock");
     settingsDock->setWidget(tabs);
@@ -193,6 +193,7 @@ void MainWindow::onFrame(const RenderFrame& frame) {
     speedLabel_->setText(frame.renderComplete
                              ? tr("%1 Mrays/s").arg(frame.mraysPerSecond, 0, 'f', 1)
                              : tr("rendering…"));
+    if (frame.renderComplete) record_.addRender({frame.settings, frame.seconds, frame.rays});
     emit frameShown(frame);
 }
 

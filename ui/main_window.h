@@ -13,6 +13,7 @@
 
 #include "render_worker.h"
 #include "scene_document.h"
+#include "tradeoff_record.h"
 
 class QMenu;
 class QProgressDialog;
@@ -44,6 +45,7 @@ class MainWindow : public QMainWindow {
     ScenePanel* scenePanel() { return scenePanel_; }
     PropertyPanel* propertyPanel() { return propertyPanel_; }
     PrecisionView* precisionView() { return precisionView_; }
+    TradeoffRecord* tradeoffRecord() { return &record_; }
     FloatRangeWarning* floatRangeWarning() { return floatRangeWarning_; }
     QString lastError() const { return lastError_; }  // the last message shown to the user
 
@@ -79,6 +81,7 @@ class MainWindow : public QMainWindow {
     void onFrame(const RenderFrame& frame);
 
     SceneDocument doc_;
+    TradeoffRecord record_;
     RenderWorker worker_;
     RenderView* view_ = nullptr;
     ScenePanel* scenePanel_ = nullptr;

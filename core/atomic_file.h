@@ -4,13 +4,20 @@
 
 #include <filesystem>
 #include <functional>
+#include <string_view>
 
 namespace whitted {
 
 // Calls `write` with a temporary path in the same directory that keeps the
 // target's extension (so format-by-extension writers such as OpenImageIO still
 // work), then renames it to `target`. If `write` throws, or the rename fails, the
-// temporary is removed and the exception propagates.
+// temporary is removed and the exception propagates. A target that is a device
+// or a pipe (/dev/full) is written directly instead: there is nothing to replace.
+// Writes every byte to `file` (created or truncated) with checked system
+// calls, or throws std::system_error with the reason ("No space left on
+// device"); stream libraries and image writers lose such errors.
+void writeAllBytes(const std::filesystem::path& file, std::string_view bytes);
+
 void replaceFileAtomically(const std::filesystem::path& target,
                            const std::function<void(const std::filesystem::path& temp)>& write);
 

@@ -5,6 +5,9 @@
 #include <cstdint>
 #include <sstream>
 
+#include <system_error>
+
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include "atomic_file.h"
@@ -60,8 +63,10 @@ void writeImage(const Image& image, const fs::path& file, const ImageMetadata& m
 
     OIIO::ImageSpec spec(image.width, image.height, 3,
                          format->isFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-    spec.attribute("Software", metadata.software);
-    spec.attribute("ImageDescription", metadata.description);
+    // Empty strings are left out: Debian's OpenImageIO asserts on an empty
+    // ImageDescription when writing JPEG (iptc.cpp, encode_iptc_iim_one_tag).
+    if (!metadata.software.empty()) spec.attribute("Software", metadata.software);
+    if (!metadata.description.empty()) spec.attribute("ImageDescription", metadata.description);
     spec.attribute("whitted:width", metadata.settings.width);
     spec.attribute("whitted:height", metadata.settings.height);
     spec.attribute("whitted:samples_per_pixel", metadata.settings.samplesPerPixel);
@@ -79,18 +84,27 @@ void writeImage(const Image& image, const fs::path& file, const ImageMetadata& m
         pixels = bytes.data();
     }
 
+    // Encoded in memory first, then written with checked system calls: the
+    // format writers do not report a failed write (a full disk gave a
+    // truncated PNG and no error), and a truncated file must never replace a
+    // good one.
+    std::vector<unsigned char> encoded;
+    {
+        OIIO::Filesystem::IOVecOutput memory(encoded);
+        auto out = OIIO::ImageOutput::create(file.string());
+        if (!out) throw ImageIoError(file.string() + ": " + OIIO::geterror());
+        if (!out->set_ioproxy(&memory) || !out->open(file.string(), spec))
+            throw ImageIoError(file.string() + ": " + out->geterror());
+        const bool wrote = out->write_image(spec.format, pixels);
+        const bool closed = out->close();
+        if (!wrote || !closed) throw ImageIoError(file.string() + ": " + out->geterror());
+    }
     try {
         replaceFileAtomically(file, [&](const fs::path& temp) {
-            auto out = OIIO::ImageOutput::create(temp.string());
-            if (!out) throw ImageIoError(file.string() + ": " + OIIO::geterror());
-            if (!out->open(temp.string(), spec))
-                throw ImageIoError(file.string() + ": " + out->geterror());
-            const bool wrote = out->write_image(spec.format, pixels);
-            const bool closed = out->close();
-            if (!wrote || !closed) throw ImageIoError(file.string() + ": " + out->geterror());
+            writeAllBytes(temp, {reinterpret_cast<const char*>(encoded.data()), encoded.size()});
         });
-    } catch (const ImageIoError&) {
-        throw;
+    } catch (const std::system_error& e) {
+        throw ImageIoError(file.string() + ": " + e.code().message());
     } catch (const std::exception& e) {
         throw ImageIoError(file.string() + ": " + e.what());
     }

@@ -8,6 +8,7 @@
 #include <initializer_list>
 #include <map>
 #include <sstream>
+#include <system_error>
 
 #include <nlohmann/json.hpp>
 
@@ -449,6 +450,14 @@ Scene parseScene(const std::string& text, const std::string& sourceName) {
 Scene loadScene(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
     if (!in) throw SceneError(file.string(), "", "cannot open file");
+    std::error_code noSize;
+    const std::uintmax_t size = fs::file_size(file, noSize);
+    if (!noSize && size > kMaxSceneFileBytes) {
+        std::ostringstream reason;
+        reason << "is " << (size + (1u << 20) - 1) / (1u << 20) << " MB; scene files larger than "
+               << kMaxSceneFileBytes / (1u << 20) << " MB are refused";
+        throw SceneError(file.string(), "", reason.str());
+    }
     std::ostringstream text;
     text << in.rdbuf();
     if (in.bad()) throw SceneError(file.string(), "", "cannot read file");
@@ -557,12 +566,11 @@ std::string sceneToJson(const Scene& s) {
 
 void saveScene(const Scene& scene, const fs::path& file) {
     const std::string text = sceneToJson(scene);
-    replaceFileAtomically(file, [&](const fs::path& temp) {
-        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        out << text;
-        out.close();
-        if (!out) throw std::runtime_error(file.string() + ": cannot write file");
-    });
+    try {
+        replaceFileAtomically(file, [&](const fs::path& temp) { writeAllBytes(temp, text); });
+    } catch (const std::system_error& e) {
+        throw std::runtime_error(file.string() + ": " + e.code().message());
+    }
 }
 
 }  // namespace whitted

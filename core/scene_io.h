@@ -2,6 +2,7 @@
 // validation, save byte-stable and atomically.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
@@ -12,6 +13,11 @@
 namespace whitted {
 
 inline constexpr int kSceneFormatVersion = 1;
+
+// Files above this are refused before they are read: 64 MB hold about 600,000
+// spheres, six times the largest scene the editor is tested with, while a
+// mistaken multi-gigabyte file would otherwise be read whole into memory.
+inline constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t(64) << 20;
 
 // A refused scene. what() is the whole user-facing message:
 // "<file>: <json path>: <reason>", e.g. "a.json: spheres[2].radius: must be > 0".
@@ -29,7 +35,8 @@ class SceneError : public std::runtime_error {
 // Parses scene text; `sourceName` names the file in error messages. Throws SceneError.
 Scene parseScene(const std::string& text, const std::string& sourceName);
 
-// Reads and parses a file. Throws SceneError (unreadable files included).
+// Reads and parses a file. Throws SceneError (unreadable files and files over
+// kMaxSceneFileBytes included).
 Scene loadScene(const std::filesystem::path& file);
 
 // The semantic rules of SPEC §6 for a scene built in memory (the editor's), as

@@ -195,6 +195,50 @@ TEST(ImageIo, WriteWithUnknownExtension_ThrowsNamingFileAndLeavesNothing) {
     }
 }
 
+// A full disk: out.png is a link to /dev/full, so every write fails with
+// ENOSPC. The export must say so, leave nothing beside it, and above all not
+// rename a temporary over the link's target (as root that would replace the
+// /dev/full device node).
+TEST(ImageIo, WriteToFullDisk_ThrowsNoSpaceAndLeavesDeviceAndDirectoryAlone) {
+    if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
+    TempDir dir;
+    for (const char* name : {"out.png", "out.exr", "out.jpg"}) {
+        const fs::path link = dir / name;
+        fs::create_symlink("/dev/full", link);
+        try {
+            writeImage(smoothImage(), link, metadata());
+            ADD_FAILURE() << name << ": written to a full disk";
+        } catch (const ImageIoError& e) {
+            EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+        }
+        EXPECT_TRUE(fs::is_symlink(link)) << name;
+        EXPECT_TRUE(fs::is_character_file("/dev/full")) << "the device node was replaced";
+        fs::remove(link);
+        EXPECT_TRUE(dir.entries().empty()) << name << ": " << test::joined(dir.entries());
+    }
+}
+
+// A directory the process may not write to. Root may write anywhere, so the
+// test checks the outcome rather than the refusal: either a clear error and no
+// file, or (as root) the whole image.
+TEST(ImageIo, WriteIntoReadOnlyDirectory_FailsCleanlyOrWritesWholeFile) {
+    TempDir dir;
+    const fs::path locked = dir / "locked";
+    fs::create_directory(locked);
+    fs::permissions(locked, fs::perms::owner_read | fs::perms::owner_exec);
+    const fs::path file = locked / "out.png";
+    try {
+        writeImage(knownImage(), file, metadata());
+        EXPECT_EQ(readImage(file).width, knownImage().width);  // root: written whole
+    } catch (const ImageIoError& e) {
+        EXPECT_NE(std::string(e.what()).find("out.png"), std::string::npos) << e.what();
+        EXPECT_FALSE(fs::exists(file));
+    }
+    fs::permissions(locked, fs::perms::owner_all);
+    for (const auto& e : fs::directory_iterator(locked))
+        EXPECT_EQ(e.path().filename(), "out.png") << "a temporary was left behind";
+}
+
 TEST(ImageIo, OverwritingExistingFile_ReplacesItAndLeavesNoTemporaries) {
     TempDir dir;
     const fs::path file = dir / "out.exr";

@@ -582,5 +582,49 @@ TEST(SceneIo, SaveIntoMissingDirectory_ThrowsAndCreatesNothing) {
     EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
 }
 
+// A full disk: saving to a link to /dev/full says "No space left on device",
+// names the file, and leaves the device node and the directory as they were.
+TEST(SceneIo, SaveToFullDisk_ThrowsNoSpaceNamingTheFile) {
+    if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
+    TempDir dir;
+    const fs::path link = dir / "scene.json";
+    fs::create_symlink("/dev/full", link);
+    try {
+        saveScene(loadScene(WHITTED_SCENES_DIR "/seed.json"), link);
+        ADD_FAILURE() << "saved to a full disk";
+    } catch (const std::runtime_error& e) {
+        EXPECT_EQ(std::string(e.what()), link.string() + ": No space left on device");
+    }
+    EXPECT_TRUE(fs::is_symlink(link));
+    EXPECT_TRUE(fs::is_character_file("/dev/full"));
+    fs::remove(link);
+    EXPECT_TRUE(fs::is_empty(dir.path()));
+}
+
+// A file over the size limit is refused before it is read, by name and size.
+TEST(SceneIo, FileOverSizeLimit_RefusedWithItsSize) {
+    TempDir dir;
+    const fs::path file = dir / "huge.json";
+    {
+        std::ofstream out(file, std::ios::binary);
+        out << "{";
+    }
+    fs::resize_file(file, kMaxSceneFileBytes + 1);  // sparse: costs no disk
+    try {
+        loadScene(file);
+        ADD_FAILURE() << "loaded";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  file.string() + ": is 65 MB; scene files larger than 64 MB are refused");
+    }
+    fs::resize_file(file, kMaxSceneFileBytes);  // at the limit: read, then refused as JSON
+    try {
+        loadScene(file);
+        ADD_FAILURE() << "loaded";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()).find("refused"), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace whitted

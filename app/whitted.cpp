@@ -20,5 +20,7 @@ int main(int argc, char** argv) {
     window.show();
     if (!parser.positionalArguments().isEmpty())
         window.openFile(parser.positionalArguments().first());
+    // After the scene is open, so that restoring puts the copy on top of it.
+    window.offerRecovery();
     return app.exec();
 }

@@ -8,7 +8,10 @@
 #include <initializer_list>
 #include <map>
 #include <sstream>
+#include <string_view>
 #include <system_error>
+#include <unordered_map>
+#include <unordered_set>
 
 #include <nlohmann/json.hpp>
 
@@ -273,14 +276,18 @@ std::optional<SceneProblem> checkAtLeast(double v, double lo, const std::string&
 
 template <typename T>
 std::optional<SceneProblem> checkNames(const std::vector<T>& items, const char* list) {
-    std::map<std::string, size_t> seen;
+    // Hashed, and paths built only for a problem: the editor validates every
+    // edit, and a scene of 100,000 spheres spent 40 ms here with a std::map.
+    std::unordered_map<std::string_view, size_t> seen;
+    seen.reserve(items.size());
     for (size_t i = 0; i < items.size(); ++i) {
-        const std::string path = indexed(list, i) + ".name";
-        if (items[i].name.empty()) return SceneProblem{path, "must not be empty"};
+        if (items[i].name.empty())
+            return SceneProblem{indexed(list, i) + ".name", "must not be empty"};
         auto [it, inserted] = seen.emplace(items[i].name, i);
         if (!inserted)
-            return SceneProblem{path, "duplicate name " + quoted(items[i].name) + " (also " +
-                                          indexed(list, it->second) + ")"};
+            return SceneProblem{indexed(list, i) + ".name", "duplicate name " +
+                                                                quoted(items[i].name) + " (also " +
+                                                                indexed(list, it->second) + ")"};
     }
     return std::nullopt;
 }
@@ -344,8 +351,17 @@ std::optional<SceneProblem> validateScene(const Scene& scene) {
         if (auto p = checkAtLeast(l.intensity, 0, path + ".intensity", false)) return p;
     }
     if (auto p = checkNames(scene.spheres, "spheres")) return p;
+    std::unordered_set<std::string_view> materialNames;
+    for (const Material& m : scene.materials) materialNames.insert(m.name);
     for (size_t i = 0; i < scene.spheres.size(); ++i) {
         const Sphere& s = scene.spheres[i];
+        // The common case without building a path string: the editor checks
+        // every sphere of the scene on every edit.
+        const bool finiteCentre =
+            std::isfinite(s.center.x) && std::isfinite(s.center.y) && std::isfinite(s.center.z);
+        if (finiteCentre && std::isfinite(s.radius) && s.radius > 0 &&
+            materialNames.count(s.material))
+            continue;
         const std::string path = indexed("spheres", i);
         if (auto p = checkVec(s.center, path + ".center", false)) return p;
         if (auto p = checkAtLeast(s.radius, 0, path + ".radius", true)) return p;

@@ -14,6 +14,8 @@ packages=(
   qt6-base-dev xvfb xauth x11-utils imagemagick
   # scripts/screenshot.sh --precision-view opens the dock with a key press
   xdotool
+  # the scene loader's fuzzer (tests/fuzz): clang with libFuzzer's runtime
+  clang libclang-rt-14-dev
 )
 
 missing=()

@@ -9,11 +9,13 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QProgressDialog>
+#include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QTimer>
 
+#include "autosave.h"
 #include "export_job.h"
 #include "float_range_warning.h"
 #include "precision_view.h"
@@ -55,6 +57,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     speedLabel_ = new QLabel;
     for (QLabel* l : {passLabel_, samplesLabel_, timeLabel_, speedLabel_})
         statusBar()->addPermanentWidget(l);
+    autosave_ = std::make_unique<Autosave>(&doc_);
+    connect(autosave_.get(), &Autosave::written, this, [this](const QString& error) {
+        if (!error.isEmpty())
+            statusBar()->showMessage(tr("Could not write the recovery copy: %1").arg(error), 10000);
+    });
     floatRangeWarning_ = new FloatRangeWarning(&doc_, {}, statusBar());
     statusBar()->addWidget(floatRangeWarning_);
 
@@ -276,6 +283,46 @@ void MainWindow::startExport(const ExportSettings& settings) {
         },
         Qt::QueuedConnection);
     export_->start();
+}
+
+int MainWindow::offerRecovery() {
+    const std::vector<Recovery> waiting = Autosave::orphans(autosave_->directory());
+    if (waiting.empty()) return 0;
+    const Recovery& r = waiting.front();
+    const QString what =
+        r.originalPath.isEmpty() ? tr("an untitled scene") : QFileInfo(r.originalPath).fileName();
+    auto* box = new QMessageBox(
+        QMessageBox::Question, tr("Restore unsaved changes"),
+        tr("Whitted stopped without saving changes to %1. A copy from %2 was kept.\n\n"
+           "Restore it? The restored scene is marked unsaved; undo returns to the file.")
+            .arg(what, QLocale().toString(r.written.toLocalTime(), QLocale::ShortFormat)),
+        QMessageBox::NoButton, this);
+    box->setObjectName(QStringLiteral("recoveryOffer"));
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    QPushButton* restoreButton = box->addButton(tr("Restore"), QMessageBox::AcceptRole);
+    restoreButton->setObjectName(QStringLiteral("restoreButton"));
+    QPushButton* discardButton = box->addButton(tr("Discard"), QMessageBox::DestructiveRole);
+    discardButton->setObjectName(QStringLiteral("discardButton"));
+    box->setDefaultButton(restoreButton);
+    connect(box, &QMessageBox::buttonClicked, this, [this, r, restoreButton](QAbstractButton* b) {
+        if (b == restoreButton) restore(r);
+        Autosave::discard(r);
+        // The next one, if another editor died too.
+        QTimer::singleShot(0, this, [this] { offerRecovery(); });
+    });
+    box->open();
+    return int(waiting.size());
+}
+
+void MainWindow::restore(const Recovery& r) {
+    // The recovered scene is one undo step on top of the file it came from, so
+    // it shows as unsaved and undo shows the file; an untitled scene goes on
+    // top of the New template.
+    QString error;
+    if (r.originalPath.isEmpty() || !doc_.load(r.originalPath, &error))
+        doc_.reset(newSceneTemplate(), r.originalPath);
+    const Scene recovered = r.scene;
+    doc_.edit(tr("Restore unsaved changes"), [&](Scene& s) { s = recovered; });
 }
 
 bool MainWindow::maybeSave() {

@@ -23,6 +23,8 @@ namespace whitted::ui {
 class RenderView;
 class ScenePanel;
 class PrecisionView;
+class Autosave;
+struct Recovery;
 class FloatRangeWarning;
 class PropertyPanel;
 class ExportJob;
@@ -48,6 +50,13 @@ class MainWindow : public QMainWindow {
     TradeoffRecord* tradeoffRecord() { return &record_; }
     FloatRangeWarning* floatRangeWarning() { return floatRangeWarning_; }
     QString lastError() const { return lastError_; }  // the last message shown to the user
+    Autosave* autosave() { return autosave_.get(); }
+
+    // Offers, one after the other, to restore the unsaved edits of editors that
+    // crashed or were killed (Autosave::orphans). Non-blocking message boxes,
+    // object name "recoveryOffer", buttons "restoreButton" and "discardButton".
+    // Returns how many are waiting.
+    int offerRecovery();
 
     // A scene to start from for File > New: a ball on a checker floor, one light.
     static Scene newSceneTemplate();
@@ -94,7 +103,10 @@ class MainWindow : public QMainWindow {
     QLabel* timeLabel_ = nullptr;
     QLabel* speedLabel_ = nullptr;
     QString lastError_;
+    void restore(const Recovery& recovery);
+
     std::unique_ptr<ExportJob> export_;
+    std::unique_ptr<Autosave> autosave_;
     QPointer<QProgressDialog> exportProgress_;
 };
 

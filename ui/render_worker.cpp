@@ -1,6 +1,8 @@
 #include "render_worker.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <shared_mutex>
 
 #include "image_convert.h"
@@ -9,7 +11,27 @@ namespace whitted::ui {
 
 RenderWorker::RenderWorker(QObject* parent) : QObject(parent) {
     qRegisterMetaType<whitted::ui::RenderFrame>();
+    connect(this, &RenderWorker::framePosted, this, &RenderWorker::deliver, Qt::QueuedConnection);
     thread_ = std::thread([this] { run(); });
+}
+
+void RenderWorker::post(RenderFrame frame) {
+    {
+        std::lock_guard lock(outboxMutex_);
+        outbox_.push_back(std::move(frame));
+    }
+    emit framePosted();  // one event per frame: deliver() takes one each time
+}
+
+void RenderWorker::deliver() {
+    RenderFrame frame;
+    {
+        std::lock_guard lock(outboxMutex_);
+        if (outbox_.empty()) return;
+        frame = std::move(outbox_.front());
+        outbox_.pop_front();
+    }
+    emit frameReady(frame);
 }
 
 RenderWorker::~RenderWorker() {
@@ -50,9 +72,23 @@ void RenderWorker::run() {
     }
 }
 
-void RenderWorker::renderOne(const Scene& scene, quint64 generation) {
+Scene viewSized(const Scene& scene) {
+    Scene view = scene;
+    const int longest = std::max(scene.render.width, scene.render.height);
+    if (longest > kMaxViewSize) {
+        auto scaled = [&](int size) {
+            return std::max(1, int(std::lround(double(size) * kMaxViewSize / longest)));
+        };
+        view.render.width = scaled(scene.render.width);
+        view.render.height = scaled(scene.render.height);
+    }
+    return view;
+}
+
+void RenderWorker::renderOne(const Scene& requested, quint64 generation) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
+    const Scene scene = viewSized(requested);
     const int width = scene.render.width, height = scene.render.height;
     QImage display(width, height, QImage::Format_RGB32);
     display.fill(Qt::black);
@@ -107,7 +143,7 @@ void RenderWorker::renderOne(const Scene& scene, quint64 generation) {
                 std::unique_lock exclusive(imageLock);
                 frame.image = display.copy();
             }
-            emit frameReady(frame);
+            post(std::move(frame));
             lastSent = Clock::now();
         }
     };
@@ -122,7 +158,7 @@ void RenderWorker::renderOne(const Scene& scene, quint64 generation) {
     frame.mraysPerSecond = result.seconds > 0 ? result.rays.total() / result.seconds / 1e6 : 0.0;
     frame.rays = result.rays.total();
     frame.linear = std::make_shared<const Image>(std::move(result.image));
-    emit frameReady(frame);
+    post(std::move(frame));
 }
 
 }  // namespace whitted::ui

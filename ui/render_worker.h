@@ -16,6 +16,7 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -26,9 +27,18 @@
 
 namespace whitted::ui {
 
+// The view never needs more pixels than a screen has: a scene larger than this
+// on its long side is rendered for the view at a reduced size (same camera and
+// aspect), so that opening a 16384x16384 scene neither allocates nor copies
+// gigabytes per frame. Export renders the full size.
+inline constexpr int kMaxViewSize = 2048;
+
+// The scene as the view renders it: render size capped at kMaxViewSize.
+Scene viewSized(const Scene& scene);
+
 struct RenderFrame {
     quint64 generation = 0;
-    QImage image;  // 8-bit sRGB at the scene's render size
+    QImage image;  // 8-bit sRGB at the scene's render size (viewSized())
     int pass = 0;  // 0-based pass the frame belongs to
     int passCount = 0;
     bool preview = false;         // the coarse first pass
@@ -59,11 +69,23 @@ class RenderWorker : public QObject {
     static constexpr int kFrameIntervalMs = 40;
 
   signals:
+    // In the GUI thread (the thread this object lives in), every frame in order.
     void frameReady(const whitted::ui::RenderFrame& frame);
+    // From the render thread: a frame is waiting in the outbox.
+    void framePosted();
 
   private:
     void run();
-    void renderOne(const Scene& scene, quint64 generation);
+    void renderOne(const Scene& requested, quint64 generation);
+    // The render thread's frames pass through an outbox guarded by our own
+    // mutex rather than inside Qt's queued signal: the hand-over is then a
+    // synchronisation ThreadSanitizer can see (Qt's event queue is not
+    // instrumented, and the stress test's frames looked like races).
+    void post(RenderFrame frame);
+    void deliver();  // GUI thread: takes the oldest frame and emits frameReady
+
+    std::mutex outboxMutex_;
+    std::deque<RenderFrame> outbox_;  // guarded by outboxMutex_
 
     std::mutex mutex_;
     std::condition_variable wake_;

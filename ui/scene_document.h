@@ -1,7 +1,7 @@
 // The open scene: the value the editor shows, its file, and its undo history.
 //
-// Every change goes through edit() (or undo/redo), which records the scene
-// before and after as one QUndoCommand, so that each edit is one undo step and
+// Every change goes through edit() (or undo/redo), which records what changed
+// (the changed items, not whole scenes) as one QUndoCommand, so that each edit is one undo step and
 // a slider drag between beginGesture() and endGesture() is a single one.
 // Listeners re-read scene() on sceneChanged(); nothing else holds scene state.
 #pragma once
@@ -18,6 +18,8 @@ namespace whitted::ui {
 
 // What a list or property panel shows.
 enum class ItemKind { Sphere, Light, Material };
+
+struct SceneDelta;
 
 class SceneDocument : public QObject {
     Q_OBJECT
@@ -64,7 +66,8 @@ class SceneDocument : public QObject {
 
   private:
     friend class SceneEditCommand;
-    void apply(const Scene& scene);  // sets the scene and tells listeners
+    // Changes the scene by an edit's delta, forwards or backwards, and tells listeners.
+    void applyDelta(const SceneDelta& delta, bool forward);
 
     Scene scene_;
     QString filePath_;

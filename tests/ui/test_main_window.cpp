@@ -21,7 +21,9 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <iostream>
 #include <memory>
+#include <random>
 #include <string>
 #include <thread>
 #include <vector>
@@ -41,6 +43,8 @@
 
 namespace whitted::ui {
 namespace {
+
+namespace fs = std::filesystem;
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kWidth = 160, kHeight = 120;
@@ -515,6 +519,163 @@ TEST_F(MainWindowTest, RadiusStepUp_FromPointTwo_GivesExactlyPointThree) {
     radius->stepBy(1);
     EXPECT_EQ(doc->scene().spheres[0].radius, 0.3);
     EXPECT_EQ(radius->text(), QStringLiteral("0.3"));
+}
+
+// Export errors (issue 6): a missing directory, a full disk and an unknown
+// extension each end the export with a message naming the file; no file is
+// left, the scene is untouched and unmodified.
+TEST_F(MainWindowTest, ExportErrors_MessageNamesTheFileAndNothingIsLeftOrChanged) {
+    const Scene before = doc->scene();
+    fs::create_symlink("/dev/full", dir / "full.png");
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {(dir / "missing" / "out.png").string(), "out.png"},
+        {(dir / "full.png").string(), "No space left on device"},
+        {(dir / "out.bmp").string(), "unknown image extension"},
+    };
+    for (const auto& [path, expected] : cases) {
+        SCOPED_TRACE(path);
+        ExportSettings settings;
+        settings.path = QString::fromStdString(path);
+        settings.render = doc->scene().render;
+        QSignalSpy finished(window.get(), &MainWindow::exportFinished);
+        window->startExport(settings);
+        ASSERT_TRUE(finished.wait(kRenderTimeoutMs));
+        ASSERT_EQ(finished.count(), 1);
+        EXPECT_FALSE(finished[0][0].toBool());
+        const std::string message = finished[0][1].toString().toStdString();
+        EXPECT_NE(message.find(fs::path(path).filename().string()), std::string::npos) << message;
+        EXPECT_NE(message.find(expected), std::string::npos) << message;
+    }
+    EXPECT_EQ(dir.entries(), (std::vector<std::string>{"full.png", "seed.json"}));
+    EXPECT_TRUE(fs::is_character_file("/dev/full"));
+    EXPECT_EQ(doc->scene(), before);
+    EXPECT_FALSE(doc->isModified());
+}
+
+// The largest render the format allows (issue 6): the editor starts it, shows
+// its first frame, and the next edit cancels it at once; the small scene's
+// render then arrives whole. Figures printed, bounds generous.
+TEST_F(MainWindowTest, LargestScene_FirstFrameThenAnEditCancelsItAtOnce) {
+    using Clock = std::chrono::steady_clock;
+    const size_t shown = log->generations.size();
+    const Clock::time_point start = Clock::now();
+    ASSERT_TRUE(doc->edit("huge", [](Scene& s) {
+        s.render.width = kMaxImageSize;
+        s.render.height = kMaxImageSize;
+        s.render.samplesPerPixel = kMaxSamplesPerPixel;
+    }));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return log->generations.size() > shown; }, kRenderTimeoutMs))
+        << "no frame of the 16384x16384 render";
+    const double firstFrame = std::chrono::duration<double>(Clock::now() - start).count();
+    // The view renders at most kMaxViewSize on the long side, whatever the scene says.
+    EXPECT_EQ(view->frame().size(), QSize(kMaxViewSize, kMaxViewSize));
+    Scene wide = doc->scene();
+    wide.render.width = 16384;
+    wide.render.height = 3;
+    EXPECT_EQ(viewSized(wide).render.width, kMaxViewSize);
+    EXPECT_EQ(viewSized(wide).render.height, 1);
+    EXPECT_EQ(viewSized(doc->scene()).render.width, kMaxViewSize);
+    const int before = log->completed;
+    const Clock::time_point edit = Clock::now();
+    ASSERT_TRUE(doc->edit("small", [](Scene& s) {
+        s.render.width = kWidth;
+        s.render.height = kHeight;
+        s.render.samplesPerPixel = 1;
+    }));
+    ASSERT_TRUE(waitForRender(before));
+    const double toSmall = std::chrono::duration<double>(Clock::now() - edit).count();
+    std::cout << "[ FIGURES  ] first frame of 16384x16384 after " << firstFrame
+              << " s; the small scene complete " << toSmall << " s after the edit\n";
+    EXPECT_LT(toSmall, 5.0);
+    EXPECT_TRUE(sameImage(view->frame(), coreRender(doc->scene())));
+}
+
+// Stress (issue 6): thousands of random edits, undos and redos as fast as the
+// GUI thread can make them while the worker renders (events processed after
+// each, so renders start and are abandoned all the time). Nothing crashes or
+// hangs, and once the edits stop the view shows exactly a fresh render of the
+// final scene. The seed is printed and WHITTED_TEST_SEED replays it.
+TEST_F(MainWindowTest, Stress_RandomEditsUndoRedoWhileRendering_FinalViewIsFreshRender) {
+    const unsigned seed = qEnvironmentVariableIsSet("WHITTED_TEST_SEED")
+                              ? qEnvironmentVariable("WHITTED_TEST_SEED").toUInt()
+                              : 20261122u;
+    std::cout << "[ SEED     ] WHITTED_TEST_SEED=" << seed << "\n";
+    std::mt19937 rng(seed);
+    auto uniform = [&](double a, double b) {
+        return std::uniform_real_distribution<double>(a, b)(rng);
+    };
+    auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); };
+    constexpr int kSteps = 3000;
+    int edits = 0, undos = 0, redos = 0, refused = 0;
+    const auto start = std::chrono::steady_clock::now();
+    for (int step = 0; step < kSteps; ++step) {
+        QUndoStack* undo = doc->undoStack();
+        const int action = pick(12);
+        bool ok = true;
+        if (action == 0 && undo->canUndo()) {
+            undo->undo();
+            ++undos;
+        } else if ((action == 1 || action == 2) && undo->canRedo()) {
+            undo->redo();
+            ++redos;
+        } else {
+            const int kind = pick(8);
+            ok = doc->edit("stress", [&](Scene& s) {
+                const int n = int(s.spheres.size());
+                switch (kind) {
+                    case 0:
+                        s.spheres[pick(n)].radius = uniform(0.05, 1.0);
+                        break;
+                    case 1:
+                        s.spheres[pick(n)].center +=
+                            Vec3(uniform(-0.2, 0.2), uniform(-0.2, 0.2), uniform(-0.2, 0.2));
+                        break;
+                    case 2:
+                        s.materials[pick(int(s.materials.size()))].diffuse =
+                            Vec3(uniform(0, 1), uniform(0, 1), uniform(0, 1));
+                        break;
+                    case 3:
+                        s.lights[0].position =
+                            Vec3(uniform(-10, 10), uniform(1, 10), uniform(-10, 0));
+                        break;
+                    case 4:
+                        s.camera = orbit(s.camera, uniform(-0.2, 0.2), uniform(-0.1, 0.1));
+                        break;
+                    case 5:
+                        if (n < 12)
+                            s.spheres.push_back(
+                                Sphere{"extra " + std::to_string(step),
+                                       {uniform(-2, 2), uniform(0, 1), uniform(1, 5)},
+                                       uniform(0.1, 0.5),
+                                       s.materials[pick(int(s.materials.size()))].name});
+                        break;
+                    case 6:
+                        if (n > 2)
+                            s.spheres.erase(s.spheres.begin() +
+                                            pick(n - 1));  // the floor stays last
+                        break;
+                    default:
+                        s.render.samplesPerPixel = 1 + pick(3);
+                        s.render.maxDepth = pick(5);
+                        s.render.precision = pick(2) ? Precision::Float : Precision::Double;
+                }
+            });
+            ++edits;
+        }
+        refused += !ok;
+        QCoreApplication::processEvents();
+    }
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::cout << "[ FIGURES  ] " << edits << " edits (" << refused << " refused), " << undos
+              << " undos, " << redos << " redos in " << seconds << " s\n";
+    // One last edit with no events processed before it: only its frames can
+    // reach the view from here on.
+    const int before = log->completed;
+    ASSERT_TRUE(doc->edit("last", [](Scene& s) { s.spheres[0].radius = 0.42; }));
+    ASSERT_TRUE(waitForRender(before));
+    EXPECT_TRUE(sameImage(view->frame(), coreRender(doc->scene())));
+    EXPECT_EQ(refused, 0);
 }
 
 }  // namespace

@@ -1,0 +1,19 @@
+// One scene's trade-off points as CSV: written by whitted-tradeoff, read back
+// by its --report mode to choose the presets across scenes.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "tradeoff.h"
+
+namespace whitted::tradeoff {
+
+std::string pointsCsv(const std::vector<TradeoffPoint>& points);
+
+// The points of a CSV written by pointsCsv(). Throws std::runtime_error naming
+// the file and line on a malformed row.
+std::vector<TradeoffPoint> readPointsCsv(const std::filesystem::path& file);
+
+}  // namespace whitted::tradeoff

@@ -1,0 +1,323 @@
+// whitted-tradeoff: measures the speed/accuracy trade of one scene (issue 5).
+//   whitted-tradeoff SCENE.json [--out-dir DIR] [grid flags] [--quick]
+// renders a reference, then every point of the grid, and writes into DIR
+// points.csv, table.md, plot.png (error against time, Pareto front marked),
+// progressive.png, truncation.png, reference.png, summary.md and summary.json.
+//   whitted-tradeoff --report OUT.md DIR...
+// writes docs/tradeoff.md from the summaries of earlier runs, presets included.
+// Exit codes as whitted-render: 0 success, 2 bad input, 1 any other failure.
+#include <unistd.h>
+
+#include <QGuiApplication>
+#include <QImage>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "atomic_file.h"
+#include "depth_truncation.h"
+#include "image_io.h"
+#include "scene_io.h"
+#include "tradeoff.h"
+#include "tradeoff/plots.h"
+#include "tradeoff/report.h"
+#include "tradeoff/results_csv.h"
+
+namespace fs = std::filesystem;
+using namespace whitted;
+using json = nlohmann::json;
+
+namespace {
+
+constexpr int kExitOk = 0, kExitFailure = 1, kExitBadInput = 2;
+
+std::atomic<bool> interrupted{false};
+extern "C" void onInterrupt(int) {
+    interrupted = true;
+}
+
+// "0-8" or "0,2,5".
+std::vector<int> parseIntList(const std::string& text) {
+    std::vector<int> out;
+    std::stringstream in(text);
+    for (std::string item; std::getline(in, item, ',');) {
+        const auto dash = item.find('-', 1);
+        if (dash == std::string::npos) {
+            out.push_back(std::stoi(item));
+        } else {
+            for (int v = std::stoi(item.substr(0, dash)); v <= std::stoi(item.substr(dash + 1));
+                 ++v)
+                out.push_back(v);
+        }
+    }
+    if (out.empty()) throw std::invalid_argument("empty list");
+    return out;
+}
+
+void writeText(const fs::path& file, const std::string& text) {
+    replaceFileAtomically(file, [&](const fs::path& temp) { writeAllBytes(temp, text); });
+}
+
+void writePng(const QImage& image, const fs::path& file) {
+    if (!image.save(QString::fromStdString(file.string()), "PNG"))
+        throw std::runtime_error(file.string() + ": cannot write image");
+}
+
+// A line per point; on a terminal, one line redrawn in place with an ETA.
+class Progress {
+  public:
+    Progress() : tty_(::isatty(STDERR_FILENO)), start_(std::chrono::steady_clock::now()) {}
+    void point(const TradeoffProgress& p) {
+        const TradeoffPoint& last = *p.last;
+        const double elapsed =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+        const double eta = elapsed / p.done * (p.total - p.done);
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "[%3d/%3d] ETA %4.0f s | %3d spp, depth %d, %-6s x%.2g: %8.2f ms, %5.1f dB",
+                      p.done, p.total, eta, last.settings.samplesPerPixel, last.settings.maxDepth,
+                      std::string(precisionName(last.settings.precision)).c_str(),
+                      last.settings.resolutionScale, last.seconds * 1000, last.error.psnrSrgb8);
+        if (tty_) {
+            const int width = 28;
+            const int filled = p.total ? width * p.done / p.total : width;
+            std::fprintf(stderr, "\r[%s%s] %s", std::string(filled, '#').c_str(),
+                         std::string(width - filled, ' ').c_str(), text);
+            if (p.done == p.total) std::fprintf(stderr, "\n");
+        } else {
+            std::fprintf(stderr, "%s\n", text);
+        }
+    }
+
+  private:
+    bool tty_;
+    std::chrono::steady_clock::time_point start_;
+};
+
+json summaryJson(const tradeoff::SceneSummary& s) {
+    json curve = json::array();
+    for (const ProgressiveSample& c : s.curve)
+        curve.push_back(
+            {{"pass", c.pass},
+             {"samples", c.samples},
+             {"seconds", c.seconds},
+             {"rmse_srgb8", c.error.rmseSrgb8},
+             {"psnr_srgb8", std::isfinite(c.error.psnrSrgb8) ? c.error.psnrSrgb8 : 999.0},
+             {"psnr_linear", std::isfinite(c.error.psnrLinear) ? c.error.psnrLinear : 999.0}});
+    return {{"name", s.name},
+            {"reference", json::parse(sceneToJson(s.reference))},
+            {"reference_seconds", s.referenceSeconds},
+            {"scene_depth", s.sceneDepth},
+            {"truncation", s.truncation},
+            {"depth_within_tolerance", s.depthWithinTolerance},
+            {"progressive", curve}};
+}
+
+tradeoff::SceneSummary readSummary(const fs::path& dir) {
+    std::ifstream in(dir / "summary.json");
+    if (!in) throw std::runtime_error((dir / "summary.json").string() + ": cannot open file");
+    const json j = json::parse(in);
+    tradeoff::SceneSummary s;
+    s.name = j.at("name").get<std::string>();
+    s.reference = parseScene(j.at("reference").dump(), (dir / "summary.json").string());
+    s.referenceSeconds = j.at("reference_seconds").get<double>();
+    s.sceneDepth = j.at("scene_depth").get<int>();
+    s.truncation = j.at("truncation").get<float>();
+    s.depthWithinTolerance = j.at("depth_within_tolerance").get<int>();
+    for (const json& c : j.at("progressive")) {
+        ProgressiveSample p;
+        p.pass = c.at("pass");
+        p.samples = c.at("samples");
+        p.seconds = c.at("seconds");
+        p.error.rmseSrgb8 = c.at("rmse_srgb8");
+        p.error.psnrSrgb8 = c.at("psnr_srgb8");
+        p.error.psnrLinear = c.at("psnr_linear");
+        s.curve.push_back(p);
+    }
+    s.points = tradeoff::readPointsCsv(dir / "points.csv");
+    return s;
+}
+
+int writeReport(const std::string& output, const std::vector<std::string>& dirs,
+                const std::string& command) {
+    std::vector<tradeoff::SceneSummary> scenes;
+    const fs::path base = fs::absolute(output).parent_path();
+    for (const std::string& d : dirs) {
+        tradeoff::SceneSummary s = readSummary(d);
+        s.directory = fs::relative(fs::absolute(d), base).generic_string();
+        scenes.push_back(std::move(s));
+    }
+    writeText(output, tradeoff::report(scenes, command));
+    for (const tradeoff::PresetChoice& p : tradeoff::choosePresets(scenes))
+        std::cout << p.name << ": " << p.samplesPerPixel << " spp, depth " << p.maxDepth << ", "
+                  << precisionName(p.precision) << "\n";
+    return kExitOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"Measures the speed/accuracy trade of a scene (docs/tradeoff.md)."};
+    std::string scenePath, outDir, samples = "1,2,4,8,16,32,64,128,256", depths = "0-8",
+                                   precisions = "float,double", scales = "0.25,0.5,1", report;
+    int referenceSpp = 256, progressiveSpp = 256, maxSize = 0, minRuns = 3;
+    double minSeconds = 0.2;
+    bool quick = false;
+    std::vector<std::string> reportDirs;
+    app.add_option("scene", scenePath, "Scene file (JSON, whitted-scene v1)");
+    app.add_option("--out-dir", outDir, "Where to write (default docs/tradeoff/<scene name>)");
+    app.add_option("--samples", samples, "Samples per pixel, e.g. 1,2,4,8");
+    app.add_option("--depths", depths, "Max depths, e.g. 0-8 or 0,2,5");
+    app.add_option("--precisions", precisions, "float,double or one of them");
+    app.add_option("--scales", scales, "Resolution scales, e.g. 0.25,0.5,1");
+    app.add_option("--reference-spp", referenceSpp, "Samples per pixel of the reference")
+        ->check(CLI::Range(1, kMaxSamplesPerPixel));
+    app.add_option("--progressive-spp", progressiveSpp, "Samples of the progressive curve")
+        ->check(CLI::Range(1, kMaxSamplesPerPixel));
+    app.add_option("--max-size", maxSize, "Render at most this many pixels on the long side")
+        ->check(CLI::Range(1, kMaxImageSize));
+    app.add_option("--runs", minRuns, "Runs per point, at least")->check(CLI::Range(1, 99));
+    app.add_option("--min-seconds", minSeconds, "Run a point until it has taken this long")
+        ->check(CLI::Range(0.0, 60.0));
+    app.add_flag("--quick", quick,
+                 "A small grid (tests): 1,4 spp; depths 0,2; scales 0.5,1; one run");
+    app.add_option("--report", report, "Write the report from earlier runs' directories");
+    app.add_option("--dirs", reportDirs, "With --report: the result directories");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e) == 0 ? kExitOk : kExitBadInput;
+    }
+
+    std::signal(SIGINT, onInterrupt);
+    try {
+        if (!report.empty()) {
+            if (reportDirs.empty()) {
+                std::cerr << "whitted-tradeoff: --report needs --dirs\n";
+                return kExitBadInput;
+            }
+            std::string command;
+            for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
+            return writeReport(report, reportDirs, command);
+        }
+        if (scenePath.empty()) {
+            std::cerr << "whitted-tradeoff: a scene file is required\n";
+            return kExitBadInput;
+        }
+        Scene scene;
+        try {
+            scene = loadScene(scenePath);
+        } catch (const SceneError& e) {
+            std::cerr << "whitted-tradeoff: " << e.what() << "\n";
+            return kExitBadInput;
+        }
+        TradeoffGrid grid;
+        try {
+            grid.samples = parseIntList(samples);
+            grid.depths = parseIntList(depths);
+            grid.precisions.clear();
+            std::stringstream p(precisions);
+            for (std::string name; std::getline(p, name, ',');) {
+                const auto precision = parsePrecision(name);
+                if (!precision) throw std::invalid_argument("precision " + name);
+                grid.precisions.push_back(*precision);
+            }
+            grid.scales.clear();
+            std::stringstream sc(scales);
+            for (std::string v; std::getline(sc, v, ',');) grid.scales.push_back(std::stod(v));
+        } catch (const std::exception& e) {
+            std::cerr << "whitted-tradeoff: bad grid flag: " << e.what() << "\n";
+            return kExitBadInput;
+        }
+        grid.minRuns = minRuns;
+        grid.minSeconds = minSeconds;
+        if (quick) {
+            grid.samples = {1, 4};
+            grid.depths = {0, 2};
+            grid.scales = {0.5, 1.0};
+            grid.minRuns = grid.maxRuns = 1;
+            referenceSpp = std::min(referenceSpp, 16);
+            progressiveSpp = std::min(progressiveSpp, 4);
+        }
+        for (int d : grid.depths)
+            if (d < 0 || d > kMaxDepth) {
+                std::cerr << "whitted-tradeoff: --depths: " << d << " is outside [0, 64]\n";
+                return kExitBadInput;
+            }
+        for (double s : grid.scales)
+            if (!(s > 0 && s <= 1)) {
+                std::cerr << "whitted-tradeoff: --scales: " << s << " is outside (0, 1]\n";
+                return kExitBadInput;
+            }
+        if (maxSize > 0) {
+            const int longest = std::max(scene.render.width, scene.render.height);
+            if (longest > maxSize) {
+                scene.render.width = std::max(1, scene.render.width * maxSize / longest);
+                scene.render.height = std::max(1, scene.render.height * maxSize / longest);
+            }
+        }
+        const std::string name = fs::path(scenePath).stem().string();
+        const fs::path dir = outDir.empty() ? fs::path("docs/tradeoff") / name : fs::path(outDir);
+        fs::create_directories(dir);
+
+        // Plots are painted with Qt; no display needed.
+        if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+        QGuiApplication qt(argc, argv);
+        const auto stop = [] { return interrupted.load(); };
+
+        std::cerr << "whitted-tradeoff: " << name << " at " << scene.render.width << "x"
+                  << scene.render.height << ": reference (double, " << referenceSpp << " spp)...\n";
+        tradeoff::SceneSummary summary;
+        summary.name = name;
+        const ReferenceRender ref = renderReference(scene, referenceSpp, stop);
+        if (interrupted) return kExitFailure;
+        summary.reference = ref.scene;
+        summary.referenceSeconds = ref.seconds;
+        summary.sceneDepth = scene.render.maxDepth;
+        summary.depthWithinTolerance = depthWithinTolerance(scene);
+        const Image truncation = depthTruncationMap(scene);
+        summary.truncation = largestTruncation(truncation);
+
+        Progress progress;
+        summary.points = runTradeoff(
+            scene, ref.image, grid, [&](const TradeoffProgress& p) { progress.point(p); }, stop);
+        Scene progressiveScene = scene;
+        progressiveScene.render.samplesPerPixel = progressiveSpp;
+        if (!interrupted) summary.curve = progressiveCurve(progressiveScene, ref.image, stop);
+
+        const ImageMetadata meta =
+            makeImageMetadata(ref.scene.render, ref.seconds, "whitted-tradeoff");
+        writeImage(ref.image, dir / "reference.png", meta);
+        writeImage(truncation, dir / "truncation.png", meta);
+        writeText(dir / "points.csv", tradeoff::pointsCsv(summary.points));
+        writeText(dir / "table.md",
+                  "# " + name + ": every point\n\n" + tradeoff::pointsTable(summary.points));
+        writePng(
+            ui::renderPlot(tradeoff::tradeoffPlot(QString::fromStdString(name), summary.points),
+                           QSize(900, 600)),
+            dir / "plot.png");
+        if (!summary.curve.empty())
+            writePng(ui::renderPlot(
+                         tradeoff::progressivePlot(QString::fromStdString(name), summary.curve),
+                         QSize(700, 450)),
+                     dir / "progressive.png");
+        summary.directory = ".";
+        writeText(dir / "summary.md", tradeoff::sceneSection(summary));
+        writeText(dir / "summary.json", summaryJson(summary).dump(2) + "\n");
+        std::cerr << "whitted-tradeoff: " << summary.points.size() << " points written to "
+                  << dir.string() << (interrupted ? " (interrupted)" : "") << "\n";
+        return interrupted ? kExitFailure : kExitOk;
+    } catch (const std::exception& e) {
+        std::cerr << "whitted-tradeoff: " << e.what() << "\n";
+        return kExitFailure;
+    }
+}

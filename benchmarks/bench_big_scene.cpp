@@ -1,0 +1,109 @@
+// The editor with a scene of 100,000 spheres (issue 6): how long the file
+// takes to load and to open, how long an edit takes, what undo costs in
+// memory, and when the first frames arrive. Prints its figures; not a test.
+//   build/bin/bench_big_scene [SPHERES]   (default 100000)
+#include <sys/resource.h>
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QTemporaryDir>
+
+#include <algorithm>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include "main_window.h"
+#include "scene_io.h"
+
+namespace {
+
+using whitted::Scene;
+
+long maxRssKb() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss;
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+// The seed's materials, light, camera and floor with `count` small balls
+// scattered in front of the camera (fixed seed: every run the same file).
+Scene bigScene(int count) {
+    Scene s = whitted::loadScene(WHITTED_SCENES_DIR "/seed.json");
+    const whitted::Sphere floor = s.spheres.back();
+    s.spheres.clear();
+    std::mt19937 rng(1);
+    std::uniform_real_distribution<double> x(-50, 50), y(0, 5), z(2, 100), r(0.05, 0.3);
+    const char* materials[] = {"blue", "purple", "white"};
+    for (int i = 0; i < count; ++i)
+        s.spheres.push_back(
+            {"ball " + std::to_string(i), {x(rng), y(rng), z(rng)}, r(rng), materials[i % 3]});
+    s.spheres.push_back(floor);
+    return s;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    QApplication app(argc, argv);
+    const int count = argc > 1 ? std::atoi(argv[1]) : 100000;
+    QTemporaryDir dir;
+    const QString file = dir.filePath("big.json");
+    whitted::saveScene(bigScene(count), file.toStdString());
+    std::printf("scene: %d spheres, %.1f MB\n", count + 1,
+                double(QFileInfo(file).size()) / (1 << 20));
+
+    QElapsedTimer t;
+    t.start();
+    const Scene loaded = whitted::loadScene(file.toStdString());
+    std::printf("loadScene:            %7.0f ms\n", double(t.nsecsElapsed()) / 1e6);
+
+    whitted::ui::MainWindow window;
+    window.show();
+    QElapsedTimer first;
+    double preview = -1, fullPass = -1;
+    QObject::connect(&window, &whitted::ui::MainWindow::frameShown,
+                     [&](const whitted::ui::RenderFrame& f) {
+                         const double ms = double(first.nsecsElapsed()) / 1e6;
+                         if (f.preview && preview < 0) preview = ms;
+                         if (!f.preview && f.passComplete && fullPass < 0) fullPass = ms;
+                     });
+    t.restart();
+    first.start();
+    if (!window.openFile(file)) return 1;
+    std::printf("MainWindow::openFile: %7.0f ms\n", double(t.nsecsElapsed()) / 1e6);
+
+    // The event loop while the worker renders: the longest single turn.
+    double worstTurn = 0;
+    QElapsedTimer spell;
+    spell.start();
+    while (spell.elapsed() < 3000 && preview < 0) {
+        t.restart();
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+        worstTurn = std::max(worstTurn, double(t.nsecsElapsed()) / 1e6);
+    }
+    std::printf("first preview frame:  %7.0f ms after opening (%s)\n", preview,
+                preview < 0 ? "not within 3 s" : "shown");
+    std::printf("longest event-loop turn while rendering: %.0f ms\n", worstTurn);
+
+    const long rssBefore = maxRssKb();
+    std::vector<double> edits;
+    for (int i = 0; i < 200; ++i) {
+        t.restart();
+        window.document()->edit("radius", [i](Scene& s) { s.spheres[i].radius = 0.2; });
+        edits.push_back(double(t.nsecsElapsed()) / 1e6);
+        QCoreApplication::processEvents();
+    }
+    std::printf("edit (copy, validate, undo delta): median %.0f ms, slowest %.0f ms over 200\n",
+                median(edits), *std::max_element(edits.begin(), edits.end()));
+    std::printf("peak memory: %.0f MB before the edits, %.0f MB after 200 (undo keeps deltas)\n",
+                rssBefore / 1024.0, maxRssKb() / 1024.0);
+    return 0;
+}

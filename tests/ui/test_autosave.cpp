@@ -1,0 +1,167 @@
+// Crash recovery (issue 6): edits are copied to a recovery file after each
+// burst, the copy goes away when the scene is saved or the editor exits
+// normally, and after the editor is killed with SIGKILL the next start offers
+// the copy back.
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QMessageBox>
+#include <QProcess>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTest>
+#include <QUndoStack>
+
+#include <filesystem>
+
+#include "autosave.h"
+#include "main_window.h"
+#include "scene_io.h"
+#include "test_support.h"
+
+namespace whitted::ui {
+namespace {
+
+namespace fs = std::filesystem;
+
+class AutosaveTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        recoveryDir = QString::fromStdString((dir / "recovery").string());
+        qputenv("WHITTED_RECOVERY_DIR", recoveryDir.toLocal8Bit());
+        Scene seed = loadScene(WHITTED_SCENES_DIR "/seed.json");
+        seed.render.width = 64;
+        seed.render.height = 48;
+        scenePath = QString::fromStdString((dir / "seed.json").string());
+        saveScene(seed, scenePath.toStdString());
+        original = seed;
+    }
+    void TearDown() override { qunsetenv("WHITTED_RECOVERY_DIR"); }
+
+    std::vector<std::string> recoveryFiles() const {
+        std::vector<std::string> names;
+        for (const auto& e : fs::directory_iterator(recoveryDir.toStdString()))
+            names.push_back(e.path().filename().string());
+        std::sort(names.begin(), names.end());
+        return names;
+    }
+
+    test::TempDir dir;
+    QString recoveryDir, scenePath;
+    Scene original;
+};
+
+TEST_F(AutosaveTest, BurstOfEdits_OneCopyOfTheLastScene_GoneWhenSaved) {
+    MainWindow window;
+    ASSERT_TRUE(window.openFile(scenePath));
+    Autosave* autosave = window.autosave();
+    autosave->setDelay(200);
+    QSignalSpy written(autosave, &Autosave::written);
+    for (int i = 1; i <= 5; ++i)
+        window.document()->edit("edit", [i](Scene& s) { s.spheres[0].radius = 0.1 * i; });
+    ASSERT_TRUE(written.wait(5000));
+    QTest::qWait(400);
+    EXPECT_EQ(written.count(), 1) << "one copy per burst";
+    EXPECT_EQ(written.first().first().toString(), QString());
+    const Scene copy = loadScene((autosave->slotPath() + ".json").toStdString());
+    EXPECT_EQ(copy, window.document()->scene());
+    EXPECT_EQ(copy.spheres[0].radius, 0.5);
+    // The copy belongs to a running editor: nobody offers it.
+    EXPECT_TRUE(Autosave::orphans(recoveryDir).empty());
+
+    QString error;
+    ASSERT_TRUE(window.document()->save(scenePath, &error)) << error.toStdString();
+    EXPECT_FALSE(fs::exists((autosave->slotPath() + ".json").toStdString()));
+}
+
+TEST_F(AutosaveTest, UndoBackToTheFile_RemovesTheCopy) {
+    MainWindow window;
+    ASSERT_TRUE(window.openFile(scenePath));
+    window.autosave()->setDelay(50);
+    QSignalSpy written(window.autosave(), &Autosave::written);
+    window.document()->edit("edit", [](Scene& s) { s.spheres[0].radius = 0.25; });
+    ASSERT_TRUE(written.wait(5000));
+    const std::string copy = (window.autosave()->slotPath() + ".json").toStdString();
+    EXPECT_TRUE(fs::exists(copy));
+    window.document()->undoStack()->undo();
+    EXPECT_FALSE(fs::exists(copy));
+}
+
+TEST_F(AutosaveTest, NormalExit_LeavesNothingBehind) {
+    {
+        MainWindow window;
+        ASSERT_TRUE(window.openFile(scenePath));
+        window.autosave()->setDelay(50);
+        QSignalSpy written(window.autosave(), &Autosave::written);
+        window.document()->edit("edit", [](Scene& s) { s.spheres[0].radius = 0.25; });
+        ASSERT_TRUE(written.wait(5000));
+    }
+    EXPECT_TRUE(recoveryFiles().empty()) << test::joined(recoveryFiles());
+}
+
+// The real editor in a child process, killed with SIGKILL after its copy is
+// written; the next editor offers the copy, restores it on top of the file
+// (unsaved; undo shows the file) and removes it.
+TEST_F(AutosaveTest, KilledEditor_NextStartOffersAndRestoresTheEdits) {
+    QProcess child;
+    child.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+    child.start(QStringLiteral(WHITTED_CRASH_CHILD_EXE), {scenePath, QStringLiteral("0.777")});
+    ASSERT_TRUE(child.waitForStarted(10000));
+    ASSERT_TRUE(child.waitForReadyRead(30000)) << "the child never wrote its copy";
+    ASSERT_EQ(child.readLine().trimmed(), QByteArray("ready"));
+    child.kill();  // SIGKILL
+    ASSERT_TRUE(child.waitForFinished(10000));
+    EXPECT_EQ(child.exitStatus(), QProcess::CrashExit);
+
+    MainWindow window;
+    window.show();
+    ASSERT_EQ(window.offerRecovery(), 1);
+    auto* box = window.findChild<QMessageBox*>("recoveryOffer");
+    ASSERT_NE(box, nullptr);
+    EXPECT_TRUE(box->text().contains("seed.json")) << box->text().toStdString();
+    auto* restore = box->findChild<QPushButton*>("restoreButton");
+    ASSERT_NE(restore, nullptr);
+    restore->click();
+
+    SceneDocument* doc = window.document();
+    EXPECT_EQ(doc->scene().spheres[0].radius, 0.777);
+    EXPECT_EQ(doc->filePath(), scenePath);
+    EXPECT_TRUE(doc->isModified());
+    doc->undoStack()->undo();
+    EXPECT_EQ(doc->scene(), original);
+    EXPECT_TRUE(Autosave::orphans(recoveryDir).empty());
+    QTest::qWait(50);  // the next offer is queued: there is none
+    EXPECT_EQ(window.findChild<QMessageBox*>("recoveryOffer"), nullptr);
+}
+
+TEST_F(AutosaveTest, KilledEditor_DiscardKeepsTheSceneAndRemovesTheCopy) {
+    QProcess child;
+    child.start(QStringLiteral(WHITTED_CRASH_CHILD_EXE), {scenePath, QStringLiteral("0.333")});
+    ASSERT_TRUE(child.waitForReadyRead(30000));
+    child.kill();
+    ASSERT_TRUE(child.waitForFinished(10000));
+
+    MainWindow window;
+    ASSERT_TRUE(window.openFile(scenePath));
+    ASSERT_EQ(window.offerRecovery(), 1);
+    auto* box = window.findChild<QMessageBox*>("recoveryOffer");
+    ASSERT_NE(box, nullptr);
+    box->findChild<QPushButton*>("discardButton")->click();
+    EXPECT_EQ(window.document()->scene(), original);
+    EXPECT_FALSE(window.document()->isModified());
+    EXPECT_TRUE(Autosave::orphans(recoveryDir).empty());
+}
+
+}  // namespace
+}  // namespace whitted::ui
+
+int main(int argc, char** argv) {
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    QStandardPaths::setTestModeEnabled(true);
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName("WhittedTests");
+    QApplication::setApplicationName("test_autosave");
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}

@@ -1,8 +1,9 @@
 // The editor's main window: the render view in the middle, the scene lists on
-// the left, properties, camera and render settings on the right, and the File,
-// Edit and View menus. It owns the document and the render worker and wires
-// them together: every scene change restarts the render, every frame that is
-// not stale reaches the view and the status bar.
+// the left, properties, camera and render settings on the right, the Float vs
+// Double and Trade-off docks, and the File, Edit, Render and View menus. It
+// owns the document and the render worker and wires them together: every
+// scene change restarts the render, every frame that is not stale reaches the
+// view, the status bar and the Trade-off dock.
 #pragma once
 
 #include <QLabel>
@@ -15,6 +16,7 @@
 #include "scene_document.h"
 #include "tradeoff_record.h"
 
+class QDockWidget;
 class QMenu;
 class QProgressDialog;
 
@@ -25,6 +27,7 @@ class ScenePanel;
 class PrecisionView;
 class Autosave;
 struct Recovery;
+class TradeoffView;
 class FloatRangeWarning;
 class PropertyPanel;
 class ExportJob;
@@ -47,6 +50,7 @@ class MainWindow : public QMainWindow {
     ScenePanel* scenePanel() { return scenePanel_; }
     PropertyPanel* propertyPanel() { return propertyPanel_; }
     PrecisionView* precisionView() { return precisionView_; }
+    TradeoffView* tradeoffView() { return tradeoffView_; }
     TradeoffRecord* tradeoffRecord() { return &record_; }
     FloatRangeWarning* floatRangeWarning() { return floatRangeWarning_; }
     QString lastError() const { return lastError_; }  // the last message shown to the user
@@ -74,6 +78,10 @@ class MainWindow : public QMainWindow {
   private:
     void buildMenus();
     void buildDocks();
+    void buildTradeoffDock();
+    // Shown under the settings, a dock squeezed small gets half of the column.
+    void giveHalfOfColumn(QDockWidget* settingsDock, QDockWidget* dock);
+    void sceneReplaced();
     void newScene();
     void openDialog();
     bool save();
@@ -96,6 +104,7 @@ class MainWindow : public QMainWindow {
     ScenePanel* scenePanel_ = nullptr;
     PropertyPanel* propertyPanel_ = nullptr;
     PrecisionView* precisionView_ = nullptr;
+    TradeoffView* tradeoffView_ = nullptr;
     FloatRangeWarning* floatRangeWarning_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QLabel* passLabel_ = nullptr;

@@ -99,13 +99,15 @@ void PresetControls::choose(int index) {
         refresh();
         return;
     }
-    const RenderPreset& preset = kRenderPresets[std::size_t(index - 1)];
     QString error;
-    if (!doc_->edit(
-            tr("Apply %1 preset").arg(presetName(preset)),
-            [&](Scene& s) { applyPreset(preset, s.render); }, &error))
-        showRefusal(combo_, error);
+    if (!apply(doc_, kRenderPresets[std::size_t(index - 1)], &error)) showRefusal(combo_, error);
     refresh();
+}
+
+bool PresetControls::apply(SceneDocument* doc, const RenderPreset& preset, QString* error) {
+    return doc->edit(
+        tr("Apply %1 preset").arg(presetName(preset)),
+        [&](Scene& s) { applyPreset(preset, s.render); }, error);
 }
 
 void PresetControls::refresh() {

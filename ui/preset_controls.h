@@ -9,6 +9,7 @@
 
 #include <QObject>
 
+#include "render_presets.h"
 #include "scene.h"
 
 class QComboBox;
@@ -27,6 +28,9 @@ class PresetControls : public QObject {
     // Inserts its rows at the top of `form`; lives as long as the form's widget.
     PresetControls(SceneDocument* doc, TradeoffRecord* record, QFormLayout* form);
 
+    // Sets the preset's samples, depth and precision as one undoable edit
+    // (what choosing it does); false with the reason if the edit is refused.
+    static bool apply(SceneDocument* doc, const RenderPreset& preset, QString* error = nullptr);
     // Index into kRenderPresets of the preset `settings` match, or -1.
     static int matchingPreset(const RenderSettings& settings);
     // "1.2 s" and "RMSE 2.3 of 255, PSNR 41 dB" with their sources, as the labels show them.

@@ -121,6 +121,7 @@ TradeoffView::TradeoffView(SceneDocument* doc, TradeoffRecord* record, QWidget* 
     split_->setChildrenCollapsible(false);
     split_->addWidget(plotBox);
     split_->addWidget(tabs_);
+    connect(split_, &QSplitter::splitterMoved, this, [this] { splitMoved_ = true; });
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(buttons);
     layout->addWidget(pinStatus_);
@@ -158,9 +159,10 @@ TradeoffView::~TradeoffView() {
 void TradeoffView::resizeEvent(QResizeEvent* e) {
     QWidget::resizeEvent(e);
     // Under the render view the dock is wide: plot and table side by side;
-    // in a side column, one above the other.
+    // in a side column, one above the other. The plot gets most of the room
+    // until the user moves the divider.
     const auto orientation = width() > height() * 3 / 2 ? Qt::Horizontal : Qt::Vertical;
-    if (split_->orientation() == orientation) return;
+    if (split_->orientation() == orientation && splitMoved_) return;
     split_->setOrientation(orientation);
     const int length = orientation == Qt::Horizontal ? width() : height();
     split_->setSizes({length * 7 / 10, length - length * 7 / 10});

@@ -117,7 +117,8 @@ class TradeoffView : public QWidget {
     QLabel* measureStatus_;
     QProgressBar* progress_;
     QPushButton* cancelButton_;
-    QSplitter* split_;  // the plot and the tables
+    QSplitter* split_;         // the plot and the tables
+    bool splitMoved_ = false;  // by the user: then only a turn resets it
     PlotWidget* plot_;
     QLabel* plotNote_;
     QTabWidget* tabs_;

@@ -265,9 +265,9 @@ void TradeoffView::confirmMeasure() {
         tr("Measure renders this scene at %1 settings: %2 to %3 samples per pixel, depth %4 to "
            "%5, float and double, at %6 of %7. Each is timed and compared with a reference "
            "rendered in double at %8 samples per pixel.\n\n"
-           "The seed scene at 640 × 480 takes about a minute on two cores, a minute and a half "
-           "on a busy machine; mirrors, glass and more pixels take longer. The editor keeps "
-           "working meanwhile, and Cancel keeps the points measured so far.")
+           "The seed scene at 640 × 480 takes about a minute on two free cores, up to two "
+           "minutes on a busy machine; mirrors, glass and more pixels take longer. The editor "
+           "keeps working meanwhile, and Cancel keeps the points measured so far.")
             .arg(gridPointCount(g))
             .arg(*std::min_element(g.samples.begin(), g.samples.end()))
             .arg(*std::max_element(g.samples.begin(), g.samples.end()))

@@ -169,7 +169,7 @@ int main(int argc, char** argv) {
     CLI::App app{"Measures the speed/accuracy trade of a scene (docs/tradeoff.md)."};
     std::string scenePath, outDir, samples = "1,2,4,8,16,32,64,128,256", depths = "0-8",
                                    precisions = "float,double", scales = "0.25,0.5,1", report;
-    int referenceSpp = 256, progressiveSpp = 256, maxSize = 0, minRuns = 3;
+    int referenceSpp = 1024, progressiveSpp = 256, maxSize = 0, minRuns = 3;
     double minSeconds = 0.2;
     bool quick = false;
     std::vector<std::string> reportDirs;
@@ -205,9 +205,7 @@ int main(int argc, char** argv) {
                 std::cerr << "whitted-tradeoff: --report needs --dirs\n";
                 return kExitBadInput;
             }
-            std::string command;
-            for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
-            return writeReport(report, reportDirs, command);
+            return writeReport(report, reportDirs, "cmake --build build --target tradeoff-docs");
         }
         if (scenePath.empty()) {
             std::cerr << "whitted-tradeoff: a scene file is required\n";

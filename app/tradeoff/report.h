@@ -28,9 +28,9 @@ struct SceneSummary {
 // The scene's section of the report (also written alone as summary.md).
 std::string sceneSection(const SceneSummary& s);
 
-// A preset: the fastest scale-1 point of each scene reaching the 8-bit PSNR
-// target, then the largest samples and depth among them, float unless a scene
-// needed double.
+// A preset: the fastest scale-1 float point of each scene reaching the 8-bit
+// PSNR target (double only where no float point does), then the largest
+// samples and depth among them.
 struct PresetChoice {
     std::string name;
     double psnrTarget = 0.0;

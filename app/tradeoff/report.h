@@ -16,6 +16,8 @@ std::string pointsTable(const std::vector<TradeoffPoint>& points);
 struct SceneSummary {
     std::string name;       // the scene file's stem
     std::string directory;  // relative to the report: where plot.png etc. are
+    std::string command;    // the whitted-tradeoff command that measured it
+    std::string date;       // when, YYYY-MM-DD (UTC)
     Scene reference;        // the reference's settings
     double referenceSeconds = 0.0;
     int sceneDepth = 0;       // the scene's own max_depth

@@ -2,7 +2,8 @@
 //   whitted-tradeoff SCENE.json [--out-dir DIR] [grid flags] [--quick]
 // renders a reference, then every point of the grid, and writes into DIR
 // points.csv, table.md, plot.png (error against time, Pareto front marked),
-// progressive.png, truncation.png, reference.png, summary.md and summary.json.
+// progressive.csv, progressive.png, truncation.png, reference.png, summary.md
+// and summary.json.
 //   whitted-tradeoff --report OUT.md DIR...
 // writes docs/tradeoff.md from the summaries of earlier runs, presets included.
 // Exit codes as whitted-render: 0 success, 2 bad input, 1 any other failure.
@@ -15,9 +16,11 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include <CLI/CLI.hpp>
@@ -29,6 +32,7 @@
 #include "scene_io.h"
 #include "tradeoff.h"
 #include "tradeoff/plots.h"
+#include "tradeoff/progress.h"
 #include "tradeoff/report.h"
 #include "tradeoff/results_csv.h"
 
@@ -72,36 +76,40 @@ void writePng(const QImage& image, const fs::path& file) {
         throw std::runtime_error(file.string() + ": cannot write image");
 }
 
-// A line per point; on a terminal, one line redrawn in place with an ETA.
-class Progress {
-  public:
-    Progress() : tty_(::isatty(STDERR_FILENO)), start_(std::chrono::steady_clock::now()) {}
-    void point(const TradeoffProgress& p) {
-        const TradeoffPoint& last = *p.last;
-        const double elapsed =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-        const double eta = elapsed / p.done * (p.total - p.done);
-        char text[200];
-        std::snprintf(text, sizeof text,
-                      "[%3d/%3d] ETA %4.0f s | %3d spp, depth %d, %-6s x%.2g: %8.2f ms, %5.1f dB",
-                      p.done, p.total, eta, last.settings.samplesPerPixel, last.settings.maxDepth,
-                      std::string(precisionName(last.settings.precision)).c_str(),
-                      last.settings.resolutionScale, last.seconds * 1000, last.error.psnrSrgb8);
-        if (tty_) {
-            const int width = 28;
-            const int filled = p.total ? width * p.done / p.total : width;
-            std::fprintf(stderr, "\r[%s%s] %s", std::string(filled, '#').c_str(),
-                         std::string(width - filled, ' ').c_str(), text);
-            if (p.done == p.total) std::fprintf(stderr, "\n");
-        } else {
-            std::fprintf(stderr, "%s\n", text);
-        }
-    }
+std::string fixed(double v, int decimals) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, v);
+    return buffer;
+}
 
-  private:
-    bool tty_;
-    std::chrono::steady_clock::time_point start_;
-};
+// The command line as a reader would type it in the repository root: the
+// program as build/bin/whitted-tradeoff whatever path started it.
+std::string commandLine(int argc, char** argv) {
+    std::string command = "build/bin/whitted-tradeoff";
+    for (int i = 1; i < argc; ++i) command.append(" ").append(argv[i]);
+    return command;
+}
+
+// Today's date (UTC), for the report's "measured on".
+std::string today() {
+    const std::time_t now = std::time(nullptr);
+    char buffer[32];
+    std::strftime(buffer, sizeof buffer, "%Y-%m-%d", std::gmtime(&now));
+    return buffer;
+}
+
+std::size_t gridSize(const TradeoffGrid& g) {
+    return g.samples.size() * g.depths.size() * g.precisions.size() * g.scales.size();
+}
+
+// The truncation map scaled so that its largest weight is white: the weights
+// are products of reflectivities, often an eighth or less, and would otherwise
+// be too dark to tell from the black of pixels where nothing is cut off.
+Image normalised(Image map, float largest) {
+    if (largest > 0.0f)
+        for (float& v : map.rgb) v /= largest;
+    return map;
+}
 
 json summaryJson(const tradeoff::SceneSummary& s) {
     json curve = json::array();
@@ -114,6 +122,8 @@ json summaryJson(const tradeoff::SceneSummary& s) {
              {"psnr_srgb8", std::isfinite(c.error.psnrSrgb8) ? c.error.psnrSrgb8 : 999.0},
              {"psnr_linear", std::isfinite(c.error.psnrLinear) ? c.error.psnrLinear : 999.0}});
     return {{"name", s.name},
+            {"command", s.command},
+            {"date", s.date},
             {"reference", json::parse(sceneToJson(s.reference))},
             {"reference_seconds", s.referenceSeconds},
             {"scene_depth", s.sceneDepth},
@@ -128,6 +138,8 @@ tradeoff::SceneSummary readSummary(const fs::path& dir) {
     const json j = json::parse(in);
     tradeoff::SceneSummary s;
     s.name = j.at("name").get<std::string>();
+    s.command = j.value("command", std::string());
+    s.date = j.value("date", std::string());
     s.reference = parseScene(j.at("reference").dump(), (dir / "summary.json").string());
     s.referenceSeconds = j.at("reference_seconds").get<double>();
     s.sceneDepth = j.at("scene_depth").get<int>();
@@ -169,8 +181,13 @@ int main(int argc, char** argv) {
     CLI::App app{"Measures the speed/accuracy trade of a scene (docs/tradeoff.md)."};
     std::string scenePath, outDir, samples = "1,2,4,8,16,32,64,128,256", depths = "0-8",
                                    precisions = "float,double", scales = "0.25,0.5,1", report;
-    int referenceSpp = 1024, progressiveSpp = 256, maxSize = 0, minRuns = 3;
-    double minSeconds = 0.2;
+    // One run for slow points, up to 9 for fast ones until they have taken
+    // 0.3 s: the median tames the noise where it is largest (short renders), and
+    // a full default run of the seed at 640x480 stays under ten minutes on two
+    // cores (its 256-spp points alone take about four).
+    int referenceSpp = 0, progressiveSpp = 256, maxSize = 0, minRuns = 1;
+    std::optional<int> width, height;
+    double minSeconds = 0.3;
     bool quick = false;
     std::vector<std::string> reportDirs;
     app.add_option("scene", scenePath, "Scene file (JSON, whitted-scene v1)");
@@ -179,10 +196,15 @@ int main(int argc, char** argv) {
     app.add_option("--depths", depths, "Max depths, e.g. 0-8 or 0,2,5");
     app.add_option("--precisions", precisions, "float,double or one of them");
     app.add_option("--scales", scales, "Resolution scales, e.g. 0.25,0.5,1");
-    app.add_option("--reference-spp", referenceSpp, "Samples per pixel of the reference")
+    app.add_option("--reference-spp", referenceSpp,
+                   "Samples per pixel of the reference (default: 4 times the grid's largest)")
         ->check(CLI::Range(1, kMaxSamplesPerPixel));
     app.add_option("--progressive-spp", progressiveSpp, "Samples of the progressive curve")
         ->check(CLI::Range(1, kMaxSamplesPerPixel));
+    app.add_option("--width", width, "Image width in pixels (default: the scene's)")
+        ->check(CLI::Range(1, kMaxImageSize));
+    app.add_option("--height", height, "Image height in pixels (default: the scene's)")
+        ->check(CLI::Range(1, kMaxImageSize));
     app.add_option("--max-size", maxSize, "Render at most this many pixels on the long side")
         ->check(CLI::Range(1, kMaxImageSize));
     app.add_option("--runs", minRuns, "Runs per point, at least")->check(CLI::Range(1, 99));
@@ -205,7 +227,7 @@ int main(int argc, char** argv) {
                 std::cerr << "whitted-tradeoff: --report needs --dirs\n";
                 return kExitBadInput;
             }
-            return writeReport(report, reportDirs, "cmake --build build --target tradeoff-docs");
+            return writeReport(report, reportDirs, commandLine(argc, argv));
         }
         if (scenePath.empty()) {
             std::cerr << "whitted-tradeoff: a scene file is required\n";
@@ -243,7 +265,6 @@ int main(int argc, char** argv) {
             grid.depths = {0, 2};
             grid.scales = {0.5, 1.0};
             grid.minRuns = grid.maxRuns = 1;
-            referenceSpp = std::min(referenceSpp, 16);
             progressiveSpp = std::min(progressiveSpp, 4);
         }
         for (int d : grid.depths)
@@ -256,6 +277,16 @@ int main(int argc, char** argv) {
                 std::cerr << "whitted-tradeoff: --scales: " << s << " is outside (0, 1]\n";
                 return kExitBadInput;
             }
+        // The reference must be far less noisy than the grid's best points, or
+        // they would be measured against their own noise: 4x the samples halves it.
+        const int largestSamples = *std::max_element(grid.samples.begin(), grid.samples.end());
+        if (referenceSpp == 0) referenceSpp = std::min(kMaxSamplesPerPixel, 4 * largestSamples);
+        if (referenceSpp <= largestSamples)
+            std::cerr << "whitted-tradeoff: warning: --reference-spp " << referenceSpp
+                      << " is not above the grid's " << largestSamples
+                      << " samples; their errors will be mostly the reference's noise\n";
+        if (width) scene.render.width = *width;
+        if (height) scene.render.height = *height;
         if (maxSize > 0) {
             const int longest = std::max(scene.render.width, scene.render.height);
             if (longest > maxSize) {
@@ -276,6 +307,8 @@ int main(int argc, char** argv) {
                   << scene.render.height << ": reference (double, " << referenceSpp << " spp)...\n";
         tradeoff::SceneSummary summary;
         summary.name = name;
+        summary.command = commandLine(argc, argv);
+        summary.date = today();
         const ReferenceRender ref = renderReference(scene, referenceSpp, stop);
         if (interrupted) return kExitFailure;
         summary.reference = ref.scene;
@@ -284,8 +317,11 @@ int main(int argc, char** argv) {
         summary.depthWithinTolerance = depthWithinTolerance(scene);
         const Image truncation = depthTruncationMap(scene);
         summary.truncation = largestTruncation(truncation);
+        std::cerr << "whitted-tradeoff: reference took " << fixed(ref.seconds, 1)
+                  << " s; the grid's " << gridSize(grid) << " points will take at most about "
+                  << fixed(tradeoff::estimateGridSeconds(grid, ref) / 60, 1) << " min\n";
 
-        Progress progress;
+        tradeoff::Progress progress(grid, ::isatty(STDERR_FILENO));
         summary.points = runTradeoff(
             scene, ref.image, grid, [&](const TradeoffProgress& p) { progress.point(p); }, stop);
         Scene progressiveScene = scene;
@@ -295,8 +331,9 @@ int main(int argc, char** argv) {
         const ImageMetadata meta =
             makeImageMetadata(ref.scene.render, ref.seconds, "whitted-tradeoff");
         writeImage(ref.image, dir / "reference.png", meta);
-        writeImage(truncation, dir / "truncation.png", meta);
+        writeImage(normalised(truncation, summary.truncation), dir / "truncation.png", meta);
         writeText(dir / "points.csv", tradeoff::pointsCsv(summary.points));
+        writeText(dir / "progressive.csv", tradeoff::progressiveCsv(summary.curve));
         writeText(dir / "table.md",
                   "# " + name + ": every point\n\n" + tradeoff::pointsTable(summary.points));
         writePng(

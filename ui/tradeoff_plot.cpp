@@ -256,17 +256,25 @@ void drawLabels(QPainter& p, const PlotLayout& l, const PlotSpec& spec) {
     const QFontMetricsF fm(small);
     p.setFont(small);
     p.setPen(kText);
+    // Highlighted markers are obstacles too: a label over the front hides it.
     std::vector<QRectF> taken;
+    const double ring = spec.pointRadius * 1.3 + kRingWidth;
+    for (const PlotPoint& pt : spec.points) {
+        const QPointF c = l.map(pt.x, pt.y);
+        if (pt.highlighted && !std::isnan(c.x()) && !std::isnan(c.y()))
+            taken.emplace_back(c.x() - ring, c.y() - ring, 2 * ring, 2 * ring);
+    }
     for (const PlotPoint& pt : spec.points) {
         if (!pt.highlighted || pt.label.isEmpty()) continue;
         const QPointF c = l.map(pt.x, pt.y);
         if (std::isnan(c.x()) || std::isnan(c.y())) continue;
         const double w = fm.horizontalAdvance(pt.label), h = fm.height();
         const double gap = spec.pointRadius + kRingWidth + 2.0;
-        // Right of the point, else left of it; a label that fits neither is left out.
+        // Above right of the point, else above left, below right, below left; a
+        // label that fits none of them is left out.
         for (const QRectF& r :
              {QRectF(c.x() + gap, c.y() - h, w, h), QRectF(c.x() - gap - w, c.y() - h, w, h),
-              QRectF(c.x() + gap, c.y(), w, h)}) {
+              QRectF(c.x() + gap, c.y(), w, h), QRectF(c.x() - gap - w, c.y(), w, h)}) {
             if (!l.area.contains(r)) continue;
             if (std::any_of(taken.begin(), taken.end(),
                             [&](const QRectF& t) { return t.intersects(r); }))

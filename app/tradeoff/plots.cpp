@@ -28,10 +28,17 @@ ui::PlotSpec tradeoffPlot(const QString& sceneName, const std::vector<TradeoffPo
     spec.xLabel = QStringLiteral("render time (s, median)");
     spec.yLabel = QStringLiteral("RMSE of the 8-bit sRGB image (codes)");
     spec.logX = spec.logY = true;
+    // One series per depth measured (a grid may skip some), coloured by depth
+    // on one ramp so that neighbouring depths look alike.
     int maxDepth = 0;
-    for (const TradeoffPoint& p : points) maxDepth = std::max(maxDepth, p.settings.maxDepth);
+    std::vector<bool> measured;
+    for (const TradeoffPoint& p : points) {
+        maxDepth = std::max(maxDepth, p.settings.maxDepth);
+        measured.resize(maxDepth + 1);
+        measured[p.settings.maxDepth] = true;
+    }
     for (int d = 0; d <= maxDepth; ++d)
-        spec.series.push_back({QStringLiteral("max depth %1").arg(d),
+        spec.series.push_back({measured[d] ? QStringLiteral("max depth %1").arg(d) : QString(),
                                ui::plotRampColour(maxDepth ? double(d) / maxDepth : 0.0)});
     spec.markers = {{QStringLiteral("float"), ui::MarkerShape::Circle},
                     {QStringLiteral("double"), ui::MarkerShape::Square},
@@ -50,13 +57,20 @@ ui::PlotSpec tradeoffPlot(const QString& sceneName, const std::vector<TradeoffPo
         point.series = p.settings.maxDepth;
         point.marker = marker;
         point.highlighted = p.pareto;
-        point.label = QStringLiteral("%1 spp").arg(p.settings.samplesPerPixel);
         spec.points.push_back(point);
         if (p.pareto) front.push_back(&p);
     }
     std::sort(front.begin(), front.end(), [](const TradeoffPoint* a, const TradeoffPoint* b) {
         return a->seconds < b->seconds;
     });
+    // Along the front the samples rise in runs (other settings change between
+    // them): labelling only where they change keeps the labels apart.
+    for (std::size_t i = 0; i < front.size(); ++i) {
+        if (i > 0 && front[i]->settings.samplesPerPixel == front[i - 1]->settings.samplesPerPixel)
+            continue;
+        spec.points[front[i] - points.data()].label =
+            QStringLiteral("%1 spp").arg(front[i]->settings.samplesPerPixel);
+    }
     ui::PlotLine line;
     line.name = QStringLiteral("Pareto front");
     line.colour = Qt::black;

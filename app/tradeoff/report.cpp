@@ -46,6 +46,9 @@ std::string pointsTable(const std::vector<TradeoffPoint>& points) {
 std::string sceneSection(const SceneSummary& s) {
     std::ostringstream md;
     md << "## " << s.name << "\n\n";
+    if (!s.command.empty())
+        md << "Measured" << (s.date.empty() ? "" : " on " + s.date) << " with `" << s.command
+           << "`.\n\n";
     md << "![" << s.name << ": error against time](" << s.directory << "/plot.png)\n\n";
     md << "Reference: double, " << s.reference.render.samplesPerPixel << " samples per pixel, max "
        << "depth " << s.reference.render.maxDepth << " (two past the depth beyond which no pixel "
@@ -55,9 +58,17 @@ std::string sceneSection(const SceneSummary& s) {
        << "are compared stretched, as a viewer shows them.\n\n";
     md << "Depth truncation at the scene's own max_depth " << s.sceneDepth
        << ": the largest cut-off weight is " << fixed(s.truncation, 4)
-       << (s.truncation == 0.0f ? " (raising the depth changes nothing)" : "") << "; past depth "
-       << s.depthWithinTolerance << " it stays below 1/1024 everywhere. "
-       << "[Map](" << s.directory << "/truncation.png) (white: weight 1).\n\n";
+       << (s.truncation == 0.0f ? " (raising the depth changes nothing)" : "") << "; ";
+    if (s.depthWithinTolerance >= kMaxDepth)
+        md << "it stays above 1/1024 somewhere up to max_depth " << kMaxDepth
+           << " (rays trapped in glass keep their weight). ";
+    else
+        md << "from max_depth " << s.depthWithinTolerance
+           << " on it is below 1/1024 everywhere, so deeper renders change nothing visible. ";
+    md << "The reference and the truncation map (black: nothing cut off; white: the largest "
+          "weight):\n\n| reference | truncation at max_depth "
+       << s.sceneDepth << " |\n|---|---|\n| ![reference](" << s.directory
+       << "/reference.png) | ![truncation map](" << s.directory << "/truncation.png) |\n\n";
     md << "The Pareto front (no other point is both faster and more accurate); every point is "
        << "in [table.md](" << s.directory << "/table.md) and [points.csv](" << s.directory
        << "/points.csv).\n\n";
@@ -90,15 +101,21 @@ std::vector<PresetChoice> choosePresets(const std::vector<SceneSummary>& scenes)
                                          {"Final", 45.0, 1, 0, Precision::Float, {}}};
     for (PresetChoice& preset : presets)
         for (const SceneSummary& s : scenes) {
+            // Float where it reaches the target: float and double give nearly
+            // the same images (docs/numerics.md), so a double point that is
+            // "fastest" won by timing noise must not make the preset double.
             const TradeoffPoint* fastest = nullptr;
+            const TradeoffPoint* fastestDouble = nullptr;
             const TradeoffPoint* best = nullptr;
             for (const TradeoffPoint& p : s.points) {
                 if (p.settings.resolutionScale != 1.0) continue;
                 if (!best || p.error.psnrSrgb8 > best->error.psnrSrgb8) best = &p;
-                if (p.error.psnrSrgb8 >= preset.psnrTarget &&
-                    (!fastest || p.seconds < fastest->seconds))
-                    fastest = &p;
+                if (p.error.psnrSrgb8 < preset.psnrTarget) continue;
+                const TradeoffPoint*& slot =
+                    p.settings.precision == Precision::Float ? fastest : fastestDouble;
+                if (!slot || p.seconds < slot->seconds) slot = &p;
             }
+            if (!fastest) fastest = fastestDouble;
             if (!fastest) {
                 preset.notReached.push_back(s.name);
                 fastest = best;
@@ -117,8 +134,17 @@ std::string report(const std::vector<SceneSummary>& scenes, const std::string& c
     std::ostringstream md;
     md << "# The speed/accuracy trade, measured\n\n";
     md << "<!-- Generated file: do not edit. -->\n";
-    md << "> **Generated** by `whitted-tradeoff` (app/tradeoff/). Regenerate with `" << command
-       << "`.\n> Machine: the project's shared 2-core VM; times drift 10 to 30 % between runs, so "
+    std::vector<std::string> dates;
+    for (const SceneSummary& s : scenes)
+        if (!s.date.empty() && std::find(dates.begin(), dates.end(), s.date) == dates.end())
+            dates.push_back(s.date);
+    std::string when;
+    for (const std::string& d : dates) when += (when.empty() ? "" : ", ") + d;
+    md << "> **Generated** by `whitted-tradeoff` (app/tradeoff/); do not edit by hand. "
+          "Regenerate everything with `cmake --build build --target tradeoff-docs`: it measures "
+          "each scene with the command given in its section, then writes this page with `"
+       << command << "`." << (when.empty() ? "" : " Measured on " + when + " (UTC).")
+       << "\n> Machine: the project's shared 2-core VM; times drift 10 to 30 % between runs, so "
           "compare points of one scene (one run), not absolute times across scenes.\n\n";
     md << "Each scene is rendered over a grid of samples per pixel, max_depth, precision and "
           "resolution scale; every point's time is the median of its runs, and its error is "
@@ -128,10 +154,10 @@ std::string report(const std::vector<SceneSummary>& scenes, const std::string& c
           "the largest difference is in 8-bit steps.\n\n";
     const std::vector<PresetChoice> presets = choosePresets(scenes);
     md << "## Presets\n\n";
-    md << "Chosen from the fronts below: for each preset, on every scene, the fastest point at "
-          "full size whose 8-bit PSNR reaches the target; the preset takes the largest samples "
-          "and depth among those points, and double only if some scene needed it. Full size "
-          "only, because a preset cannot change the scene's output size.\n\n";
+    md << "Chosen from the measurements below: for each preset, on every scene, the fastest "
+          "full-size float point whose 8-bit PSNR reaches the target (a double point only where "
+          "no float point does); the preset takes the largest samples and depth among those "
+          "points. Full size only, because a preset cannot change the scene's output size.\n\n";
     md << "| preset | target (8-bit PSNR) | samples per pixel | max depth | precision | "
           "not reached on |\n|---|---|---|---|---|---|\n";
     for (const PresetChoice& p : presets) {

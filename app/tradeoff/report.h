@@ -16,6 +16,8 @@ std::string pointsTable(const std::vector<TradeoffPoint>& points);
 struct SceneSummary {
     std::string name;       // the scene file's stem
     std::string directory;  // relative to the report: where plot.png etc. are
+    std::string command;    // the whitted-tradeoff command that measured it
+    std::string date;       // when, YYYY-MM-DD (UTC)
     Scene reference;        // the reference's settings
     double referenceSeconds = 0.0;
     int sceneDepth = 0;       // the scene's own max_depth
@@ -28,9 +30,9 @@ struct SceneSummary {
 // The scene's section of the report (also written alone as summary.md).
 std::string sceneSection(const SceneSummary& s);
 
-// A preset: the fastest scale-1 point of each scene reaching the 8-bit PSNR
-// target, then the largest samples and depth among them, float unless a scene
-// needed double.
+// A preset: the fastest scale-1 float point of each scene reaching the 8-bit
+// PSNR target (double only where no float point does), then the largest
+// samples and depth among them.
 struct PresetChoice {
     std::string name;
     double psnrTarget = 0.0;

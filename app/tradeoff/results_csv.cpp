@@ -29,6 +29,17 @@ std::string pointsCsv(const std::vector<TradeoffPoint>& points) {
     return out.str();
 }
 
+std::string progressiveCsv(const std::vector<ProgressiveSample>& curve) {
+    std::ostringstream out;
+    out.precision(9);
+    out << "pass,samples,seconds,rmse_linear,psnr_linear,rmse_srgb8,psnr_srgb8,largest\n";
+    for (const ProgressiveSample& c : curve)
+        out << c.pass << ',' << c.samples << ',' << c.seconds << ',' << c.error.rmseLinear << ','
+            << c.error.psnrLinear << ',' << c.error.rmseSrgb8 << ',' << c.error.psnrSrgb8 << ','
+            << c.error.largest << "\n";
+    return out.str();
+}
+
 std::vector<TradeoffPoint> readPointsCsv(const std::filesystem::path& file) {
     std::ifstream in(file);
     if (!in) throw std::runtime_error(file.string() + ": cannot open file");

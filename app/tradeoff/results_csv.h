@@ -12,6 +12,9 @@ namespace whitted::tradeoff {
 
 std::string pointsCsv(const std::vector<TradeoffPoint>& points);
 
+// The progressive curve: one line per pass.
+std::string progressiveCsv(const std::vector<ProgressiveSample>& curve);
+
 // The points of a CSV written by pointsCsv(). Throws std::runtime_error naming
 // the file and line on a malformed row.
 std::vector<TradeoffPoint> readPointsCsv(const std::filesystem::path& file);

@@ -60,8 +60,9 @@ TEST(WhittedTradeoff, QuickRun_WritesEveryFileWithOneRowPerPoint) {
     const ProgramRun r =
         tradeoff(dir, {(dir / "small.json").string(), "--out-dir", out.string(), "--quick"});
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    for (const char* name : {"points.csv", "table.md", "plot.png", "progressive.png",
-                             "truncation.png", "reference.png", "summary.md", "summary.json"})
+    for (const char* name :
+         {"points.csv", "table.md", "plot.png", "progressive.csv", "progressive.png",
+          "truncation.png", "reference.png", "summary.md", "summary.json"})
         EXPECT_TRUE(fs::is_regular_file(out / name)) << name;
     // --quick: samples {1, 4} x depths {0, 2} x float, double x scales {0.5, 1}.
     const std::vector<std::string> csv = lines(out / "points.csv");
@@ -74,6 +75,11 @@ TEST(WhittedTradeoff, QuickRun_WritesEveryFileWithOneRowPerPoint) {
     EXPECT_GE(front, 1);
     // The half-size rows render 32x24.
     EXPECT_EQ(csv[1].rfind("1,0,float,0.5,32,24,", 0), 0u) << csv[1];
+    // The progressive curve, refining to --quick's 4 samples: preview, 1, 2, 4.
+    const std::vector<std::string> curve = lines(out / "progressive.csv");
+    ASSERT_EQ(curve.size(), 5u) << test::joined(curve);
+    EXPECT_EQ(curve[0].rfind("pass,samples,seconds,", 0), 0u) << curve[0];
+    EXPECT_EQ(curve[4].rfind("3,4,", 0), 0u) << curve[4];
 
     // The report over this run: presets and the scene's section.
     const ProgramRun rep =
@@ -87,6 +93,19 @@ TEST(WhittedTradeoff, QuickRun_WritesEveryFileWithOneRowPerPoint) {
     EXPECT_NE(rep.output.find("Draft: "), std::string::npos) << rep.output;
 }
 
+TEST(WhittedTradeoff, WidthAndHeight_OverrideTheScenesSize) {
+    TempDir dir;
+    const fs::path out = dir / "out";
+    const ProgramRun r =
+        tradeoff(dir, {WHITTED_SCENES_DIR "/seed.json", "--out-dir", out.string(), "--width", "40",
+                       "--height", "30", "--samples", "1", "--depths", "1", "--precisions", "float",
+                       "--scales", "1", "--reference-spp", "4", "--progressive-spp", "1"});
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const std::vector<std::string> csv = lines(out / "points.csv");
+    ASSERT_EQ(csv.size(), 2u);
+    EXPECT_EQ(csv[1].rfind("1,1,float,1,40,30,", 0), 0u) << csv[1];
+}
+
 TEST(WhittedTradeoff, BadInput_ExitsTwoNamingTheProblem) {
     TempDir dir;
     ProgramRun r = tradeoff(dir, {(dir / "missing.json").string(), "--quick"});
@@ -95,6 +114,12 @@ TEST(WhittedTradeoff, BadInput_ExitsTwoNamingTheProblem) {
     r = tradeoff(dir, {WHITTED_SCENES_DIR "/seed.json", "--depths", "0,99"});
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.output.find("--depths"), std::string::npos) << r.output;
+    r = tradeoff(dir, {WHITTED_SCENES_DIR "/seed.json", "--width", "0"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("--width"), std::string::npos) << r.output;
+    r = tradeoff(dir, {WHITTED_SCENES_DIR "/seed.json", "--samples", "x"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("grid flag"), std::string::npos) << r.output;
     r = tradeoff(dir, {WHITTED_SCENES_DIR "/seed.json", "--no-such-flag"});
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());

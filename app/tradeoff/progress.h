@@ -1,0 +1,34 @@
+// whitted-tradeoff's terminal output while the grid runs: a bar redrawn in
+// place on a terminal (one line per point otherwise), with an ETA, and the
+// estimate of the whole run printed before it starts.
+#pragma once
+
+#include <chrono>
+
+#include "tradeoff.h"
+
+namespace whitted::tradeoff {
+
+// Relative cost of rendering a grid point once: samples times pixels. Depth and
+// precision are left out; they change the cost by a factor of two or three at
+// most, while samples and scale span three orders of magnitude.
+double pointWork(const TradeoffSettings& settings);
+
+// An upper bound on the grid's wall time, from the reference render's speed
+// (double, the deepest depth: every grid point renders at least as fast per
+// sample and pixel), with each point run as TradeoffGrid's rules would.
+double estimateGridSeconds(const TradeoffGrid& grid, const ReferenceRender& reference);
+
+class Progress {
+  public:
+    // `tty`: redraw one line in place; otherwise print a line per point.
+    Progress(const TradeoffGrid& grid, bool tty);
+    void point(const TradeoffProgress& p);
+
+  private:
+    bool tty_;
+    double totalWork_ = 0.0, doneWork_ = 0.0;
+    std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace whitted::tradeoff

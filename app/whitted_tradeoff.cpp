@@ -127,6 +127,7 @@ json summaryJson(const tradeoff::SceneSummary& s) {
             {"reference", json::parse(sceneToJson(s.reference))},
             {"reference_seconds", s.referenceSeconds},
             {"scene_depth", s.sceneDepth},
+            {"scene_precision", std::string(precisionName(s.scenePrecision))},
             {"truncation", s.truncation},
             {"depth_within_tolerance", s.depthWithinTolerance},
             {"progressive", curve}};
@@ -143,6 +144,8 @@ tradeoff::SceneSummary readSummary(const fs::path& dir) {
     s.reference = parseScene(j.at("reference").dump(), (dir / "summary.json").string());
     s.referenceSeconds = j.at("reference_seconds").get<double>();
     s.sceneDepth = j.at("scene_depth").get<int>();
+    s.scenePrecision =
+        parsePrecision(j.value("scene_precision", std::string("float"))).value_or(Precision::Float);
     s.truncation = j.at("truncation").get<float>();
     s.depthWithinTolerance = j.at("depth_within_tolerance").get<int>();
     for (const json& c : j.at("progressive")) {
@@ -314,6 +317,7 @@ int main(int argc, char** argv) {
         summary.reference = ref.scene;
         summary.referenceSeconds = ref.seconds;
         summary.sceneDepth = scene.render.maxDepth;
+        summary.scenePrecision = scene.render.precision;
         summary.depthWithinTolerance = depthWithinTolerance(scene);
         const Image truncation = depthTruncationMap(scene);
         summary.truncation = largestTruncation(truncation);

@@ -17,6 +17,7 @@ std::string fixed(double v, int decimals) {
 }
 
 std::string milliseconds(double seconds) {
+    if (seconds >= 1.0) return fixed(seconds, 2) + " s";
     return seconds < 0.01 ? fixed(seconds * 1000, 2) + " ms" : fixed(seconds * 1000, 1) + " ms";
 }
 
@@ -33,6 +34,15 @@ std::string row(const TradeoffPoint& p, bool bold) {
            fixed(p.mraysPerSecond, 1) + " | " + fixed(p.error.rmseSrgb8, 2) + " | " +
            fixed(p.error.psnrSrgb8, 1) + " dB | " + fixed(p.error.psnrLinear, 1) + " dB | " +
            fixed(p.error.largest, 0) + " |\n";
+}
+
+// The scene's full-size point with these samples, depth and precision.
+const TradeoffPoint* fullSizePoint(const SceneSummary& s, const TradeoffSettings& t) {
+    for (const TradeoffPoint& p : s.points)
+        if (p.settings.resolutionScale == 1.0 && p.settings.samplesPerPixel == t.samplesPerPixel &&
+            p.settings.maxDepth == t.maxDepth && p.settings.precision == t.precision)
+            return &p;
+    return nullptr;
 }
 
 }  // namespace
@@ -85,48 +95,85 @@ std::string sceneSection(const SceneSummary& s) {
            << " samples per pixel, its own depth and precision):\n\n";
         md << "![" << s.name << ": progressive refinement](" << s.directory
            << "/progressive.png)\n\n";
-        md << "| pass | samples | elapsed | RMSE 8-bit | PSNR 8-bit |\n|---|---|---|---|---|\n";
-        for (const ProgressiveSample& c : s.curve)
+        md << "A pass of k samples holds the first k samples of the final pass's pattern "
+              "(core/sampling.h: a sample depends on the count), which cover the pixel less "
+              "evenly than a pattern made for k: its error lies above that of a one-shot render "
+              "with k samples, the grid's point in the last column, and meets it at the last "
+              "pass.\n\n";
+        md << "| pass | samples | elapsed | RMSE 8-bit | PSNR 8-bit | one-shot RMSE 8-bit |\n"
+              "|---|---|---|---|---|---|\n";
+        for (const ProgressiveSample& c : s.curve) {
+            const TradeoffPoint* oneShot =
+                c.samples ? fullSizePoint(s, {c.samples, s.sceneDepth, s.scenePrecision, 1.0})
+                          : nullptr;
             md << "| " << c.pass << " | " << (c.samples ? std::to_string(c.samples) : "preview")
                << " | " << milliseconds(c.seconds) << " | " << fixed(c.error.rmseSrgb8, 2) << " | "
-               << fixed(c.error.psnrSrgb8, 1) << " dB |\n";
+               << fixed(c.error.psnrSrgb8, 1) << " dB | "
+               << (oneShot ? fixed(oneShot->error.rmseSrgb8, 2) : "—") << " |\n";
+        }
         md << "\n";
     }
     return md.str();
 }
 
 std::vector<PresetChoice> choosePresets(const std::vector<SceneSummary>& scenes) {
-    std::vector<PresetChoice> presets = {{"Draft", 25.0, 1, 0, Precision::Float, {}},
-                                         {"Preview", 35.0, 1, 0, Precision::Float, {}},
-                                         {"Final", 45.0, 1, 0, Precision::Float, {}}};
-    for (PresetChoice& preset : presets)
-        for (const SceneSummary& s : scenes) {
-            // Float where it reaches the target: float and double give nearly
-            // the same images (docs/numerics.md), so a double point that is
-            // "fastest" won by timing noise must not make the preset double.
-            const TradeoffPoint* fastest = nullptr;
-            const TradeoffPoint* fastestDouble = nullptr;
-            const TradeoffPoint* best = nullptr;
-            for (const TradeoffPoint& p : s.points) {
-                if (p.settings.resolutionScale != 1.0) continue;
-                if (!best || p.error.psnrSrgb8 > best->error.psnrSrgb8) best = &p;
-                if (p.error.psnrSrgb8 < preset.psnrTarget) continue;
-                const TradeoffPoint*& slot =
-                    p.settings.precision == Precision::Float ? fastest : fastestDouble;
-                if (!slot || p.seconds < slot->seconds) slot = &p;
+    // Draft: what one sample per pixel gives once the depth is enough (edges
+    // alias, so the RMSE stays near 25 codes). Preview: noise faint, and no pixel
+    // a quarter of the range off. Final: under one code on average and no pixel
+    // more than 16 codes off, which the average alone would let through (a
+    // mirror chain cut short is a small area but a large error).
+    std::vector<PresetChoice> presets(3);
+    presets[0].name = "Draft", presets[0].psnrTarget = 20.0, presets[0].largestLimit = 255.0;
+    presets[1].name = "Preview", presets[1].psnrTarget = 35.0, presets[1].largestLimit = 64.0;
+    presets[2].name = "Final", presets[2].psnrTarget = 50.0, presets[2].largestLimit = 16.0;
+    if (scenes.empty()) return presets;
+    // Candidates: the full-size settings every scene measured.
+    std::vector<TradeoffSettings> candidates;
+    for (const TradeoffPoint& p : scenes.front().points) {
+        if (p.settings.resolutionScale != 1.0) continue;
+        if (std::all_of(scenes.begin(), scenes.end(), [&](const SceneSummary& s) {
+                return fullSizePoint(s, p.settings) != nullptr;
+            }))
+            candidates.push_back(p.settings);
+    }
+    for (PresetChoice& preset : presets) {
+        // Cost: the geometric mean of the setting's times over the scenes, so
+        // that a scene whose times all drift by a factor (a busier machine
+        // during its run) cannot change which setting is cheapest.
+        struct Scored {
+            const TradeoffSettings* settings = nullptr;
+            double worst = -INFINITY, largest = 0.0, cost = INFINITY;
+        };
+        Scored reached, fallback;
+        for (const TradeoffSettings& c : candidates) {
+            double worst = INFINITY, largest = 0.0, logSum = 0.0;
+            for (const SceneSummary& s : scenes) {
+                const TradeoffPoint* p = fullSizePoint(s, c);
+                worst = std::min(worst, p->error.psnrSrgb8);
+                largest = std::max(largest, p->error.largest);
+                logSum += std::log(std::max(p->seconds, 1e-9));
             }
-            if (!fastest) fastest = fastestDouble;
-            if (!fastest) {
-                preset.notReached.push_back(s.name);
-                fastest = best;
-            }
-            if (!fastest) continue;
-            preset.samplesPerPixel =
-                std::max(preset.samplesPerPixel, fastest->settings.samplesPerPixel);
-            preset.maxDepth = std::max(preset.maxDepth, fastest->settings.maxDepth);
-            if (fastest->settings.precision == Precision::Double)
-                preset.precision = Precision::Double;
+            const double cost = std::exp(logSum / scenes.size());
+            if (worst >= preset.psnrTarget && largest <= preset.largestLimit && cost < reached.cost)
+                reached = {&c, worst, largest, cost};
+            if (worst > fallback.worst || (worst == fallback.worst && cost < fallback.cost))
+                fallback = {&c, worst, largest, cost};
         }
+        const Scored& chosen = reached.settings ? reached : fallback;
+        if (!chosen.settings) continue;
+        preset.samplesPerPixel = chosen.settings->samplesPerPixel;
+        preset.maxDepth = chosen.settings->maxDepth;
+        preset.precision = chosen.settings->precision;
+        preset.worstPsnr = chosen.worst;
+        preset.largest = chosen.largest;
+        preset.meanSeconds = chosen.cost;
+        for (const SceneSummary& s : scenes) {
+            const TradeoffPoint* p = fullSizePoint(s, *chosen.settings);
+            preset.perScene.push_back({s.name, p->seconds, p->error.psnrSrgb8, p->error.largest});
+            if (p->error.psnrSrgb8 < preset.psnrTarget || p->error.largest > preset.largestLimit)
+                preset.notReached.push_back(s.name);
+        }
+    }
     return presets;
 }
 
@@ -154,20 +201,50 @@ std::string report(const std::vector<SceneSummary>& scenes, const std::string& c
           "the largest difference is in 8-bit steps.\n\n";
     const std::vector<PresetChoice> presets = choosePresets(scenes);
     md << "## Presets\n\n";
-    md << "Chosen from the measurements below: for each preset, on every scene, the fastest "
-          "full-size float point whose 8-bit PSNR reaches the target (a double point only where "
-          "no float point does); the preset takes the largest samples and depth among those "
-          "points. Full size only, because a preset cannot change the scene's output size.\n\n";
-    md << "| preset | target (8-bit PSNR) | samples per pixel | max depth | precision | "
-          "not reached on |\n|---|---|---|---|---|---|\n";
+    md << "The rule: for each preset, of the full-size settings (samples per pixel, max depth, "
+          "precision) measured on every scene, the cheapest that meets the preset's targets on "
+          "every scene: an 8-bit PSNR at least the target, and no pixel further from the "
+          "reference than the limit (in 8-bit codes), which the average alone would let through: "
+          "a mirror chain cut short is a small area but a large error. Cheapest by the geometric "
+          "mean of the setting's times over the scenes, so a scene measured while the machine "
+          "was busier (all its times scaled alike) cannot change the choice. Where no setting "
+          "meets a preset's targets on every scene, the one whose worst scene has the best PSNR. "
+          "Full size only: a preset does not change the scene's output size. Times are this "
+          "run's, at the measured size; they grow with the pixel count.\n\n"
+          "- **Draft**, 20 dB, no limit: what one sample per pixel gives once the depth is "
+          "enough (edges alias: an RMSE near 25 codes).\n"
+          "- **Preview**, 35 dB (RMSE about 4.5 codes), no pixel off by more than 64 codes.\n"
+          "- **Final**, 50 dB (RMSE under one code), no pixel off by more than 16 codes.\n\n";
+    md << "| preset | targets | samples per pixel | max depth | precision | worst PSNR | "
+          "largest error | mean time | not met on |\n|---|---|---|---|---|---|---|---|---|\n";
     for (const PresetChoice& p : presets) {
         std::string missing;
         for (const std::string& n : p.notReached) missing += (missing.empty() ? "" : ", ") + n;
-        md << "| " << p.name << " | " << fixed(p.psnrTarget, 0) << " dB | " << p.samplesPerPixel
-           << " | " << p.maxDepth << " | " << precisionName(p.precision) << " | "
-           << (missing.empty() ? "—" : missing) << " |\n";
+        md << "| " << p.name << " | " << fixed(p.psnrTarget, 0) << " dB"
+           << (p.largestLimit < 255.0 ? ", ≤ " + fixed(p.largestLimit, 0) + " codes" : "") << " | "
+           << p.samplesPerPixel << " | " << p.maxDepth << " | " << precisionName(p.precision)
+           << " | " << fixed(p.worstPsnr, 1) << " dB | " << fixed(p.largest, 0) << " | "
+           << milliseconds(p.meanSeconds) << " | " << (missing.empty() ? "—" : missing) << " |\n";
     }
-    md << "\nThe editor's presets (core/render_presets.h) are these values.\n\n";
+    md << "\nEach preset on each scene (time, 8-bit PSNR, largest error in codes):\n\n| preset |";
+    for (const SceneSummary& s : scenes) md << " " << s.name << " |";
+    md << "\n|---|";
+    for (std::size_t i = 0; i < scenes.size(); ++i) md << "---|";
+    md << "\n";
+    for (const PresetChoice& p : presets) {
+        md << "| " << p.name << " |";
+        for (const PresetChoice::SceneFigures& f : p.perScene)
+            md << " " << milliseconds(f.seconds) << ", " << fixed(f.psnrSrgb8, 1) << " dB, "
+               << fixed(f.largest, 0) << " |";
+        md << "\n";
+    }
+    md << "\nAs core/render_presets.h spells them:\n\n```cpp\n"
+          "inline constexpr std::array<RenderPreset, 3> kRenderPresets{{\n";
+    for (const PresetChoice& p : presets)
+        md << "    {\"" << p.name << "\", " << p.samplesPerPixel << ", " << p.maxDepth << ", "
+           << (p.precision == Precision::Double ? "Precision::Double" : "Precision::Float")
+           << "},\n";
+    md << "}};\n```\n\n";
     for (const SceneSummary& s : scenes) md << sceneSection(s);
     return md.str();
 }

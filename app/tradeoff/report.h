@@ -20,8 +20,9 @@ struct SceneSummary {
     std::string date;       // when, YYYY-MM-DD (UTC)
     Scene reference;        // the reference's settings
     double referenceSeconds = 0.0;
-    int sceneDepth = 0;       // the scene's own max_depth
-    float truncation = 0.0f;  // largest cut-off weight at sceneDepth
+    int sceneDepth = 0;                           // the scene's own max_depth
+    Precision scenePrecision = Precision::Float;  // and precision
+    float truncation = 0.0f;                      // largest cut-off weight at sceneDepth
     int depthWithinTolerance = 0;
     std::vector<TradeoffPoint> points;
     std::vector<ProgressiveSample> curve;
@@ -30,16 +31,26 @@ struct SceneSummary {
 // The scene's section of the report (also written alone as summary.md).
 std::string sceneSection(const SceneSummary& s);
 
-// A preset: the fastest scale-1 float point of each scene reaching the 8-bit
-// PSNR target (double only where no float point does), then the largest
-// samples and depth among them.
+// A preset: of the full-size settings every scene measured, the cheapest (by
+// the geometric mean of its times over the scenes) whose 8-bit PSNR reaches
+// the target and whose largest pixel error stays within the limit on every
+// scene; if none does, the one whose worst scene has the best PSNR.
 struct PresetChoice {
     std::string name;
-    double psnrTarget = 0.0;
+    double psnrTarget = 0.0;    // dB, 8-bit
+    double largestLimit = 0.0;  // largest pixel error allowed, in 8-bit codes
     int samplesPerPixel = 1;
     int maxDepth = 0;
     Precision precision = Precision::Float;
-    std::vector<std::string> notReached;  // scenes where no point reached the target
+    double worstPsnr = 0.0;    // the lowest 8-bit PSNR of the setting over the scenes
+    double largest = 0.0;      // its largest pixel error over the scenes, in codes
+    double meanSeconds = 0.0;  // geometric mean of its times over the scenes
+    struct SceneFigures {
+        std::string scene;
+        double seconds = 0.0, psnrSrgb8 = 0.0, largest = 0.0;
+    };
+    std::vector<SceneFigures> perScene;   // in the order of the scenes
+    std::vector<std::string> notReached;  // scenes where it stays below the target
 };
 std::vector<PresetChoice> choosePresets(const std::vector<SceneSummary>& scenes);
 

@@ -322,7 +322,7 @@ int main(int argc, char** argv) {
         const Image truncation = depthTruncationMap(scene);
         summary.truncation = largestTruncation(truncation);
         std::cerr << "whitted-tradeoff: reference took " << fixed(ref.seconds, 1)
-                  << " s; the grid's " << gridSize(grid) << " points will take at most about "
+                  << " s; the grid's " << gridSize(grid) << " points will take about "
                   << fixed(tradeoff::estimateGridSeconds(grid, ref) / 60, 1) << " min\n";
 
         tradeoff::Progress progress(grid, ::isatty(STDERR_FILENO));

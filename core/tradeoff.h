@@ -76,8 +76,8 @@ std::vector<TradeoffPoint> runTradeoff(const Scene& scene, const Image& referenc
                                        const TradeoffCallback& progress = {},
                                        const StopPredicate& stop = {});
 
-// Sets `pareto` on the points no other point beats in both seconds and
-// rmseSrgb8 (ties count as beaten by neither).
+// Sets `pareto` on the points that are more accurate (rmseSrgb8, by at least
+// 0.1 %) than every faster point.
 void markParetoFront(std::vector<TradeoffPoint>& points);
 
 // The progressive renderer refining the scene (its own settings): the error

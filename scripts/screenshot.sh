@@ -3,20 +3,25 @@
 # opens build/bin/whitted on a scene (scenes/seed.json unless --scene), waits for
 # the render to finish, and writes the whole screen to docs/images/editor.png or
 # OUT.png. With --precision-view it first opens the Float vs Double dock (its
-# shortcut, Ctrl+Shift+F, sent with xdotool). Safe to re-run.
+# shortcut, Ctrl+Shift+F, sent with xdotool). With --tradeoff-view it opens the
+# Trade-off dock, pins the Final preset's render, renders the other presets and
+# two sample counts against it, then runs Measure and waits
+# TRADEOFF_MEASURE_SECONDS (150 unless set) for it. Safe to re-run.
 # Needs xvfb, x11-utils (xwininfo) and imagemagick (import), and xdotool for
-# --precision-view. Build first (scripts/setup.sh).
-# Usage: scripts/screenshot.sh [--scene SCENE.json] [--precision-view] [OUT.png]
+# --precision-view and --tradeoff-view. Build first (scripts/setup.sh).
+# Usage: scripts/screenshot.sh [--scene SCENE.json] [--precision-view | --tradeoff-view] [OUT.png]
 set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 out=docs/images/editor.png
 scene=scenes/seed.json
 precision_view=
+tradeoff_view=
 while [[ $# -gt 0 ]]; do
   case $1 in
     --scene) scene=$2; shift 2 ;;
     --precision-view) precision_view=1; shift ;;
+    --tradeoff-view) tradeoff_view=1; shift ;;
     *) out=$1; shift ;;
   esac
 done
@@ -29,7 +34,7 @@ fail() {
 }
 
 [[ -x build/bin/whitted ]] || fail "build/bin/whitted is not built (run scripts/setup.sh)"
-tools="Xvfb xwininfo import${precision_view:+ xdotool}"
+tools="Xvfb xwininfo import${precision_view:+ xdotool}${tradeoff_view:+ xdotool}"
 for tool in $tools; do
   command -v "$tool" >/dev/null 2>&1 || fail "$tool not found (apt-get install xvfb x11-utils imagemagick xdotool)"
 done
@@ -69,8 +74,11 @@ done
 DISPLAY=$display xwininfo -root >/dev/null 2>&1 || fail "Xvfb on $display does not answer"
 
 # A fresh settings directory, so a saved window layout or recent-files list of
-# the user's does not end up in the picture; the window fills the screen.
-DISPLAY=$display XDG_CONFIG_HOME=$home QT_QPA_PLATFORM=xcb \
+# the user's does not end up in the picture; the window fills the screen. A
+# fresh data directory too: the editor is killed at the end, and its recovery
+# copy of unsaved edits (--tradeoff-view makes some) must not reach the user's
+# next start, nor a user's recovery offer this picture.
+DISPLAY=$display XDG_CONFIG_HOME=$home XDG_DATA_HOME=$home QT_QPA_PLATFORM=xcb \
   build/bin/whitted "$scene" -geometry 1600x1000+0+0 >"$home/editor.log" 2>&1 &
 editor_pid=$!
 
@@ -94,6 +102,48 @@ if [[ -n "$precision_view" ]]; then
   id=$(DISPLAY=$display xdotool search --name "$title" | head -n 1)
   DISPLAY=$display xdotool windowfocus --sync "$id" key --clearmodifiers ctrl+shift+f ||
     fail "could not send Ctrl+Shift+F to the editor"
+fi
+
+if [[ -n "$tradeoff_view" ]]; then
+  sleep 1
+  id=$(DISPLAY=$display xdotool search --name "$title" | head -n 1)
+  keys() {
+    DISPLAY=$display xdotool windowfocus --sync "$id" key --clearmodifiers "$@" ||
+      fail "could not send $* to the editor"
+  }
+  # Click at a point of the 1600x1000 window (no window manager: the window is at 0,0).
+  click() {
+    DISPLAY=$display xdotool mousemove --sync "$1" "$2" click 1 ||
+      fail "could not click at $1,$2"
+  }
+  # The dock; the Final preset (Ctrl+3) pinned; then Draft and Preview (Ctrl+1,
+  # Ctrl+2) and two sample counts typed into the Render tab's field, each a
+  # point against it. They come first, while the renders have the cores to
+  # themselves, so their times compare with Measure's.
+  keys ctrl+shift+t ctrl+3
+  sleep 6
+  keys ctrl+shift+p ctrl+1
+  sleep 2
+  keys ctrl+2
+  sleep 2
+  click 1436 51 # the Render tab
+  for spp in 16 32; do
+    click 1480 253 # the samples field
+    keys ctrl+a
+    DISPLAY=$display xdotool type --delay 50 "$spp"
+    keys Return
+    sleep 4
+  done
+  # Then Measure: its question is a window of its own, answered with Return.
+  keys ctrl+shift+m
+  box=
+  for _ in $(seq 50); do
+    box=$(DISPLAY=$display xdotool search --name "Measure Trade-off" | head -n 1) && break
+    sleep 0.1
+  done
+  [[ -n "$box" ]] || fail "no Measure question on $display"
+  DISPLAY=$display xdotool windowfocus --sync "$box" key Return
+  sleep "${TRADEOFF_MEASURE_SECONDS:-150}"
 fi
 
 # The example scenes at 640x480 render in well under a second, and compare in

@@ -19,9 +19,11 @@
 #include "export_job.h"
 #include "float_range_warning.h"
 #include "precision_view.h"
+#include "preset_controls.h"
 #include "property_panels.h"
 #include "render_view.h"
 #include "scene_panel.h"
+#include "tradeoff_view.h"
 
 namespace whitted::ui {
 
@@ -106,7 +108,7 @@ void MainWindow::buildDocks() {
     tabs->setObjectName("settingsTabs");
     tabs->addTab(propertyPanel_, tr("Properties"));
     tabs->addTab(new CameraPanel(&doc_), tr("Camera"));
-    tabs->addTab(new RenderSettingsPanel(&doc_), tr("Render"));
+    tabs->addTab(new RenderSettingsPanel(&doc_, &record_), tr("Render"));
     auto* settingsDock = new QDockWidget(tr("Settings"), this);
     settingsDock->setObjectName("settingsDock");
     settingsDock->setWidget(tabs);
@@ -125,15 +127,9 @@ void MainWindow::buildDocks() {
     togglePrecision->setShortcut(QKeySequence(tr("Ctrl+Shift+F")));
     connect(precisionDock, &QDockWidget::visibilityChanged, this,
             [this, settingsDock, precisionDock](bool visible) {
-                // Shown squeezed under the settings, the heat map would be a thumbnail:
-                // then it takes half of the column.
-                const int column = settingsDock->height() + precisionDock->height();
-                if (!visible || settingsDock->isHidden() || precisionDock->isFloating() ||
-                    precisionDock->height() >= column * 2 / 5)
-                    return;
-                resizeDocks({settingsDock, precisionDock}, {column / 2, column - column / 2},
-                            Qt::Vertical);
+                if (visible) giveHalfOfColumn(settingsDock, precisionDock);
             });
+    buildTradeoffDock();
 
     connect(scenePanel_, &ScenePanel::selectionChanged, this,
             [this, tabs](ItemKind kind, int index) {
@@ -143,12 +139,54 @@ void MainWindow::buildDocks() {
             });
 }
 
+void MainWindow::buildTradeoffDock() {
+    // Hidden until asked for. Under the render view, where a plot and a table
+    // have the width they need; the side columns keep their full height.
+    tradeoffView_ = new TradeoffView(&doc_, &record_);
+    auto* dock = new QDockWidget(tr("Trade-off"), this);
+    dock->setObjectName("tradeoffDock");
+    dock->setWidget(tradeoffView_);
+    setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
+    addDockWidget(Qt::BottomDockWidgetArea, dock);
+    dock->hide();
+    QAction* toggle = dock->toggleViewAction();
+    toggle->setObjectName("toggleTradeoffView");
+    toggle->setShortcut(QKeySequence(tr("Ctrl+Shift+T")));
+    connect(dock, &QDockWidget::visibilityChanged, this, [this, dock](bool visible) {
+        // Shown at its minimum height, the plot would be a strip: 40 % of the window.
+        if (visible && !dock->isFloating() && dockWidgetArea(dock) == Qt::BottomDockWidgetArea &&
+            dock->height() < height() / 4)
+            resizeDocks({dock}, {height() * 2 / 5}, Qt::Vertical);
+    });
+    // Pinning or measuring shows where the points go.
+    for (QAction* a : {tradeoffView_->pinAction(), tradeoffView_->measureAction()})
+        connect(a, &QAction::triggered, dock, [dock] {
+            dock->show();
+            dock->raise();
+        });
+    connect(this, &MainWindow::frameShown, tradeoffView_, &TradeoffView::frameShown);
+}
+
+void MainWindow::giveHalfOfColumn(QDockWidget* settingsDock, QDockWidget* dock) {
+    // Squeezed under the settings, a plot or heat map would be a thumbnail.
+    const int column = settingsDock->height() + dock->height();
+    if (settingsDock->isHidden() || dock->isFloating() || dock->height() >= column * 2 / 5) return;
+    resizeDocks({settingsDock, dock}, {column / 2, column - column / 2}, Qt::Vertical);
+}
+
+void MainWindow::sceneReplaced() {
+    view_->setHomeCamera(doc_.scene().camera);
+    // Times, errors and the pinned image belong to the scene that was open.
+    tradeoffView_->sceneReplaced();
+}
+
 void MainWindow::buildMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     file->addAction(tr("&New"), QKeySequence::New, this, [this] {
         if (!maybeSave()) return;
         doc_.reset(newSceneTemplate(), QString());
-        view_->setHomeCamera(doc_.scene().camera);
+        sceneReplaced();
     });
     file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::openDialog);
     recentMenu_ = file->addMenu(tr("Open &Recent"));
@@ -173,6 +211,28 @@ void MainWindow::buildMenus() {
     edit->addAction(scenePanel_->duplicateAction());
     edit->addAction(scenePanel_->deleteAction());
     edit->addAction(scenePanel_->renameAction());
+
+    QMenu* renderMenu = menuBar()->addMenu(tr("&Render"));
+    // The Render tab's presets, from the keyboard too.
+    for (std::size_t i = 0; i < kRenderPresets.size(); ++i) {
+        const RenderPreset& preset = kRenderPresets[i];
+        const QString name = QString::fromUtf8(preset.name.data(), qsizetype(preset.name.size()));
+        QAction* a = renderMenu->addAction(tr("%1 Preset").arg(name), this, [this, &preset] {
+            QString error;
+            if (!PresetControls::apply(&doc_, preset, &error))
+                showError(tr("Cannot apply preset"), error);
+        });
+        a->setShortcut(QKeySequence(tr("Ctrl+%1").arg(i + 1)));
+        a->setObjectName(QStringLiteral("preset%1").arg(name));
+    }
+    renderMenu->addSeparator();
+    tradeoffView_->pinAction()->setShortcut(QKeySequence(tr("Ctrl+Shift+P")));
+    renderMenu->addAction(tradeoffView_->pinAction());
+    renderMenu->addAction(tradeoffView_->unpinAction());
+    renderMenu->addSeparator();
+    tradeoffView_->measureAction()->setShortcut(QKeySequence(tr("Ctrl+Shift+M")));
+    renderMenu->addAction(tradeoffView_->measureAction());
+    renderMenu->addAction(tradeoffView_->cancelMeasureAction());
 
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     viewMenu->addAction(tr("Reset Camera"), QKeySequence(Qt::Key_Home), this, [this] {
@@ -200,6 +260,7 @@ void MainWindow::onFrame(const RenderFrame& frame) {
     speedLabel_->setText(frame.renderComplete
                              ? tr("%1 Mrays/s").arg(frame.mraysPerSecond, 0, 'f', 1)
                              : tr("rendering…"));
+    if (frame.renderComplete) record_.addRender({frame.settings, frame.seconds, frame.rays});
     emit frameShown(frame);
 }
 
@@ -209,7 +270,7 @@ bool MainWindow::openFile(const QString& path) {
         showError(tr("Cannot open scene"), error);
         return false;
     }
-    view_->setHomeCamera(doc_.scene().camera);
+    sceneReplaced();
     addRecentFile(path);
     rememberDirectory(path);
     // Something to edit straight away: the first sphere's properties.
@@ -320,6 +381,7 @@ void MainWindow::restore(const Recovery& r) {
     QString error;
     if (r.originalPath.isEmpty() || !doc_.load(r.originalPath, &error))
         doc_.reset(newSceneTemplate(), r.originalPath);
+    tradeoffView_->sceneReplaced();  // whatever was pinned or measured was of another scene
     const Scene recovered = r.scene;
     doc_.edit(tr("Restore unsaved changes"), [&](Scene& s) { s = recovered; });
 }

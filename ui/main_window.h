@@ -1,8 +1,9 @@
 // The editor's main window: the render view in the middle, the scene lists on
-// the left, properties, camera and render settings on the right, and the File,
-// Edit and View menus. It owns the document and the render worker and wires
-// them together: every scene change restarts the render, every frame that is
-// not stale reaches the view and the status bar.
+// the left, properties, camera and render settings on the right, the Float vs
+// Double and Trade-off docks, and the File, Edit, Render and View menus. It
+// owns the document and the render worker and wires them together: every
+// scene change restarts the render, every frame that is not stale reaches the
+// view, the status bar and the Trade-off dock.
 #pragma once
 
 #include <QLabel>
@@ -13,7 +14,9 @@
 
 #include "render_worker.h"
 #include "scene_document.h"
+#include "tradeoff_record.h"
 
+class QDockWidget;
 class QMenu;
 class QProgressDialog;
 
@@ -24,6 +27,7 @@ class ScenePanel;
 class PrecisionView;
 class Autosave;
 struct Recovery;
+class TradeoffView;
 class FloatRangeWarning;
 class PropertyPanel;
 class ExportJob;
@@ -46,6 +50,8 @@ class MainWindow : public QMainWindow {
     ScenePanel* scenePanel() { return scenePanel_; }
     PropertyPanel* propertyPanel() { return propertyPanel_; }
     PrecisionView* precisionView() { return precisionView_; }
+    TradeoffView* tradeoffView() { return tradeoffView_; }
+    TradeoffRecord* tradeoffRecord() { return &record_; }
     FloatRangeWarning* floatRangeWarning() { return floatRangeWarning_; }
     QString lastError() const { return lastError_; }  // the last message shown to the user
     Autosave* autosave() { return autosave_.get(); }
@@ -72,6 +78,10 @@ class MainWindow : public QMainWindow {
   private:
     void buildMenus();
     void buildDocks();
+    void buildTradeoffDock();
+    // Shown under the settings, a dock squeezed small gets half of the column.
+    void giveHalfOfColumn(QDockWidget* settingsDock, QDockWidget* dock);
+    void sceneReplaced();
     void newScene();
     void openDialog();
     bool save();
@@ -88,11 +98,13 @@ class MainWindow : public QMainWindow {
     void onFrame(const RenderFrame& frame);
 
     SceneDocument doc_;
+    TradeoffRecord record_;
     RenderWorker worker_;
     RenderView* view_ = nullptr;
     ScenePanel* scenePanel_ = nullptr;
     PropertyPanel* propertyPanel_ = nullptr;
     PrecisionView* precisionView_ = nullptr;
+    TradeoffView* tradeoffView_ = nullptr;
     FloatRangeWarning* floatRangeWarning_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QLabel* passLabel_ = nullptr;

@@ -14,6 +14,7 @@
 
 #include "color_button.h"
 #include "number_field.h"
+#include "preset_controls.h"
 
 namespace whitted::ui {
 
@@ -402,7 +403,8 @@ void CameraPanel::refresh() {
 // ---------------------------------------------------------------------------
 // RenderSettingsPanel
 
-RenderSettingsPanel::RenderSettingsPanel(SceneDocument* doc, QWidget* parent)
+RenderSettingsPanel::RenderSettingsPanel(SceneDocument* doc, TradeoffRecord* record,
+                                         QWidget* parent)
     : QWidget(parent), doc_(doc) {
     QFormLayout* form = makeForm(this);
     auto addInt = [&](const QString& label, const QString& name, int min, int max, auto member,
@@ -461,6 +463,8 @@ RenderSettingsPanel::RenderSettingsPanel(SceneDocument* doc, QWidget* parent)
                            tr("background colour"));
     ambient_ = addColor(tr("Ambient:"), QStringLiteral("sceneAmbient"), &Scene::ambient,
                         tr("ambient colour"));
+
+    if (record) new PresetControls(doc_, record, form);
 
     connect(doc_, &SceneDocument::sceneChanged, this, &RenderSettingsPanel::refresh);
     refresh();

@@ -74,12 +74,16 @@ class CameraPanel : public QWidget {
     std::vector<DoubleField*> fields_;
 };
 
+class TradeoffRecord;
+
 // Render settings (image size, depth, samples, precision) and the scene's
-// background and ambient colours.
+// background and ambient colours; given a record, the presets and the
+// predicted time and error above them (preset_controls.h).
 class RenderSettingsPanel : public QWidget {
     Q_OBJECT
   public:
-    explicit RenderSettingsPanel(SceneDocument* doc, QWidget* parent = nullptr);
+    explicit RenderSettingsPanel(SceneDocument* doc, TradeoffRecord* record = nullptr,
+                                 QWidget* parent = nullptr);
 
   private:
     void refresh();

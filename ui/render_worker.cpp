@@ -111,6 +111,7 @@ void RenderWorker::renderOne(const Scene& requested, quint64 generation) {
         frame.preview = p.kind == PassKind::Preview;
         frame.passComplete = passComplete;
         frame.samples = samplesDone;
+        frame.settings = scene.render;
         frame.seconds = std::chrono::duration<double>(Clock::now() - start).count();
         return frame;
     };
@@ -146,7 +147,7 @@ void RenderWorker::renderOne(const Scene& requested, quint64 generation) {
             lastSent = Clock::now();
         }
     };
-    const RenderResult result = render(scene, RenderOptions{}, onTile, shouldStop);
+    RenderResult result = render(scene, RenderOptions{}, onTile, shouldStop);
     if (!result.completed) return;  // superseded: a newer request is waiting
 
     RenderFrame frame = makeFrame(lastProgress, true);
@@ -155,6 +156,8 @@ void RenderWorker::renderOne(const Scene& requested, quint64 generation) {
     frame.samples = result.samples;
     frame.seconds = result.seconds;
     frame.mraysPerSecond = result.seconds > 0 ? result.rays.total() / result.seconds / 1e6 : 0.0;
+    frame.rays = result.rays.total();
+    frame.linear = std::make_shared<const Image>(std::move(result.image));
     post(std::move(frame));
 }
 

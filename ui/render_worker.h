@@ -15,6 +15,7 @@
 
 #include <atomic>
 #include <condition_variable>
+#include <cstdint>
 #include <deque>
 #include <memory>
 #include <mutex>
@@ -46,6 +47,11 @@ struct RenderFrame {
     int samples = 0;              // samples per pixel of the finished pixels (0 during the preview)
     double seconds = 0.0;         // since the render started
     double mraysPerSecond = 0.0;
+    RenderSettings settings;  // what the frame is rendered with
+    // Only in the complete frame: the linear image itself, shared rather than
+    // copied (the trade-off dock measures errors on it), and its ray count.
+    std::shared_ptr<const Image> linear;
+    std::uint64_t rays = 0;
 };
 
 class RenderWorker : public QObject {

@@ -1,0 +1,504 @@
+// GUI tests of the speed/accuracy trade in the editor: the Render tab's presets
+// and predictions, and the Trade-off dock (Pin as Reference, Measure). The real
+// MainWindow driven offscreen, as tests/ui/test_main_window.cpp does.
+//
+// Errors shown are checked against core's measureError() called directly on
+// the linear images the frames carry: both sides compute the same function of
+// the same pixels, so they must be equal, not close.
+#include <QAction>
+#include <QApplication>
+#include <QComboBox>
+#include <QElapsedTimer>
+#include <QLabel>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QTest>
+#include <QUndoStack>
+
+#include <algorithm>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "image_error.h"
+#include "main_window.h"
+#include "plot_widget.h"
+#include "render_presets.h"
+#include "scene_io.h"
+#include "settings_prediction.h"
+#include "test_support.h"
+#include "tradeoff_view.h"
+
+namespace whitted::ui {
+namespace {
+
+constexpr int kWidth = 160, kHeight = 120;
+constexpr int kTimeoutMs = 30000;  // renders take milliseconds; CI machines are shared
+const std::string kSeedScene = WHITTED_SCENES_DIR "/seed.json";
+
+// The last complete frame shown, and how many there were.
+class CompleteFrames {
+  public:
+    explicit CompleteFrames(MainWindow& window) {
+        connection_ = QObject::connect(&window, &MainWindow::frameShown, &window,
+                                       [this](const RenderFrame& f) {
+                                           if (!f.renderComplete) return;
+                                           last = f;
+                                           ++count;
+                                       });
+    }
+    ~CompleteFrames() { QObject::disconnect(connection_); }
+    CompleteFrames(const CompleteFrames&) = delete;
+    CompleteFrames& operator=(const CompleteFrames&) = delete;
+
+    int count = 0;
+    RenderFrame last;
+
+  private:
+    QMetaObject::Connection connection_;
+};
+
+// A grid small enough for a 64 x 48 scene to finish in a fraction of a second.
+TradeoffGrid tinyGrid() {
+    TradeoffGrid g;
+    g.samples = {1, 2, 4};
+    g.depths = {0, 1, 2};
+    g.precisions = {Precision::Float, Precision::Double};
+    g.scales = {1.0};
+    g.minRuns = 1;
+    g.maxRuns = 1;
+    g.minSeconds = 0.0;
+    return g;
+}
+
+// A window on a copy of the seed scene at `width` x `height`, its first render finished.
+class TradeoffViewTest : public ::testing::Test {
+  protected:
+    void SetUp() override { open(kWidth, kHeight); }
+
+    void open(int width, int height) {
+        Scene seed = loadScene(kSeedScene);
+        seed.render.width = width;
+        seed.render.height = height;
+        const QString path = QString::fromStdString((dir / "seed.json").string());
+        saveScene(seed, path.toStdString());
+        if (!window) {
+            window = std::make_unique<MainWindow>();
+            window->resize(1400, 900);
+            window->show();
+            ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+            frames = std::make_unique<CompleteFrames>(*window);
+        }
+        doc = window->document();
+        view = window->tradeoffView();
+        ASSERT_NE(view, nullptr);
+        const int before = frames->count;
+        ASSERT_TRUE(window->openFile(path)) << window->lastError().toStdString();
+        ASSERT_TRUE(waitForRender(before));
+    }
+
+    void TearDown() override {
+        frames.reset();
+        window.reset();
+    }
+
+    ::testing::AssertionResult waitForRender(int before) {
+        if (QTest::qWaitFor([&] { return frames->count > before; }, kTimeoutMs))
+            return ::testing::AssertionSuccess();
+        return ::testing::AssertionFailure() << "no complete frame within " << kTimeoutMs << " ms";
+    }
+
+    ::testing::AssertionResult editAndWait(const std::function<void(Scene&)>& change) {
+        const int before = frames->count;
+        QString error;
+        if (!doc->edit(QStringLiteral("test edit"), change, &error))
+            return ::testing::AssertionFailure() << "edit refused: " << error.toStdString();
+        return waitForRender(before);
+    }
+
+    template <class T>
+    T* child(const char* name) const {
+        auto* w = window->findChild<T*>(QString::fromLatin1(name));
+        EXPECT_NE(w, nullptr) << name;
+        return w;
+    }
+
+    // What QComboBox does when the user picks item `index`.
+    void choosePreset(int index) {
+        auto* combo = child<QComboBox>("renderPreset");
+        combo->setCurrentIndex(index);
+        emit combo->activated(index);
+    }
+
+    // Pins the finished frame; returns it.
+    RenderFrame pin() {
+        QAction* action = view->pinAction();
+        EXPECT_TRUE(action->isEnabled());
+        action->trigger();
+        EXPECT_TRUE(view->isPinned());
+        return frames->last;
+    }
+
+    // Runs Measure on the current scene with `grid`; false on a timeout.
+    bool measure(const TradeoffGrid& grid, int referenceSamples) {
+        view->setMeasureGrid(grid, referenceSamples);
+        QSignalSpy finished(view, &TradeoffView::measureFinished);
+        if (!view->startMeasure()) return false;
+        return finished.wait(kTimeoutMs);
+    }
+
+    test::TempDir dir;
+    std::unique_ptr<MainWindow> window;
+    std::unique_ptr<CompleteFrames> frames;
+    SceneDocument* doc = nullptr;
+    TradeoffView* view = nullptr;
+};
+
+// ---------------------------------------------------------------------------
+// Presets
+
+TEST_F(TradeoffViewTest, Preset_EachSetsExactlyItsValuesAsOneUndoStep_UndoRestores) {
+    // From settings that match no preset, so each choice changes something.
+    ASSERT_TRUE(doc->edit(QStringLiteral("custom"), [](Scene& s) {
+        s.render.samplesPerPixel = 3;
+        s.render.maxDepth = 7;
+    }));
+    auto* combo = child<QComboBox>("renderPreset");
+    ASSERT_EQ(combo->count(), int(kRenderPresets.size()) + 1);
+    EXPECT_EQ(combo->currentIndex(), 0);
+    EXPECT_EQ(combo->currentText(), QStringLiteral("Custom"));
+    const Scene before = doc->scene();
+    const int steps = doc->undoStack()->count();
+    for (std::size_t i = 0; i < kRenderPresets.size(); ++i) {
+        const RenderPreset& preset = kRenderPresets[i];
+        SCOPED_TRACE(std::string(preset.name));
+        choosePreset(int(i) + 1);
+        Scene want = before;
+        want.render.samplesPerPixel = preset.samplesPerPixel;
+        want.render.maxDepth = preset.maxDepth;
+        want.render.precision = preset.precision;
+        EXPECT_EQ(doc->scene(), want);
+        EXPECT_EQ(doc->undoStack()->count(), steps + 1);
+        EXPECT_EQ(combo->currentIndex(), int(i) + 1);
+        EXPECT_TRUE(combo->currentText().startsWith(QString::fromUtf8(preset.name.data())));
+        doc->undoStack()->undo();
+        EXPECT_EQ(doc->scene(), before);
+        EXPECT_EQ(combo->currentIndex(), 0);
+    }
+}
+
+TEST_F(TradeoffViewTest, Preset_ManualSamplesChange_ShowsCustom) {
+    choosePreset(2);  // Preview
+    auto* combo = child<QComboBox>("renderPreset");
+    ASSERT_EQ(combo->currentIndex(), 2);
+    auto* samples = child<QSpinBox>("renderSamples");
+    samples->setValue(kRenderPresets[1].samplesPerPixel + 1);
+    EXPECT_EQ(doc->scene().render.samplesPerPixel, kRenderPresets[1].samplesPerPixel + 1);
+    EXPECT_EQ(combo->currentIndex(), 0);
+    EXPECT_EQ(combo->currentText(), QStringLiteral("Custom"));
+    samples->setValue(kRenderPresets[1].samplesPerPixel);  // back on the preset
+    EXPECT_EQ(combo->currentIndex(), 2);
+}
+
+TEST_F(TradeoffViewTest, Predictions_BeforeMeasure_TimeFromTheLastRender_ErrorPointsToMeasure) {
+    auto* time = child<QLabel>("predictedTime");
+    auto* error = child<QLabel>("predictedError");
+    EXPECT_TRUE(time->text().contains(QStringLiteral("measured: the last render")))
+        << time->text().toStdString();
+    EXPECT_EQ(error->text(), QStringLiteral("Measure gives an error prediction"));
+    // More samples than any render so far: an estimate, and it says so.
+    ASSERT_TRUE(doc->edit(QStringLiteral("spp"), [](Scene& s) { s.render.samplesPerPixel = 8; }));
+    EXPECT_TRUE(time->text().contains(QStringLiteral("estimated from the last render")))
+        << time->text().toStdString();
+}
+
+// ---------------------------------------------------------------------------
+// Pin as Reference
+
+TEST_F(TradeoffViewTest, Pin_DisabledWhileTheRenderIsUnfinished) {
+    EXPECT_TRUE(view->pinAction()->isEnabled());
+    ASSERT_TRUE(doc->edit(QStringLiteral("spp"), [](Scene& s) { s.render.samplesPerPixel = 2; }));
+    // No event has been processed since the edit: its render cannot be complete.
+    EXPECT_FALSE(view->pinAction()->isEnabled());
+    EXPECT_TRUE(QTest::qWaitFor([&] { return view->pinAction()->isEnabled(); }, kTimeoutMs));
+    EXPECT_EQ(frames->last.settings.samplesPerPixel, 2);
+}
+
+TEST_F(TradeoffViewTest, Pin_EditChangingSamples_AddsPointWithMeasureErrorOfTheFrames) {
+    const RenderFrame pinned = pin();
+    ASSERT_TRUE(pinned.linear);
+    EXPECT_EQ(view->pinnedImage(), pinned.linear);
+    EXPECT_TRUE(view->pinnedPoints().empty());
+
+    QSignalSpy measured(view, &TradeoffView::pointMeasured);
+    ASSERT_TRUE(editAndWait([](Scene& s) { s.render.samplesPerPixel = 4; }));
+    const RenderFrame after = frames->last;
+    ASSERT_TRUE(QTest::qWaitFor([&] { return measured.count() == 1; }, kTimeoutMs));
+    ASSERT_EQ(view->pinnedPoints().size(), 1u);
+    const PinnedPoint& p = view->pinnedPoints()[0];
+    EXPECT_EQ(p.settings.samplesPerPixel, 4);
+    EXPECT_EQ(p.generation, after.generation);
+    EXPECT_EQ(p.seconds, after.seconds);
+    ASSERT_TRUE(p.error.has_value()) << p.note.toStdString();
+    const ErrorStats want = measureError(*after.linear, *pinned.linear);
+    EXPECT_EQ(p.error->rmseSrgb8, want.rmseSrgb8);
+    EXPECT_EQ(p.error->rmseLinear, want.rmseLinear);
+    EXPECT_EQ(p.error->psnrSrgb8, want.psnrSrgb8);
+    EXPECT_EQ(p.error->largest, want.largest);
+    EXPECT_GT(want.rmseSrgb8, 0.0);  // 4 samples against 1: the edges differ
+
+    ASSERT_EQ(view->plot()->spec().points.size(), 1u);
+    EXPECT_EQ(view->plot()->spec().points[0].y, want.rmseSrgb8);
+    EXPECT_EQ(view->plot()->spec().points[0].x, after.seconds);
+    EXPECT_EQ(child<QTableWidget>("pinnedTable")->rowCount(), 1);
+
+    // Its tooltip where it is drawn: the settings and the error.
+    const PlotWidget* plot = view->plot();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return plot->isVisible(); }, kTimeoutMs));
+    const QPointF at = plotLayout(QRectF(plot->rect()), plot->spec(), plot->font())
+                           .map(after.seconds, want.rmseSrgb8);
+    const QString tip = plot->tooltipAt(at);
+    EXPECT_TRUE(tip.startsWith(QStringLiteral("Render 1 against the pinned image: 4 spp, depth 2")))
+        << tip.toStdString();
+    EXPECT_TRUE(tip.contains(QStringLiteral("%1 of 255").arg(want.rmseSrgb8, 0, 'f', 3)))
+        << tip.toStdString();
+}
+
+TEST_F(TradeoffViewTest, Pin_SmallerRenderComparedStretched_OtherShapeSkippedWithNote) {
+    const RenderFrame pinned = pin();
+    QSignalSpy measured(view, &TradeoffView::pointMeasured);
+    ASSERT_TRUE(editAndWait([](Scene& s) {
+        s.render.width = kWidth / 2;
+        s.render.height = kHeight / 2;
+    }));
+    const RenderFrame half = frames->last;
+    ASSERT_TRUE(QTest::qWaitFor([&] { return measured.count() == 1; }, kTimeoutMs));
+    ASSERT_TRUE(view->pinnedPoints()[0].error.has_value());
+    EXPECT_EQ(view->pinnedPoints()[0].error->rmseSrgb8,
+              measureError(*half.linear, *pinned.linear).rmseSrgb8);
+
+    ASSERT_TRUE(editAndWait([](Scene& s) {
+        s.render.width = kWidth;
+        s.render.height = kWidth;  // square: not a view of the pinned image
+    }));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return measured.count() == 2; }, kTimeoutMs));
+    const PinnedPoint& skipped = view->pinnedPoints()[1];
+    EXPECT_FALSE(skipped.error.has_value());
+    EXPECT_TRUE(skipped.note.startsWith(QStringLiteral("Not compared")))
+        << skipped.note.toStdString();
+    EXPECT_EQ(view->plot()->spec().points.size(), 1u);  // the skipped one has no error to plot
+}
+
+TEST_F(TradeoffViewTest, Unpin_ClearsPointsPlotAndTable_LaterRendersAddNothing) {
+    pin();
+    QSignalSpy measured(view, &TradeoffView::pointMeasured);
+    ASSERT_TRUE(editAndWait([](Scene& s) { s.render.samplesPerPixel = 2; }));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return measured.count() == 1; }, kTimeoutMs));
+    ASSERT_EQ(view->plot()->spec().points.size(), 1u);
+
+    ASSERT_TRUE(view->unpinAction()->isEnabled());
+    view->unpinAction()->trigger();
+    EXPECT_FALSE(view->isPinned());
+    EXPECT_FALSE(view->unpinAction()->isEnabled());
+    EXPECT_TRUE(view->pinnedPoints().empty());
+    EXPECT_TRUE(view->plot()->spec().points.empty());
+    EXPECT_EQ(child<QTableWidget>("pinnedTable")->rowCount(), 0);
+
+    ASSERT_TRUE(editAndWait([](Scene& s) { s.render.samplesPerPixel = 4; }));
+    QTest::qWait(100);
+    EXPECT_TRUE(view->pinnedPoints().empty());
+}
+
+TEST_F(TradeoffViewTest, OpeningAScene_UnpinsAndForgetsTheRecord) {
+    pin();
+    ASSERT_FALSE(window->tradeoffRecord()->renders().empty());
+    open(kWidth, kHeight);
+    EXPECT_FALSE(view->isPinned());
+    // Only the new scene's first render is remembered.
+    EXPECT_EQ(window->tradeoffRecord()->renders().size(), 1u);
+}
+
+// ---------------------------------------------------------------------------
+// Measure
+
+TEST_F(TradeoffViewTest, Measure_ActionAsksFirst_CancelStartsNothing) {
+    view->measureAction()->trigger();
+    auto* box = window->findChild<QMessageBox*>(QStringLiteral("measureConfirm"));
+    ASSERT_NE(box, nullptr);
+    EXPECT_TRUE(box->isVisible());
+    EXPECT_TRUE(box->text().contains(QStringLiteral("about a minute")))
+        << box->text().toStdString();
+    EXPECT_TRUE(box->text().contains(QStringLiteral("252 settings"))) << box->text().toStdString();
+    box->reject();
+    EXPECT_FALSE(view->isMeasuring());
+}
+
+TEST_F(TradeoffViewTest, Measure_TinyScene_FillsPlotAndTableWithEveryPointAndAFront) {
+    open(64, 48);
+    const TradeoffGrid grid = tinyGrid();
+    ASSERT_TRUE(measure(grid, 16));
+    const auto& points = view->measurePoints();
+    ASSERT_EQ(int(points.size()), gridPointCount(grid));
+    const auto front = std::count_if(points.begin(), points.end(),
+                                     [](const TradeoffPoint& p) { return p.pareto; });
+    EXPECT_GT(front, 0);
+    const MeasureResults* m = window->tradeoffRecord()->measure();
+    ASSERT_NE(m, nullptr);
+    EXPECT_FALSE(m->cancelled);
+    EXPECT_EQ(m->total, gridPointCount(grid));
+    EXPECT_EQ(m->referenceSamples, 16);
+
+    // Every point on the plot (none equals the 16-sample reference), the front ringed.
+    const PlotSpec& spec = view->plot()->spec();
+    EXPECT_EQ(spec.points.size(), points.size());
+    EXPECT_EQ(std::count_if(spec.points.begin(), spec.points.end(),
+                            [](const PlotPoint& p) { return p.highlighted; }),
+              front);
+    EXPECT_EQ(child<QTableWidget>("measureTable")->rowCount(), int(points.size()));
+    EXPECT_FALSE(child<QProgressBar>("measureProgress")->isVisible());
+    EXPECT_TRUE(view->measureAction()->isEnabled());
+}
+
+TEST_F(TradeoffViewTest, Measure_Cancel_StopsWithinAShortTimeAndKeepsPartialResults) {
+    // Enough work that it cannot finish before the cancel: 126 points at 160 x 120.
+    TradeoffGrid grid = tinyGrid();
+    grid.samples = {1, 2, 4, 8, 16, 32, 64};
+    grid.depths = {0, 1, 2, 3, 4, 5, 6, 7, 8};
+    view->setMeasureGrid(grid, 16);
+    QSignalSpy progress(view, &TradeoffView::measureProgress);
+    QSignalSpy finished(view, &TradeoffView::measureFinished);
+    ASSERT_TRUE(view->startMeasure());
+    ASSERT_TRUE(view->isMeasuring());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return progress.count() >= 3; }, kTimeoutMs));
+    ASSERT_TRUE(view->cancelMeasureAction()->isEnabled());
+    QElapsedTimer clock;
+    clock.start();
+    view->cancelMeasureAction()->trigger();
+    ASSERT_TRUE(finished.wait(kTimeoutMs));
+    // A point at 160 x 120 takes milliseconds; the stop is asked every tile row.
+    EXPECT_LT(clock.elapsed(), 2000);
+    EXPECT_TRUE(finished.at(0).at(0).toBool());
+    const MeasureResults* m = window->tradeoffRecord()->measure();
+    ASSERT_NE(m, nullptr);
+    EXPECT_TRUE(m->cancelled);
+    EXPECT_GE(m->points.size(), 3u);
+    EXPECT_LT(int(m->points.size()), gridPointCount(grid));
+    EXPECT_EQ(view->measurePoints().size(), m->points.size());
+    EXPECT_EQ(view->plot()->spec().points.size(), m->points.size());
+    EXPECT_TRUE(child<QLabel>("measureStatus")->text().contains(QStringLiteral("Cancelled")));
+    EXPECT_FALSE(view->isMeasuring());
+}
+
+TEST_F(TradeoffViewTest, Measure_OpeningASceneMeanwhile_StopsItAndKeepsNothing) {
+    TradeoffGrid grid = tinyGrid();
+    grid.samples = {1, 2, 4, 8, 16, 32, 64};
+    grid.depths = {0, 1, 2, 3, 4, 5, 6, 7, 8};
+    view->setMeasureGrid(grid, 16);
+    QSignalSpy progress(view, &TradeoffView::measureProgress);
+    QSignalSpy finished(view, &TradeoffView::measureFinished);
+    ASSERT_TRUE(view->startMeasure());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return progress.count() >= 1; }, kTimeoutMs));
+    open(kWidth, kHeight);
+    EXPECT_FALSE(view->isMeasuring());
+    QTest::qWait(100);  // anything the stopped run had posted arrives, and is dropped
+    EXPECT_EQ(finished.count(), 0);
+    EXPECT_TRUE(view->measurePoints().empty());
+    EXPECT_EQ(window->tradeoffRecord()->measure(), nullptr);
+    EXPECT_TRUE(view->measureAction()->isEnabled());
+}
+
+TEST_F(TradeoffViewTest, Measure_ThenPredictions_ShowMeasuredAndInterpolatedValues) {
+    open(64, 48);
+    ASSERT_TRUE(measure(tinyGrid(), 16));
+    const MeasureResults* m = window->tradeoffRecord()->measure();
+    ASSERT_NE(m, nullptr);
+    auto pointAt = [&](int spp) -> const TradeoffPoint& {
+        const RenderSettings& r = doc->scene().render;
+        for (const TradeoffPoint& p : m->points)
+            if (p.settings.samplesPerPixel == spp && p.settings.maxDepth == r.maxDepth &&
+                p.settings.precision == r.precision)
+                return p;
+        ADD_FAILURE() << "no point at " << spp << " spp";
+        return m->points.front();
+    };
+    auto* time = child<QLabel>("predictedTime");
+    auto* error = child<QLabel>("predictedError");
+    // The seed's own settings (1 spp, depth 2, float) are a grid point.
+    const TradeoffPoint& own = pointAt(1);
+    EXPECT_TRUE(error->text().startsWith(
+        QStringLiteral("RMSE %1 of 255").arg(own.error.rmseSrgb8, 0, 'f', 2)))
+        << error->text().toStdString();
+    EXPECT_TRUE(error->text().contains(QStringLiteral("measured by Measure")));
+    EXPECT_TRUE(time->text().contains(QStringLiteral("measured by Measure")));
+
+    // Between two grid points: interpolated, and said so.
+    ASSERT_TRUE(doc->edit(QStringLiteral("spp"), [](Scene& s) { s.render.samplesPerPixel = 3; }));
+    EXPECT_TRUE(error->text().contains(QStringLiteral("interpolated from Measure between 2 and 4")))
+        << error->text().toStdString();
+    // Beyond the grid: no error, and the reason.
+    ASSERT_TRUE(doc->edit(QStringLiteral("spp"), [](Scene& s) { s.render.samplesPerPixel = 16; }));
+    EXPECT_TRUE(error->text().startsWith(QStringLiteral("outside Measure's grid")))
+        << error->text().toStdString();
+    // Another scene content: Measure no longer speaks for it.
+    ASSERT_TRUE(doc->edit(QStringLiteral("move"), [](Scene& s) { s.spheres[0].center.x += 0.1; }));
+    EXPECT_TRUE(error->text().contains(QStringLiteral("the scene changed since Measure")))
+        << error->text().toStdString();
+}
+
+// ---------------------------------------------------------------------------
+// predictSettings on its own
+
+TEST(SettingsPrediction, TimeScalesWithPixelsTimesSamplesAtTheSameDepthAndPrecision) {
+    Scene scene;
+    scene.render = {640, 480, 2, 1, Precision::Float};
+    std::vector<EditorRender> renders{{{320, 240, 2, 4, Precision::Float}, 0.5, 1000000}};
+    const Prediction p = predictSettings(scene, renders, nullptr);
+    ASSERT_TRUE(p.seconds.has_value());
+    EXPECT_DOUBLE_EQ(*p.seconds, 0.5);  // 4x the pixels, a quarter of the samples
+    EXPECT_TRUE(p.timeSource.startsWith(QStringLiteral("estimated from the last render at")));
+    EXPECT_FALSE(p.rmseSrgb8.has_value());
+
+    scene.render.maxDepth = 5;  // no render at this depth: rough, and said so
+    const Prediction rough = predictSettings(scene, renders, nullptr);
+    EXPECT_TRUE(rough.timeSource.startsWith(QStringLiteral("rough estimate")));
+}
+
+TEST(SettingsPrediction, ErrorInterpolatedLogLogBetweenSampleCounts) {
+    Scene scene;
+    scene.render = {100, 100, 3, 4, Precision::Double};
+    MeasureResults m;
+    m.scene = scene;
+    for (int spp : {2, 8}) {
+        TradeoffPoint p;
+        p.settings = {spp, 3, Precision::Double, 1.0};
+        p.width = p.height = 100;
+        p.seconds = spp * 0.1;
+        p.error.rmseSrgb8 = spp == 2 ? 8.0 : 2.0;
+        m.points.push_back(p);
+    }
+    const Prediction p = predictSettings(scene, {}, &m);
+    ASSERT_TRUE(p.rmseSrgb8.has_value());
+    EXPECT_NEAR(*p.rmseSrgb8, 4.0, 1e-12);  // half-way in log spp: the geometric mean
+    ASSERT_TRUE(p.seconds.has_value());
+    EXPECT_NEAR(*p.seconds, 0.4, 1e-12);  // linear in spp
+    EXPECT_TRUE(p.errorSource.startsWith(QStringLiteral("interpolated")));
+}
+
+}  // namespace
+}  // namespace whitted::ui
+
+int main(int argc, char** argv) {
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    QStandardPaths::setTestModeEnabled(true);
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName("WhittedTests");
+    QApplication::setApplicationName("test_tradeoff_view");
+    QSettings().clear();
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}

@@ -208,12 +208,16 @@ std::string report(const std::vector<SceneSummary>& scenes, const std::string& c
             dates.push_back(s.date);
     std::string when;
     for (const std::string& d : dates) when += (when.empty() ? "" : ", ") + d;
+    // The factor of three: the seed's 1024-sample reference at 320x240 took
+    // 3.7 s to 11.1 s over four regenerations on one day (2026-11-22).
     md << "> **Generated** by `whitted-tradeoff` (app/tradeoff/); do not edit by hand. "
           "Regenerate everything with `cmake --build build --target tradeoff-docs`: it measures "
           "each scene with the command given in its section, then writes this page with `"
        << command << "`." << (when.empty() ? "" : " Measured on " + when + " (UTC).")
-       << "\n> Machine: the project's shared 2-core VM; times drift 10 to 30 % between runs, so "
-          "compare points of one scene (one run), not absolute times across scenes.\n\n";
+       << "\n> Machine: the project's shared 2-core VM, whose load changes from hour to hour: "
+          "times drift 10 to 30 % within a run, and by up to a factor of three between runs "
+          "hours apart. Trust the ratios between points of one "
+          "scene (one run), not absolute times or times across scenes.\n\n";
     md << "Each scene is rendered over a grid of samples per pixel, max_depth, precision and "
           "resolution scale; every point's time is the median of its runs, and its error is "
           "measured against a double-precision reference with many samples and a depth past "

@@ -280,6 +280,9 @@ void drawLabels(QPainter& p, const PlotLayout& l, const PlotSpec& spec) {
                             [&](const QRectF& t) { return t.intersects(r); }))
                 continue;
             taken.push_back(r);
+            // A pale backing keeps the label readable over ordinary points,
+            // which labels may cover (only the highlighted ones are avoided).
+            p.fillRect(r.adjusted(-1, 0, 1, 0), QColor(255, 255, 255, 190));
             p.drawText(r, Qt::AlignLeft | Qt::AlignVCenter, pt.label);
             break;
         }

@@ -34,7 +34,8 @@ std::string sceneSection(const SceneSummary& s);
 // A preset: of the full-size settings every scene measured, the cheapest (by
 // the geometric mean of its times over the scenes) whose 8-bit PSNR reaches
 // the target and whose largest pixel error stays within the limit on every
-// scene; if none does, the one whose worst scene has the best PSNR.
+// scene, settings within 25 % of the cheapest tied and the smallest of them
+// taken; if none meets the targets, the one whose worst scene has the best PSNR.
 struct PresetChoice {
     std::string name;
     double psnrTarget = 0.0;    // dB, 8-bit

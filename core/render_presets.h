@@ -21,7 +21,7 @@ struct RenderPreset {
 // scene. Draft: 20 dB; Preview: 35 dB, no pixel off by more than 64 codes;
 // Final: 50 dB, no pixel off by more than 16 codes. Float met every target.
 inline constexpr std::array<RenderPreset, 3> kRenderPresets{{
-    {"Draft", 1, 3, Precision::Float},
+    {"Draft", 1, 2, Precision::Float},
     {"Preview", 16, 5, Precision::Float},
     {"Final", 128, 8, Precision::Float},
 }};

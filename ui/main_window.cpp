@@ -235,14 +235,13 @@ void MainWindow::buildMenus() {
     renderMenu->addAction(tradeoffView_->cancelMeasureAction());
 
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
-    viewMenu->addAction(tr("Reset Camera"), QKeySequence(Qt::Key_Home), this, [this] {
-        QKeyEvent home(QEvent::KeyPress, Qt::Key_Home, Qt::NoModifier);
-        QApplication::sendEvent(view_, &home);
-    });
-    viewMenu->addAction(tr("Frame Selected Sphere"), QKeySequence(Qt::Key_F), this, [this] {
-        QKeyEvent f(QEvent::KeyPress, Qt::Key_F, Qt::NoModifier);
-        QApplication::sendEvent(view_, &f);
-    });
+    QMenu* cameraMenu = viewMenu->addMenu(tr("&Camera"));
+    for (QAction* a : view_->cameraActions()) {
+        if (a->shortcutContext() == Qt::WindowShortcut)
+            viewMenu->insertAction(cameraMenu->menuAction(), a);
+        else
+            cameraMenu->addAction(a);
+    }
     viewMenu->addSeparator();
     for (QDockWidget* dock : findChildren<QDockWidget*>())
         viewMenu->addAction(dock->toggleViewAction());

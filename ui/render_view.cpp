@@ -1,11 +1,12 @@
 #include "render_view.h"
 
-#include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QWheelEvent>
 
 #include <cmath>
+#include <functional>
+#include <vector>
 
 #include "camera_control.h"
 #include "scene_document.h"
@@ -24,6 +25,7 @@ RenderView::RenderView(SceneDocument* doc, QWidget* parent) : QWidget(parent), d
     setMouseTracking(false);
     setMinimumSize(160, 120);
     setAttribute(Qt::WA_OpaquePaintEvent);
+    buildCameraActions();
 }
 
 void RenderView::setFrame(const QImage& image) {
@@ -109,46 +111,109 @@ void RenderView::wheelEvent(QWheelEvent* e) {
     e->accept();
 }
 
-void RenderView::keyPressEvent(QKeyEvent* e) {
-    const Camera& c = doc_->scene().camera;
-    switch (e->key()) {
-        case Qt::Key_Left:
-            return moveCamera(tr("Orbit camera"), orbit(c, kKeyOrbit, 0));
-        case Qt::Key_Right:
-            return moveCamera(tr("Orbit camera"), orbit(c, -kKeyOrbit, 0));
-        case Qt::Key_Up:
-            return moveCamera(tr("Orbit camera"), orbit(c, 0, kKeyOrbit));
-        case Qt::Key_Down:
-            return moveCamera(tr("Orbit camera"), orbit(c, 0, -kKeyOrbit));
-        case Qt::Key_W:
-            return moveCamera(tr("Move camera"), walk(c, 0, 0, kKeyWalk));
-        case Qt::Key_S:
-            return moveCamera(tr("Move camera"), walk(c, 0, 0, -kKeyWalk));
-        case Qt::Key_A:
-            return moveCamera(tr("Move camera"), walk(c, -kKeyWalk, 0, 0));
-        case Qt::Key_D:
-            return moveCamera(tr("Move camera"), walk(c, kKeyWalk, 0, 0));
-        case Qt::Key_E:
-            return moveCamera(tr("Move camera"), walk(c, 0, kKeyWalk, 0));
-        case Qt::Key_Q:
-            return moveCamera(tr("Move camera"), walk(c, 0, -kKeyWalk, 0));
-        case Qt::Key_Plus:
-        case Qt::Key_Equal:
-            return moveCamera(tr("Zoom"), zoom(c, 0.9));
-        case Qt::Key_Minus:
-            return moveCamera(tr("Zoom"), zoom(c, 1 / 0.9));
-        case Qt::Key_Home:
-            return moveCamera(tr("Reset camera"), home_);
-        case Qt::Key_F: {
-            const Scene& s = doc_->scene();
-            if (selectedSphere_ < 0 || selectedSphere_ >= int(s.spheres.size())) return;
-            const Sphere& sp = s.spheres[selectedSphere_];
-            return moveCamera(tr("Frame %1").arg(QString::fromStdString(sp.name)),
-                              frameSphere(c, sp.center, sp.radius));
-        }
-        default:
-            QWidget::keyPressEvent(e);
+void RenderView::resetCamera() {
+    moveCamera(tr("Reset camera"), home_);
+}
+
+void RenderView::frameSelectedSphere() {
+    const Scene& s = doc_->scene();
+    if (selectedSphere_ < 0 || selectedSphere_ >= int(s.spheres.size())) return;
+    const Sphere& sp = s.spheres[selectedSphere_];
+    moveCamera(tr("Frame %1").arg(QString::fromStdString(sp.name)),
+               frameSphere(s.camera, sp.center, sp.radius));
+}
+
+void RenderView::buildCameraActions() {
+    // Each action calls the camera code itself: never a synthetic key event,
+    // which would come back to the same shortcut (it overflowed the stack).
+    struct Entry {
+        const char* name;
+        QString text;
+        QList<QKeySequence> keys;
+        std::function<void()> run;
+        // Reset and Frame also sit in the View menu, so they work from anywhere.
+        Qt::ShortcutContext context = Qt::WidgetShortcut;
+    };
+    auto move = [this](QString text, std::function<Camera(const Camera&)> f) {
+        return [this, text, f] { moveCamera(text, f(doc_->scene().camera)); };
+    };
+    const QString orbitText = tr("Orbit camera"), walkText = tr("Move camera");
+    const std::vector<Entry> entries = {
+        {"orbitLeft",
+         tr("Orbit Left"),
+         {Qt::Key_Left},
+         move(orbitText, [](const Camera& c) { return orbit(c, kKeyOrbit, 0); })},
+        {"orbitRight",
+         tr("Orbit Right"),
+         {Qt::Key_Right},
+         move(orbitText, [](const Camera& c) { return orbit(c, -kKeyOrbit, 0); })},
+        {"orbitUp",
+         tr("Orbit Up"),
+         {Qt::Key_Up},
+         move(orbitText, [](const Camera& c) { return orbit(c, 0, kKeyOrbit); })},
+        {"orbitDown",
+         tr("Orbit Down"),
+         {Qt::Key_Down},
+         move(orbitText, [](const Camera& c) { return orbit(c, 0, -kKeyOrbit); })},
+        {"walkForward",
+         tr("Walk Forward"),
+         {Qt::Key_W},
+         move(walkText, [](const Camera& c) { return walk(c, 0, 0, kKeyWalk); })},
+        {"walkBack",
+         tr("Walk Back"),
+         {Qt::Key_S},
+         move(walkText, [](const Camera& c) { return walk(c, 0, 0, -kKeyWalk); })},
+        {"walkLeft",
+         tr("Walk Left"),
+         {Qt::Key_A},
+         move(walkText, [](const Camera& c) { return walk(c, -kKeyWalk, 0, 0); })},
+        {"walkRight",
+         tr("Walk Right"),
+         {Qt::Key_D},
+         move(walkText, [](const Camera& c) { return walk(c, kKeyWalk, 0, 0); })},
+        {"walkUp",
+         tr("Rise"),
+         {Qt::Key_E},
+         move(walkText, [](const Camera& c) { return walk(c, 0, kKeyWalk, 0); })},
+        {"walkDown",
+         tr("Sink"),
+         {Qt::Key_Q},
+         move(walkText, [](const Camera& c) { return walk(c, 0, -kKeyWalk, 0); })},
+        {"zoomIn",
+         tr("Zoom In"),
+         {Qt::Key_Plus, Qt::Key_Equal},
+         move(tr("Zoom"), [](const Camera& c) { return zoom(c, 0.9); })},
+        {"zoomOut",
+         tr("Zoom Out"),
+         {Qt::Key_Minus},
+         move(tr("Zoom"), [](const Camera& c) { return zoom(c, 1 / 0.9); })},
+        {"resetCamera",
+         tr("Reset Camera"),
+         {Qt::Key_Home},
+         [this] { resetCamera(); },
+         Qt::WindowShortcut},
+        {"frameSelected",
+         tr("Frame Selected Sphere"),
+         {Qt::Key_F},
+         [this] { frameSelectedSphere(); },
+         Qt::WindowShortcut},
+    };
+    for (const Entry& e : entries) {
+        auto* action = new QAction(e.text, this);
+        action->setObjectName(QLatin1String(e.name));
+        action->setShortcuts(e.keys);
+        action->setShortcutContext(e.context);
+        connect(action, &QAction::triggered, this, e.run);
+        addAction(action);
+        cameraActions_.push_back(action);
     }
+}
+
+QList<QPair<QString, QString>> RenderView::mouseControls() {
+    return {{tr("Left drag"), tr("Orbit the camera")},
+            {tr("Right or middle drag"), tr("Pan the camera")},
+            {tr("Wheel"), tr("Move the camera nearer or farther (dolly)")},
+            {tr("Click"), tr("Select the sphere under the cursor")}};
 }
 
 }  // namespace whitted::ui

@@ -131,4 +131,10 @@ Image readImage(const fs::path& file) {
     return image;
 }
 
+std::string openImageIOVersion() {
+    const int v = OIIO::openimageio_version();  // 20407 for 2.4.7
+    return std::to_string(v / 10000) + "." + std::to_string(v / 100 % 100) + "." +
+           std::to_string(v % 100);
+}
+
 }  // namespace whitted

@@ -56,4 +56,7 @@ void writeImage(const Image& image, const std::filesystem::path& file,
 // decoded from sRGB). Throws ImageIoError.
 Image readImage(const std::filesystem::path& file);
 
+// The version of the OpenImageIO library in use, "2.4.7" (for About boxes).
+std::string openImageIOVersion();
+
 }  // namespace whitted

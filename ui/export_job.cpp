@@ -12,6 +12,7 @@
 #include <QSpinBox>
 
 #include "image_io.h"
+#include "image_size_fields.h"
 #include "renderer.h"
 
 namespace whitted::ui {
@@ -54,12 +55,10 @@ ExportDialog::ExportDialog(const Scene& scene, const QString& directory, const Q
         return s;
     };
     const RenderSettings& r = scene.render;
-    width_ = spin("exportWidth", 1, kMaxImageSize, r.width);
-    height_ = spin("exportHeight", 1, kMaxImageSize, r.height);
+    size_ = new ImageSizeFields(r.width, r.height, QStringLiteral("export"));
     samples_ = spin("exportSamples", 1, kMaxSamplesPerPixel, r.samplesPerPixel);
     depth_ = spin("exportDepth", 0, kMaxDepth, r.maxDepth);
-    form->addRow(tr("Width"), width_);
-    form->addRow(tr("Height"), height_);
+    form->addRow(tr("Size"), size_);
     form->addRow(tr("Samples per pixel"), samples_);
     form->addRow(tr("Max depth"), depth_);
     precision_ = new QComboBox;
@@ -111,8 +110,8 @@ void ExportDialog::browse() {
 ExportSettings ExportDialog::settings() const {
     ExportSettings s;
     s.path = path_->text();
-    s.render.width = width_->value();
-    s.render.height = height_->value();
+    s.render.width = size_->imageWidth();
+    s.render.height = size_->imageHeight();
     s.render.samplesPerPixel = samples_->value();
     s.render.maxDepth = depth_->value();
     s.render.precision = static_cast<Precision>(precision_->currentData().toInt());

@@ -18,6 +18,8 @@ class QSpinBox;
 
 namespace whitted::ui {
 
+class ImageSizeFields;
+
 struct ExportSettings {
     QString path;
     RenderSettings render;
@@ -37,7 +39,8 @@ class ExportDialog : public QDialog {
 
     QLineEdit* path_;
     QComboBox* format_;
-    QSpinBox *width_, *height_, *samples_, *depth_;
+    ImageSizeFields* size_;
+    QSpinBox *samples_, *depth_;
     QComboBox* precision_;
 };
 

@@ -1,11 +1,10 @@
 #include "main_window.h"
 
-#include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QMenuBar>
+#include <QMenu>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QProgressDialog>
@@ -181,72 +180,6 @@ void MainWindow::sceneReplaced() {
     tradeoffView_->sceneReplaced();
 }
 
-void MainWindow::buildMenus() {
-    QMenu* file = menuBar()->addMenu(tr("&File"));
-    file->addAction(tr("&New"), QKeySequence::New, this, [this] {
-        if (!maybeSave()) return;
-        doc_.reset(newSceneTemplate(), QString());
-        sceneReplaced();
-    });
-    file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::openDialog);
-    recentMenu_ = file->addMenu(tr("Open &Recent"));
-    file->addSeparator();
-    file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
-    file->addAction(tr("Save &As…"), QKeySequence::SaveAs, this, &MainWindow::saveAs);
-    file->addSeparator();
-    file->addAction(tr("&Export Image…"), QKeySequence(tr("Ctrl+E")), this,
-                    &MainWindow::exportDialog);
-    file->addSeparator();
-    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
-
-    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-    QAction* undo = doc_.undoStack()->createUndoAction(this, tr("&Undo"));
-    undo->setShortcuts(QKeySequence::Undo);
-    QAction* redo = doc_.undoStack()->createRedoAction(this, tr("&Redo"));
-    redo->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence(tr("Ctrl+Y"))});
-    edit->addAction(undo);
-    edit->addAction(redo);
-    edit->addSeparator();
-    edit->addAction(scenePanel_->addAction());
-    edit->addAction(scenePanel_->duplicateAction());
-    edit->addAction(scenePanel_->deleteAction());
-    edit->addAction(scenePanel_->renameAction());
-
-    QMenu* renderMenu = menuBar()->addMenu(tr("&Render"));
-    // The Render tab's presets, from the keyboard too.
-    for (std::size_t i = 0; i < kRenderPresets.size(); ++i) {
-        const RenderPreset& preset = kRenderPresets[i];
-        const QString name = QString::fromUtf8(preset.name.data(), qsizetype(preset.name.size()));
-        QAction* a = renderMenu->addAction(tr("%1 Preset").arg(name), this, [this, &preset] {
-            QString error;
-            if (!PresetControls::apply(&doc_, preset, &error))
-                showError(tr("Cannot apply preset"), error);
-        });
-        a->setShortcut(QKeySequence(tr("Ctrl+%1").arg(i + 1)));
-        a->setObjectName(QStringLiteral("preset%1").arg(name));
-    }
-    renderMenu->addSeparator();
-    tradeoffView_->pinAction()->setShortcut(QKeySequence(tr("Ctrl+Shift+P")));
-    renderMenu->addAction(tradeoffView_->pinAction());
-    renderMenu->addAction(tradeoffView_->unpinAction());
-    renderMenu->addSeparator();
-    tradeoffView_->measureAction()->setShortcut(QKeySequence(tr("Ctrl+Shift+M")));
-    renderMenu->addAction(tradeoffView_->measureAction());
-    renderMenu->addAction(tradeoffView_->cancelMeasureAction());
-
-    QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
-    QMenu* cameraMenu = viewMenu->addMenu(tr("&Camera"));
-    for (QAction* a : view_->cameraActions()) {
-        if (a->shortcutContext() == Qt::WindowShortcut)
-            viewMenu->insertAction(cameraMenu->menuAction(), a);
-        else
-            cameraMenu->addAction(a);
-    }
-    viewMenu->addSeparator();
-    for (QDockWidget* dock : findChildren<QDockWidget*>())
-        viewMenu->addAction(dock->toggleViewAction());
-}
-
 void MainWindow::onFrame(const RenderFrame& frame) {
     // Stale: a newer request exists, and its frames must not be overwritten.
     if (frame.generation != worker_.latestGeneration()) return;
@@ -292,9 +225,14 @@ bool MainWindow::save() {
 bool MainWindow::saveAs() {
     QString start = doc_.filePath();
     if (start.isEmpty()) start = QDir(lastDirectory()).filePath(tr("untitled.json"));
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Save Scene As"), start, tr(kSceneFilter));
-    return !path.isEmpty() && saveTo(path);
+    QFileDialog dialog(this, tr("Save Scene As"), start, tr(kSceneFilter));
+    dialog.setObjectName(QStringLiteral("saveAsDialog"));
+    dialog.setAcceptMode(QFileDialog::AcceptSave);
+    // A name typed without ".json" gets it, and the overwrite question is
+    // asked of the name that will be written.
+    dialog.setDefaultSuffix(QStringLiteral("json"));
+    if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty()) return false;
+    return saveTo(dialog.selectedFiles().constFirst());
 }
 
 bool MainWindow::saveTo(const QString& path) {

@@ -1,6 +1,7 @@
 // The editor's main window: the render view in the middle, the scene lists on
 // the left, properties, camera and render settings on the right, the Float vs
-// Double and Trade-off docks, and the File, Edit, Render and View menus. It
+// Double and Trade-off docks, the File, Edit, Render, View and Help menus and
+// the tool bar (main_window_menus.cpp). It
 // owns the document and the render worker and wires them together: every
 // scene change restarts the render, every frame that is not stale reaches the
 // view, the status bar and the Trade-off dock.
@@ -12,11 +13,15 @@
 
 #include <memory>
 
+#include "help_dialogs.h"
 #include "render_worker.h"
 #include "scene_document.h"
 #include "tradeoff_record.h"
 
+class QAction;
+class QActionGroup;
 class QDockWidget;
+class QToolBar;
 class QMenu;
 class QProgressDialog;
 
@@ -76,7 +81,17 @@ class MainWindow : public QMainWindow {
     void dropEvent(QDropEvent* e) override;
 
   private:
+    // main_window_menus.cpp
     void buildMenus();
+    void buildFileMenu();
+    void buildEditMenu();
+    void buildRenderMenu();
+    void buildViewMenu();
+    void buildHelpMenu();
+    void buildToolBar();
+    void tickPreset();  // ticks the Render menu's preset the settings match
+    QList<ControlRow> controls();
+
     void buildDocks();
     void buildTradeoffDock();
     // Shown under the settings, a dock squeezed small gets half of the column.
@@ -107,6 +122,10 @@ class MainWindow : public QMainWindow {
     TradeoffView* tradeoffView_ = nullptr;
     FloatRangeWarning* floatRangeWarning_ = nullptr;
     QMenu* recentMenu_ = nullptr;
+    QToolBar* toolBar_ = nullptr;
+    QActionGroup* presetGroup_ = nullptr;
+    QAction *openAction_ = nullptr, *saveAction_ = nullptr, *exportAction_ = nullptr;
+    QAction *undoAction_ = nullptr, *redoAction_ = nullptr;
     QLabel* passLabel_ = nullptr;
     QLabel* samplesLabel_ = nullptr;
     QLabel* timeLabel_ = nullptr;

@@ -13,6 +13,7 @@
 #include <QVBoxLayout>
 
 #include "color_button.h"
+#include "image_size_fields.h"
 #include "number_field.h"
 #include "preset_controls.h"
 
@@ -421,6 +422,7 @@ RenderSettingsPanel::RenderSettingsPanel(SceneDocument* doc, TradeoffRecord* rec
            tr("image width"), tr(" px"));
     addInt(tr("Height:"), QStringLiteral("renderHeight"), 1, kMaxImageSize, &RenderSettings::height,
            tr("image height"), tr(" px"));
+    form->addRow(tr("Common size:"), makeCommonSizeChooser(doc_));
     addInt(tr("Max depth:"), QStringLiteral("renderMaxDepth"), 0, kMaxDepth,
            &RenderSettings::maxDepth, tr("maximum depth"), QString());
     addInt(tr("Samples per pixel:"), QStringLiteral("renderSamples"), 1, kMaxSamplesPerPixel,

@@ -1,0 +1,353 @@
+// GUI tests of the editor's commands as a newcomer meets them (issue 11, items
+// 1, 2, 3, 9, 13's preset tick and 14): every shortcut the Keyboard and Mouse
+// help lists, pressed in a shown window; Ctrl+Z from inside a field; Save As
+// without ".json"; the export size locked to the scene's aspect; the Help
+// menu, the About box, the tool bar and the tool tips.
+#include <QAbstractButton>
+#include <QApplication>
+#include <QComboBox>
+#include <QDialog>
+#include <QFileDialog>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMessageBox>
+#include <QSettings>
+#include <QSpinBox>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QTest>
+#include <QTimer>
+#include <QToolBar>
+#include <QToolButton>
+#include <QUndoStack>
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+
+#include "export_job.h"
+#include "help_dialogs.h"
+#include "image_io.h"
+#include "main_window.h"
+#include "render_view.h"
+#include "scene_io.h"
+#include "scene_panel.h"
+#include "test_support.h"
+#include "tradeoff_view.h"
+
+namespace whitted::ui {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kWidth = 160, kHeight = 120;
+const std::string kSeedScene = WHITTED_SCENES_DIR "/seed.json";
+
+// Closes every modal dialog as soon as it opens (Open, Save As, Export,
+// questions), so that pressing their shortcuts cannot block the test.
+class ModalCloser {
+  public:
+    ModalCloser() {
+        timer_.setInterval(20);
+        QObject::connect(&timer_, &QTimer::timeout, [this] {
+            if (QWidget* modal = QApplication::activeModalWidget()) {
+                ++closed;
+                if (auto* dialog = qobject_cast<QDialog*>(modal))
+                    dialog->reject();
+                else
+                    modal->close();
+            }
+        });
+        timer_.start();
+    }
+    int closed = 0;
+
+  private:
+    QTimer timer_;
+};
+
+// Runs `act` on the first modal dialog of type D that opens within 5 s.
+template <class D>
+void whenModalOpens(std::function<void(D*)> act) {
+    auto* poll = new QTimer;
+    auto tries = std::make_shared<int>(0);
+    QObject::connect(poll, &QTimer::timeout, [poll, act, tries] {
+        if (auto* d = qobject_cast<D*>(QApplication::activeModalWidget())) {
+            poll->deleteLater();
+            act(d);
+        } else if (++*tries > 250) {
+            poll->deleteLater();
+        }
+    });
+    poll->start(20);
+}
+
+class EditorCommandsTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        Scene seed = loadScene(kSeedScene);
+        seed.render.width = kWidth;
+        seed.render.height = kHeight;
+        scenePath = QString::fromStdString((dir.path() / "seed.json").string());
+        saveScene(seed, scenePath.toStdString());
+        window = std::make_unique<MainWindow>();
+        window->resize(1200, 800);
+        window->show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+        QApplication::setActiveWindow(window.get());
+        ASSERT_TRUE(QTest::qWaitForWindowActive(window.get()));
+        ASSERT_TRUE(window->openFile(scenePath)) << window->lastError().toStdString();
+        doc = window->document();
+        view = window->renderView();
+    }
+    void TearDown() override { window.reset(); }
+
+    QAction* action(const QString& name) { return window->findChild<QAction*>(name); }
+
+    test::TempDir dir;
+    QString scenePath;
+    std::unique_ptr<MainWindow> window;
+    SceneDocument* doc = nullptr;
+    RenderView* view = nullptr;
+};
+
+// Item 1 and 14: the help's table is what the keys do. Every shortcut it
+// lists is pressed, the editor lives on, and Home and F did their job.
+TEST_F(EditorCommandsTest, EveryListedShortcut_PressedInShownWindow_EditorLivesOn) {
+    const QList<ControlRow> rows = controlRows(window.get(), RenderView::mouseControls());
+    ModalCloser closer;
+    int pressed = 0;
+    QList<QKeySequence> quit;
+    for (const ControlRow& row : rows) {
+        if (row.mouse) continue;
+        for (const QString& keys : row.keys.split(QStringLiteral(", "))) {
+            const QKeySequence seq = QKeySequence::fromString(keys, QKeySequence::NativeText);
+            ASSERT_FALSE(seq.isEmpty()) << keys.toStdString();
+            if (seq == QKeySequence(QStringLiteral("Ctrl+Q"))) {
+                quit << seq;
+                continue;
+            }
+            // A sphere selected and the view focused: F and the camera keys have work to do.
+            window->scenePanel()->select(ItemKind::Sphere, 0);
+            view->setFocus();
+            QTest::keySequence(view, seq);
+            QTest::qWait(5);
+            ++pressed;
+            ASSERT_TRUE(window->isVisible()) << "after " << keys.toStdString();
+        }
+    }
+    EXPECT_GE(pressed, 25);
+    EXPECT_GT(closer.closed, 0) << "Open, Save As and Export open their dialogs";
+
+    // Home returns to the opened camera; F looks at the selected sphere.
+    window->openFile(scenePath);
+    const Camera home = doc->scene().camera;
+    QApplication::setActiveWindow(window.get());
+    view->setFocus();
+
+    QTest::keyClick(view, Qt::Key_Left);
+    ASSERT_FALSE(doc->scene().camera == home) << "Left orbits";
+    QTest::keyClick(view, Qt::Key_Home);
+    EXPECT_TRUE(doc->scene().camera == home);
+    window->scenePanel()->select(ItemKind::Sphere, 1);
+    QTest::keyClick(view, Qt::Key_F);
+    EXPECT_TRUE(doc->scene().camera.lookAt == doc->scene().spheres[1].center);
+    // The menu items do the same, without a key.
+    action(QStringLiteral("resetCamera"))->trigger();
+    EXPECT_TRUE(doc->scene().camera == home);
+
+    window->openFile(scenePath);  // unmodified: Quit asks nothing
+    ASSERT_EQ(quit.size(), 1);
+    QTest::keySequence(view, quit.front());
+    EXPECT_FALSE(window->isVisible()) << "Ctrl+Q closes the unmodified window";
+}
+
+// Item 2: scene undo works while the focus is still in the field just edited.
+TEST_F(EditorCommandsTest, CtrlZ_WithFocusInEditedField_UndoesTheSceneEdit) {
+    window->scenePanel()->select(ItemKind::Sphere, 0);
+    auto* radius = window->findChild<QDoubleSpinBox*>(QStringLiteral("sphereRadius"));
+    ASSERT_NE(radius, nullptr);
+    const double before = doc->scene().spheres[0].radius;
+    radius->setFocus();
+    radius->selectAll();
+    QTest::keyClicks(radius, QStringLiteral("1.25"));
+    QTest::keyClick(radius, Qt::Key_Return);
+    ASSERT_DOUBLE_EQ(doc->scene().spheres[0].radius, 1.25);
+    ASSERT_TRUE(radius->hasFocus());
+    while (doc->scene().spheres[0].radius != before && doc->undoStack()->canUndo())
+        QTest::keySequence(radius, QKeySequence::Undo);
+    EXPECT_DOUBLE_EQ(doc->scene().spheres[0].radius, before);
+    EXPECT_DOUBLE_EQ(radius->value(), before) << "the field shows the undone value";
+    EXPECT_FALSE(window->isWindowModified());
+    QTest::keySequence(radius, QKeySequence(QStringLiteral("Ctrl+Shift+Z")));
+    EXPECT_NE(doc->scene().spheres[0].radius, before) << "Ctrl+Shift+Z redoes";
+}
+
+// Item 3: a name typed without ".json" is saved as name.json.
+TEST_F(EditorCommandsTest, SaveAs_NameWithoutExtension_WritesDotJson) {
+    const QString typed = QString::fromStdString((dir.path() / "my scene").string());
+    whenModalOpens<QFileDialog>([typed](QFileDialog* d) {
+        auto* name = d->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"));
+        name->setText(typed);
+        QTest::keyClick(name, Qt::Key_Return);
+    });
+    action(QStringLiteral("Save As"))->trigger();
+    EXPECT_TRUE(fs::exists(dir.path() / "my scene.json"));
+    EXPECT_FALSE(fs::exists(dir.path() / "my scene"));
+    EXPECT_EQ(doc->filePath(), typed + QStringLiteral(".json"));
+    EXPECT_EQ(loadScene((dir.path() / "my scene.json").string()), doc->scene());
+}
+
+// Item 9: the export size keeps the scene's aspect unless unlocked, and says so.
+TEST_F(EditorCommandsTest, ExportSize_LockedToSceneAspect_UnlockedSaysFramingDiffers) {
+    Scene scene = doc->scene();
+    scene.render.width = 640;
+    scene.render.height = 480;
+    ExportDialog dialog(scene, QString::fromStdString(dir.path().string()), "out");
+    dialog.show();
+    auto* width = dialog.findChild<QSpinBox*>(QStringLiteral("exportWidth"));
+    auto* height = dialog.findChild<QSpinBox*>(QStringLiteral("exportHeight"));
+    auto* lock = dialog.findChild<QAbstractButton*>(QStringLiteral("exportAspectLock"));
+    auto* note = dialog.findChild<QLabel*>(QStringLiteral("exportAspectNote"));
+    ASSERT_TRUE(width && height && lock && note);
+    EXPECT_TRUE(lock->isChecked());
+    width->setValue(1920);
+    EXPECT_EQ(height->value(), 1440);
+    EXPECT_FALSE(note->isVisible());
+    height->setValue(300);
+    EXPECT_EQ(width->value(), 400);
+
+    lock->click();
+    width->setValue(1920);
+    height->setValue(1080);
+    EXPECT_TRUE(note->isVisible());
+    EXPECT_TRUE(note->text().contains(QStringLiteral("framed differently")));
+    EXPECT_EQ(dialog.settings().render.width, 1920);
+    EXPECT_EQ(dialog.settings().render.height, 1080);
+
+    // A common size of another aspect unlocks rather than bends it.
+    lock->click();
+    ASSERT_TRUE(lock->isChecked());
+    auto* common = dialog.findChild<QComboBox*>(QStringLiteral("exportCommonSize"));
+    const int fullHd = common->findText(QStringLiteral("Full HD"), Qt::MatchStartsWith);
+    ASSERT_GT(fullHd, 0);
+    common->setCurrentIndex(fullHd);
+    emit common->activated(fullHd);
+    EXPECT_EQ(width->value(), 1920);
+    EXPECT_EQ(height->value(), 1080);
+    EXPECT_FALSE(lock->isChecked());
+    EXPECT_TRUE(note->isVisible());
+}
+
+// Item 9: the Render tab picks a common size, one undo step, and the view frames it.
+TEST_F(EditorCommandsTest, RenderTabCommonSize_SetsSizeInOneStep_ViewTakesItsAspect) {
+    auto* common = window->findChild<QComboBox*>(QStringLiteral("renderCommonSize"));
+    ASSERT_NE(common, nullptr);
+    const int hd = common->findText(QStringLiteral("HD 720p"), Qt::MatchStartsWith);
+    ASSERT_GT(hd, 0);
+    const int steps = doc->undoStack()->count();
+    emit common->activated(hd);
+    EXPECT_EQ(doc->scene().render.width, 1280);
+    EXPECT_EQ(doc->scene().render.height, 720);
+    EXPECT_EQ(doc->undoStack()->count(), steps + 1);
+    const QRect r = view->imageRect();
+    EXPECT_NEAR(double(r.width()) / r.height(), 16.0 / 9.0, 0.02);
+    doc->undoStack()->undo();
+    EXPECT_EQ(doc->scene().render.width, kWidth);
+}
+
+// Item 13: the Render menu ticks the preset the settings match, and none when custom.
+TEST_F(EditorCommandsTest, PresetShortcut_TicksThatPreset_CustomTicksNone) {
+    QTest::keySequence(window.get(), QKeySequence(QStringLiteral("Ctrl+2")));
+    EXPECT_TRUE(action(QStringLiteral("presetPreview"))->isChecked());
+    EXPECT_FALSE(action(QStringLiteral("presetDraft"))->isChecked());
+    doc->edit("samples", [](Scene& s) { s.render.samplesPerPixel = 3; });
+    for (const char* name : {"presetDraft", "presetPreview", "presetFinal"})
+        EXPECT_FALSE(action(QString::fromLatin1(name))->isChecked()) << name;
+    doc->undoStack()->undo();
+    EXPECT_TRUE(action(QStringLiteral("presetPreview"))->isChecked());
+}
+
+// Item 14: F1 opens the table of every control, the camera keys and the mouse among them.
+TEST_F(EditorCommandsTest, KeyboardHelp_ListsEveryShortcutAndTheMouse) {
+    QTest::keySequence(window.get(), QKeySequence::HelpContents);
+    auto* dialog = window->findChild<QDialog*>(QStringLiteral("keyboardHelp"));
+    ASSERT_NE(dialog, nullptr);
+    auto* table = dialog->findChild<QTableWidget*>(QStringLiteral("controlsTable"));
+    ASSERT_NE(table, nullptr);
+    // One line per key: "Ctrl+Z = Undo".
+    QStringList lines;
+    for (int r = 0; r < table->rowCount(); ++r)
+        for (const QString& key : table->item(r, 1)->text().split(", "))
+            lines << key + " = " + table->item(r, 2)->text();
+    for (const QString& expected :
+         {QStringLiteral("Home = Reset Camera"), QStringLiteral("F = Frame Selected Sphere"),
+          QStringLiteral("Left = Orbit Left"), QStringLiteral("W = Walk Forward"),
+          QStringLiteral("Ctrl+Z = Undo"), QStringLiteral("Ctrl+S = Save"),
+          QStringLiteral("Left drag = Orbit the camera")})
+        EXPECT_TRUE(lines.contains(expected)) << expected.toStdString();
+    // Every action with a shortcut is listed with it.
+    for (const QAction* a : window->findChildren<QAction*>())
+        for (const QKeySequence& k : a->shortcuts()) {
+            bool found = false;
+            for (int r = 0; r < table->rowCount() && !found; ++r)
+                found = table->item(r, 1)->text().split(", ").contains(
+                    k.toString(QKeySequence::NativeText));
+            EXPECT_TRUE(found) << k.toString().toStdString() << " of " << a->text().toStdString();
+        }
+    dialog->close();
+}
+
+TEST_F(EditorCommandsTest, About_NamesVersionQtAndOpenImageIO) {
+    action(QStringLiteral("aboutAction"))->trigger();
+    auto* box = window->findChild<QMessageBox*>(QStringLiteral("aboutBox"));
+    ASSERT_NE(box, nullptr);
+    const QString text = box->text() + box->informativeText();
+    EXPECT_TRUE(text.contains(QStringLiteral("0.1.0"))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral("Qt ") + qVersion())) << text.toStdString();
+    EXPECT_TRUE(text.contains(QString::fromStdString("OpenImageIO " + openImageIOVersion())));
+    EXPECT_NE(openImageIOVersion().substr(0, 2), "0.");
+    box->close();
+}
+
+// Item 14: a tool bar with the common commands, icons, and keys in every tool tip.
+TEST_F(EditorCommandsTest, ToolBar_HasTheCommonCommandsWithIconsAndShortcutTips) {
+    auto* bar = window->findChild<QToolBar*>(QStringLiteral("mainToolBar"));
+    ASSERT_NE(bar, nullptr);
+    EXPECT_TRUE(bar->isVisible());
+    QStringList names;
+    for (QAction* a : bar->actions()) {
+        if (a->isSeparator()) continue;
+        QWidget* w = bar->widgetForAction(a);
+        auto* button = qobject_cast<QToolButton*>(w);
+        ASSERT_NE(button, nullptr);
+        // A pixmap, not only a name: the theme's or our own from resources/.
+        EXPECT_FALSE(button->icon().pixmap(24).isNull()) << button->text().toStdString();
+        names << (a->objectName().isEmpty() ? w->objectName() : a->objectName());
+    }
+    EXPECT_EQ(names.mid(0, 6),
+              QStringList({"Open", "Save", "undo", "redo", "Export Image", "presetButton"}));
+    EXPECT_EQ(names.size(), 7);
+    EXPECT_EQ(bar->actions().last(), window->tradeoffView()->pinAction());
+    for (const QAction* a : window->findChildren<QAction*>()) {
+        if (!a->shortcuts().isEmpty()) {
+            EXPECT_TRUE(a->toolTip().contains(a->shortcut().toString(QKeySequence::NativeText)))
+                << a->toolTip().toStdString();
+        }
+    }
+}
+
+}  // namespace
+}  // namespace whitted::ui
+
+int main(int argc, char** argv) {
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    QStandardPaths::setTestModeEnabled(true);
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName("WhittedTests");
+    QApplication::setApplicationName("test_editor_commands");
+    QSettings().clear();
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}

@@ -1,11 +1,11 @@
 #include "image_size_fields.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QGridLayout>
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QSpinBox>
-#include <QToolButton>
 
 #include <algorithm>
 #include <cmath>
@@ -81,10 +81,9 @@ ImageSizeFields::ImageSizeFields(int sceneWidth, int sceneHeight, const QString&
     };
     width_ = spin(QStringLiteral("Width"), sceneWidth);
     height_ = spin(QStringLiteral("Height"), sceneHeight);
-    lock_ = new QToolButton;
+    lock_ = new QCheckBox(
+        tr("Keep the scene's aspect ratio, %1").arg(sizeText(sceneWidth, sceneHeight)));
     lock_->setObjectName(prefix + QStringLiteral("AspectLock"));
-    lock_->setText(tr("Keep scene aspect"));
-    lock_->setCheckable(true);
     lock_->setChecked(true);
     lock_->setToolTip(tr("Keep width and height in the scene's aspect ratio (%1), so the image "
                          "is framed as the view shows it")
@@ -100,15 +99,15 @@ ImageSizeFields::ImageSizeFields(int sceneWidth, int sceneHeight, const QString&
     grid->setContentsMargins(0, 0, 0, 0);
     grid->addWidget(new QLabel(tr("Width")), 0, 0);
     grid->addWidget(width_, 0, 1);
-    grid->addWidget(lock_, 0, 2, 2, 1);
     grid->addWidget(new QLabel(tr("Height")), 1, 0);
     grid->addWidget(height_, 1, 1);
-    grid->addWidget(common_, 2, 0, 1, 3);
-    grid->addWidget(note_, 3, 0, 1, 3);
+    grid->addWidget(lock_, 2, 0, 1, 2);
+    grid->addWidget(common_, 3, 0, 1, 2);
+    grid->addWidget(note_, 4, 0, 1, 2);
 
     connect(width_, &QSpinBox::valueChanged, this, &ImageSizeFields::widthChanged);
     connect(height_, &QSpinBox::valueChanged, this, &ImageSizeFields::heightChanged);
-    connect(lock_, &QToolButton::toggled, this, [this](bool locked) {
+    connect(lock_, &QCheckBox::toggled, this, [this](bool locked) {
         if (locked) widthChanged(width_->value());
         updateNote();
     });

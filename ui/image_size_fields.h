@@ -12,7 +12,7 @@
 class QComboBox;
 class QLabel;
 class QSpinBox;
-class QToolButton;
+class QCheckBox;
 
 namespace whitted::ui {
 
@@ -54,7 +54,7 @@ class ImageSizeFields : public QWidget {
     double sceneAspect_;
     QSpinBox* width_;
     QSpinBox* height_;
-    QToolButton* lock_;
+    QCheckBox* lock_;
     QComboBox* common_;
     QLabel* note_;
 };

@@ -16,6 +16,7 @@
 #include <filesystem>
 
 #include "autosave.h"
+#include "gui_test_main.h"
 #include "main_window.h"
 #include "scene_io.h"
 #include "test_support.h"
@@ -157,11 +158,5 @@ TEST_F(AutosaveTest, KilledEditor_DiscardKeepsTheSceneAndRemovesTheCopy) {
 }  // namespace whitted::ui
 
 int main(int argc, char** argv) {
-    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
-    QStandardPaths::setTestModeEnabled(true);
-    QApplication app(argc, argv);
-    QApplication::setOrganizationName("WhittedTests");
-    QApplication::setApplicationName("test_autosave");
-    ::testing::InitGoogleTest(&argc, argv);
-    return RUN_ALL_TESTS();
+    return whitted::test::runGuiTests(argc, argv, "test_autosave", false);
 }

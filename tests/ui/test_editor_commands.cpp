@@ -27,6 +27,7 @@
 #include <memory>
 
 #include "export_job.h"
+#include "gui_test_main.h"
 #include "help_dialogs.h"
 #include "image_io.h"
 #include "main_window.h"
@@ -342,12 +343,5 @@ TEST_F(EditorCommandsTest, ToolBar_HasTheCommonCommandsWithIconsAndShortcutTips)
 }  // namespace whitted::ui
 
 int main(int argc, char** argv) {
-    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
-    QStandardPaths::setTestModeEnabled(true);
-    QApplication app(argc, argv);
-    QApplication::setOrganizationName("WhittedTests");
-    QApplication::setApplicationName("test_editor_commands");
-    QSettings().clear();
-    ::testing::InitGoogleTest(&argc, argv);
-    return RUN_ALL_TESTS();
+    return whitted::test::runGuiTests(argc, argv, "test_editor_commands");
 }

@@ -31,6 +31,7 @@
 #include "camera_control.h"
 #include "color_button.h"
 #include "export_job.h"
+#include "gui_test_main.h"
 #include "image_convert.h"
 #include "image_io.h"
 #include "main_window.h"
@@ -681,15 +682,6 @@ TEST_F(MainWindowTest, Stress_RandomEditsUndoRedoWhileRendering_FinalViewIsFresh
 }  // namespace
 }  // namespace whitted::ui
 
-// QApplication for the whole run; QSettings (recent files, window state) in
-// Qt's test location, never the user's.
 int main(int argc, char** argv) {
-    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
-    QStandardPaths::setTestModeEnabled(true);
-    QApplication app(argc, argv);
-    QApplication::setOrganizationName("WhittedTests");
-    QApplication::setApplicationName("test_main_window");
-    QSettings().clear();
-    ::testing::InitGoogleTest(&argc, argv);
-    return RUN_ALL_TESTS();
+    return whitted::test::runGuiTests(argc, argv, "test_main_window");
 }

@@ -1,0 +1,27 @@
+// The main() of the editor's GUI tests: a QApplication for the whole run,
+// offscreen unless QT_QPA_PLATFORM says otherwise, and settings and app data
+// in Qt's test locations under the test's own name, never the user's.
+#pragma once
+
+#include <QApplication>
+#include <QSettings>
+#include <QStandardPaths>
+
+#include <gtest/gtest.h>
+
+namespace whitted::test {
+
+// Runs every test of the executable; `clearSettings` starts from no saved
+// window state or recent files.
+inline int runGuiTests(int argc, char** argv, const char* name, bool clearSettings = true) {
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    QStandardPaths::setTestModeEnabled(true);
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName("WhittedTests");
+    QApplication::setApplicationName(QString::fromLatin1(name));
+    if (clearSettings) QSettings().clear();
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}
+
+}  // namespace whitted::test

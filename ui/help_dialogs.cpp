@@ -1,11 +1,17 @@
 #include "help_dialogs.h"
 
+#include <QAbstractButton>
+#include <QAbstractSlider>
+#include <QAbstractSpinBox>
 #include <QAction>
 #include <QApplication>
+#include <QComboBox>
 #include <QDialog>
 #include <QDialogButtonBox>
+#include <QFormLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -121,6 +127,44 @@ void addShortcutsToToolTips(QWidget* root) {
         if (a->shortcuts().isEmpty() || a->property("keysInToolTip").toBool()) continue;
         a->setToolTip(QStringLiteral("%1 (%2)").arg(a->toolTip(), keysText(a)));
         a->setProperty("keysInToolTip", true);
+    }
+}
+
+namespace {
+
+QList<QWidget*> inputsOf(QWidget* field) {
+    QList<QWidget*> inputs;
+    auto isInput = [](QWidget* w) {
+        return qobject_cast<QAbstractSpinBox*>(w) || qobject_cast<QComboBox*>(w) ||
+               qobject_cast<QLineEdit*>(w) || qobject_cast<QAbstractSlider*>(w) ||
+               qobject_cast<QAbstractButton*>(w);
+    };
+    if (isInput(field)) inputs << field;
+    for (QWidget* w : field->findChildren<QWidget*>())
+        if (isInput(w) && !qobject_cast<QAbstractSpinBox*>(w->parentWidget()) &&
+            !qobject_cast<QComboBox*>(w->parentWidget()))
+            inputs << w;
+    return inputs;
+}
+
+}  // namespace
+
+void addFieldToolTips(QWidget* root) {
+    for (QFormLayout* form : root->findChildren<QFormLayout*>()) {
+        for (int row = 0; row < form->rowCount(); ++row) {
+            auto* label = form->itemAt(row, QFormLayout::LabelRole);
+            auto* field = form->itemAt(row, QFormLayout::FieldRole);
+            auto* labelWidget = label ? qobject_cast<QLabel*>(label->widget()) : nullptr;
+            if (!labelWidget || !field || !field->widget()) continue;
+            QString name = labelWidget->text().remove(QLatin1Char('&'));
+            if (name.endsWith(QLatin1Char(':'))) name.chop(1);
+            for (QWidget* input : inputsOf(field->widget())) {
+                const QString own = input->toolTip();
+                // One-letter tips name a vector's part: keep them, after the row.
+                if (own.size() > 1) continue;
+                input->setToolTip(own.isEmpty() ? name : QStringLiteral("%1: %2").arg(name, own));
+            }
+        }
     }
 }
 

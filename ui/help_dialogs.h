@@ -35,4 +35,9 @@ QDialog* showAbout(QWidget* window);
 // action under `root` that has one.
 void addShortcutsToToolTips(QWidget* root);
 
+// Gives every input of a form under `root` that has no tool tip one named
+// after its row ("Radius"; "Centre: x" for a vector's parts), so that hovering
+// any field says what it edits.
+void addFieldToolTips(QWidget* root);
+
 }  // namespace whitted::ui

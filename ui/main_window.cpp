@@ -51,6 +51,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setCentralWidget(view_);
     buildDocks();
     buildMenus();
+    addFieldToolTips(this);
 
     passLabel_ = new QLabel;
     samplesLabel_ = new QLabel;

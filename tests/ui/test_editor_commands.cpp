@@ -13,6 +13,7 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QSettings>
+#include <QSlider>
 #include <QSpinBox>
 #include <QStandardPaths>
 #include <QTableWidget>
@@ -337,6 +338,25 @@ TEST_F(EditorCommandsTest, ToolBar_HasTheCommonCommandsWithIconsAndShortcutTips)
                 << a->toolTip().toStdString();
         }
     }
+}
+
+// Item 14: hovering any field of the panels says what it edits.
+TEST_F(EditorCommandsTest, EveryFieldOfThePanels_HasAToolTip) {
+    int fields = 0;
+    for (QWidget* w : window->findChildren<QWidget*>()) {
+        const bool input = qobject_cast<QAbstractSpinBox*>(w) || qobject_cast<QComboBox*>(w) ||
+                           qobject_cast<QSlider*>(w);
+        if (!input || qobject_cast<QAbstractSpinBox*>(w->parentWidget())) continue;
+        if (w->window() != window.get()) continue;
+        ++fields;
+        EXPECT_FALSE(w->toolTip().isEmpty()) << w->objectName().toStdString();
+    }
+    EXPECT_GT(fields, 20);
+    auto* radius = window->findChild<QDoubleSpinBox*>(QStringLiteral("sphereRadius"));
+    EXPECT_EQ(radius->toolTip(), QStringLiteral("Radius"));
+    auto* x = window->findChild<QDoubleSpinBox*>(QStringLiteral("sphereCenterX"));
+    ASSERT_NE(x, nullptr);
+    EXPECT_EQ(x->toolTip(), QStringLiteral("Centre: x"));
 }
 
 }  // namespace

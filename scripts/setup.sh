@@ -14,6 +14,11 @@ packages=(
   qt6-base-dev xvfb xauth x11-utils imagemagick
   # scripts/screenshot.sh --precision-view opens the dock with a key press
   xdotool
+  # SVG icons at run time (Qt's SVG plugins), the icon's PNG sizes at build time
+  libqt6svg6 librsvg2-bin
+  # the packaging tests: desktop file, AppStream and MIME checks, the .deb's
+  # Depends from dpkg-shlibdeps
+  desktop-file-utils appstream shared-mime-info libxml2-utils dpkg-dev
   # the scene loader's fuzzer (tests/fuzz): clang with libFuzzer's runtime
   clang libclang-rt-14-dev
 )

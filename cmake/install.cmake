@@ -1,0 +1,63 @@
+# Installing (`cmake --install build --prefix P`) and packaging (`cpack -G DEB`
+# in the build directory) as a desktop program, in the FHS layout:
+#   bin/                     whitted, whitted-render, whitted-numerics, whitted-tradeoff
+#   share/applications/      the .desktop file (opens scene files in the editor)
+#   share/metainfo/          AppStream metadata
+#   share/mime/packages/     the scene files' MIME type
+#   share/icons/hicolor/     the icon, scalable and as PNGs
+#   share/whitted/scenes/    the example scenes
+# A package must run on any x86-64 machine: configure it with -DWHITTED_NATIVE=OFF.
+include(GNUInstallDirs)
+
+set(WHITTED_APP_ID io.github.whitted.Whitted)
+set(WHITTED_RESOURCES ${PROJECT_SOURCE_DIR}/resources)
+
+install(TARGETS whitted whitted-render whitted-numerics whitted-tradeoff
+        RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(FILES ${WHITTED_RESOURCES}/${WHITTED_APP_ID}.desktop
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/applications)
+install(FILES ${WHITTED_RESOURCES}/${WHITTED_APP_ID}.metainfo.xml
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/metainfo)
+install(FILES ${WHITTED_RESOURCES}/${WHITTED_APP_ID}.mime.xml
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/mime/packages RENAME ${WHITTED_APP_ID}.xml)
+install(FILES ${WHITTED_RESOURCES}/icons/whitted.svg
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/icons/hicolor/scalable/apps
+        RENAME ${WHITTED_APP_ID}.svg)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/scenes/
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/whitted/scenes
+        FILES_MATCHING PATTERN "*.json" PATTERN "README.md")
+
+# The PNG sizes desktops look for, rendered from the one SVG at build time.
+find_program(RSVG_CONVERT rsvg-convert REQUIRED)
+set(WHITTED_ICON_SIZES 16 32 48 64 128 256)
+set(icon_pngs)
+foreach(size IN LISTS WHITTED_ICON_SIZES)
+  set(png ${CMAKE_BINARY_DIR}/icons/${size}/${WHITTED_APP_ID}.png)
+  add_custom_command(OUTPUT ${png}
+    COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_BINARY_DIR}/icons/${size}
+    COMMAND ${RSVG_CONVERT} -w ${size} -h ${size} -o ${png} ${WHITTED_RESOURCES}/icons/whitted.svg
+    DEPENDS ${WHITTED_RESOURCES}/icons/whitted.svg
+    COMMENT "Icon ${size}x${size}" VERBATIM)
+  list(APPEND icon_pngs ${png})
+  install(FILES ${png} DESTINATION ${CMAKE_INSTALL_DATADIR}/icons/hicolor/${size}x${size}/apps)
+endforeach()
+add_custom_target(whitted-icons ALL DEPENDS ${icon_pngs})
+
+set(CPACK_PACKAGE_NAME whitted)
+set(CPACK_PACKAGE_VENDOR "The Whitted developers")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "Scene editor for a classic Whitted ray tracer")
+set(CPACK_PACKAGE_DESCRIPTION
+    "Place spheres, lights and materials and see every edit rendered again at once, with "
+    "shadows, reflection and refraction in float or double precision. Includes the "
+    "command-line renderer whitted-render.")
+set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
+set(CPACK_PACKAGE_CONTACT "The Whitted developers <whitted@localhost>")
+set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+set(CPACK_DEBIAN_PACKAGE_SECTION graphics)
+# Depends from the shared libraries the programs link (dpkg-shlibdeps), plus
+# what no program links but Qt loads at run time: the SVG icon plugins.
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "libqt6svg6")
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "desktop-file-utils, shared-mime-info")
+include(CPack)

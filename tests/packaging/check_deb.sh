@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Builds the .deb with CPack into a temporary directory and checks its control
+# data and contents: Depends found by dpkg-shlibdeps (Qt, OpenImageIO) plus the
+# SVG plugin, and the programs, desktop file and icons under /usr.
+# Usage: check_deb.sh BUILD_DIR
+set -euo pipefail
+build=$1
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+
+cpack -G DEB --config "$build/CPackConfig.cmake" -B "$out" >"$out/cpack.log" 2>&1 ||
+  { cat "$out/cpack.log" >&2; exit 1; }
+deb=$(find "$out" -maxdepth 1 -name 'whitted_*.deb' | head -n 1)
+[[ -n "$deb" ]] || { echo "cpack made no whitted_*.deb" >&2; cat "$out/cpack.log" >&2; exit 1; }
+
+depends=$(dpkg-deb -f "$deb" Depends)
+echo "Depends: $depends"
+for lib in libqt6widgets6 'libopenimageio2\.[0-9]' libqt6svg6 'libc6 '; do
+  grep -Eq "(^|, )$lib" <<<"$depends" || { echo "Depends lacks $lib" >&2; exit 1; }
+done
+[[ $(dpkg-deb -f "$deb" Section) == graphics ]] || { echo "Section is not graphics" >&2; exit 1; }
+[[ $(dpkg-deb -f "$deb" Architecture) == amd64 ]] || { echo "Architecture is not amd64" >&2; exit 1; }
+
+contents=$(dpkg-deb -c "$deb" | awk '{print $6}')
+for path in ./usr/bin/whitted ./usr/bin/whitted-render \
+  ./usr/share/applications/io.github.whitted.Whitted.desktop \
+  ./usr/share/icons/hicolor/scalable/apps/io.github.whitted.Whitted.svg \
+  ./usr/share/whitted/scenes/seed.json; do
+  grep -qxF "$path" <<<"$contents" || { echo "the package lacks $path" >&2; exit 1; }
+done
+echo "$(basename "$deb"): Depends from the shared libraries, programs, desktop file, icons and scenes under /usr"

@@ -3,9 +3,28 @@
 #include <chrono>
 #include <utility>
 
+#ifdef __linux__
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
 #include "image_convert.h"
 
 namespace whitted::ui {
+
+namespace {
+
+// The comparison is a side view: when it shares the cores with the main render
+// or the GUI, they should win. On Linux a nice value belongs to a thread, and
+// the threads it creates (render()'s pool) inherit it.
+void lowerThisThreadsPriority() {
+#ifdef __linux__
+    setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 19);
+#endif
+}
+
+}  // namespace
 
 PrecisionWorker::PrecisionWorker(QObject* parent) : QObject(parent) {
     qRegisterMetaType<whitted::ui::PrecisionResult>();
@@ -41,6 +60,7 @@ void PrecisionWorker::cancel() {
 }
 
 void PrecisionWorker::run() {
+    lowerThisThreadsPriority();
     for (;;) {
         Request request;
         quint64 generation;

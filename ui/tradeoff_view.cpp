@@ -2,6 +2,7 @@
 
 #include <QAction>
 #include <QHBoxLayout>
+#include <QHeaderView>
 #include <QLabel>
 #include <QMessageBox>
 #include <QProgressBar>
@@ -29,6 +30,8 @@ namespace {
 // Measure's points arrive every few milliseconds on small scenes: the plot and
 // the table follow at most this often.
 constexpr int kLiveRefreshMs = 200;
+// Narrower than this, a plot's labels crowd out its points.
+constexpr int kMinPlotWidth = 360;
 
 QLabel* makeStatus(const QString& name) {
     auto* label = new QLabel;
@@ -122,6 +125,12 @@ TradeoffView::TradeoffView(SceneDocument* doc, TradeoffRecord* record, QWidget* 
     split_->addWidget(plotBox);
     split_->addWidget(tabs_);
     connect(split_, &QSplitter::splitterMoved, this, [this] { splitMoved_ = true; });
+    // Rows change the columns' widths: the split follows, once per burst.
+    arrange_.setSingleShot(true);
+    connect(&arrange_, &QTimer::timeout, this, &TradeoffView::arrangeSplit);
+    for (QTableWidget* table : {pinnedTable_, measureTable_})
+        connect(table->horizontalHeader(), &QHeaderView::sectionResized, &arrange_,
+                qOverload<>(&QTimer::start));
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(buttons);
     layout->addWidget(pinStatus_);
@@ -158,14 +167,26 @@ TradeoffView::~TradeoffView() {
 
 void TradeoffView::resizeEvent(QResizeEvent* e) {
     QWidget::resizeEvent(e);
-    // Under the render view the dock is wide: plot and table side by side;
-    // in a side column, one above the other. The plot gets most of the room
-    // until the user moves the divider.
+    arrangeSplit();
+}
+
+void TradeoffView::arrangeSplit() {
+    // Under the render view the dock is wide: plot and table side by side, the
+    // table as wide as its columns need while the plot keeps a readable width;
+    // in a side column, one above the other. Until the user moves the divider.
     const auto orientation = width() > height() * 3 / 2 ? Qt::Horizontal : Qt::Vertical;
     if (split_->orientation() == orientation && splitMoved_) return;
     split_->setOrientation(orientation);
-    const int length = orientation == Qt::Horizontal ? width() : height();
-    split_->setSizes({length * 7 / 10, length - length * 7 / 10});
+    if (orientation == Qt::Vertical) {
+        split_->setSizes({height() * 7 / 10, height() - height() * 7 / 10});
+        return;
+    }
+    const int tabFrame = tabs_->width() - tabs_->currentWidget()->width();
+    const int tableWidth =
+        std::max(tableContentWidth(pinnedTable_), tableContentWidth(measureTable_)) + tabFrame;
+    const int room = width() - split_->handleWidth();
+    const int plotWidth = std::max(room - tableWidth, std::min(kMinPlotWidth, room * 7 / 10));
+    split_->setSizes({plotWidth, room - plotWidth});
 }
 
 void TradeoffView::setMeasureGrid(const TradeoffGrid& grid, int referenceSamples) {

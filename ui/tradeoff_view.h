@@ -92,6 +92,7 @@ class TradeoffView : public QWidget {
     void updatePinStatus();
     void updateMeasureStatus();
     void refreshPlot();
+    void arrangeSplit();
 
     SceneDocument* doc_;
     TradeoffRecord* record_;
@@ -119,6 +120,7 @@ class TradeoffView : public QWidget {
     QPushButton* cancelButton_;
     QSplitter* split_;         // the plot and the tables
     bool splitMoved_ = false;  // by the user: then only a turn resets it
+    QTimer arrange_;           // arrangeSplit() after the columns' widths changed
     PlotWidget* plot_;
     QLabel* plotNote_;
     QTabWidget* tabs_;

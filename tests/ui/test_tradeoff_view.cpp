@@ -9,6 +9,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QElapsedTimer>
+#include <QHeaderView>
 #include <QLabel>
 #include <QMessageBox>
 #include <QProgressBar>
@@ -16,6 +17,8 @@
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QStandardPaths>
+#include <QStyle>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QTest>
 #include <QUndoStack>
@@ -321,6 +324,53 @@ TEST_F(TradeoffViewTest, OpeningAScene_UnpinsAndForgetsTheRecord) {
     EXPECT_FALSE(view->isPinned());
     // Only the new scene's first render is remembered.
     EXPECT_EQ(window->tradeoffRecord()->renders().size(), 1u);
+}
+
+// Every column of `table` as wide as its title and its widest cell need, with
+// the style's margins: no text is elided ("Time (…").
+void expectColumnsFitTheirContents(const QTableWidget* table) {
+    const QHeaderView* header = table->horizontalHeader();
+    QStyle* style = table->style();
+    const int headerMargins = 2 * style->pixelMetric(QStyle::PM_HeaderMargin, nullptr, header);
+    const int cellMargins =
+        2 * (style->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, table) + 1);
+    for (int c = 0; c < table->columnCount(); ++c) {
+        const QString title = table->horizontalHeaderItem(c)->text();
+        const int width = header->sectionSize(c);
+        for (const QString& line : title.split(QLatin1Char('\n')))
+            EXPECT_GE(width, header->fontMetrics().horizontalAdvance(line) + headerMargins)
+                << table->objectName().toStdString() << ": " << title.toStdString();
+        // Whole inside the table's visible part: nothing cut off at its right edge.
+        EXPECT_LE(header->sectionViewportPosition(c) + width, table->viewport()->width())
+            << table->objectName().toStdString() << ": " << title.toStdString();
+        for (int r = 0; r < table->rowCount(); ++r) {
+            const QString cell = table->item(r, c)->text();
+            EXPECT_GE(width, table->fontMetrics().horizontalAdvance(cell) + cellMargins)
+                << title.toStdString() << ", row " << r << ": " << cell.toStdString();
+        }
+    }
+}
+
+// In a window wide enough for the table beside the plot.
+TEST_F(TradeoffViewTest, Tables_ColumnsAsWideAsTheirTitlesAndCellsAndAllInView) {
+    window->resize(1900, 900);
+    window->findChild<QAction*>(QStringLiteral("toggleTradeoffView"))->trigger();
+    pin();
+    QSignalSpy measured(view, &TradeoffView::pointMeasured);
+    ASSERT_TRUE(editAndWait([](Scene& s) { s.render.samplesPerPixel = 4; }));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return measured.count() == 1; }, kTimeoutMs));
+    auto* pinned = child<QTableWidget>("pinnedTable");
+    ASSERT_TRUE(QTest::qWaitFor([&] { return pinned->isVisible(); }, kTimeoutMs));
+    QApplication::processEvents();  // the header lays its sections out
+    ASSERT_EQ(pinned->rowCount(), 1);
+    expectColumnsFitTheirContents(pinned);
+    // The other tab, as the user sees it after clicking it.
+    auto* measureTable = child<QTableWidget>("measureTable");
+    auto* tabs = qobject_cast<QTabWidget*>(measureTable->parentWidget()->parentWidget());
+    ASSERT_NE(tabs, nullptr);
+    tabs->setCurrentWidget(measureTable);
+    QTest::qWait(50);
+    expectColumnsFitTheirContents(measureTable);
 }
 
 // ---------------------------------------------------------------------------

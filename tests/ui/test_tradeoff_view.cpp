@@ -13,6 +13,7 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QProgressBar>
+#include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
@@ -35,6 +36,7 @@
 #include "scene_io.h"
 #include "settings_prediction.h"
 #include "test_support.h"
+#include "tradeoff.h"
 #include "tradeoff_view.h"
 
 namespace whitted::ui {
@@ -138,11 +140,21 @@ class TradeoffViewTest : public ::testing::Test {
         emit combo->activated(index);
     }
 
-    // Pins the finished frame; returns it.
-    RenderFrame pin() {
+    // Triggers Pin as Reference on a noisy image; returns the warning it shows.
+    QMessageBox* pinNoisy() {
         QAction* action = view->pinAction();
         EXPECT_TRUE(action->isEnabled());
         action->trigger();
+        auto* box = window->findChild<QMessageBox*>(QStringLiteral("noisyPinWarning"));
+        EXPECT_NE(box, nullptr);
+        EXPECT_TRUE(box && box->isVisible());
+        return box;
+    }
+
+    // Pins the finished frame (the seed's 1 sample per pixel: past the warning); returns it.
+    RenderFrame pin() {
+        QMessageBox* box = pinNoisy();
+        if (box) QTest::mouseClick(child<QPushButton>("pinAnywayButton"), Qt::LeftButton);
         EXPECT_TRUE(view->isPinned());
         return frames->last;
     }
@@ -295,6 +307,96 @@ TEST_F(TradeoffViewTest, Pin_SmallerRenderComparedStretched_OtherShapeSkippedWit
     EXPECT_TRUE(skipped.note.startsWith(QStringLiteral("Not compared")))
         << skipped.note.toStdString();
     EXPECT_EQ(view->plot()->spec().points.size(), 1u);  // the skipped one has no error to plot
+}
+
+TEST_F(TradeoffViewTest, Pin_OneSampleImage_WarnsFirst_PinAnywayPinsIt) {
+    const RenderFrame shown = frames->last;
+    QMessageBox* box = pinNoisy();
+    ASSERT_NE(box, nullptr);
+    EXPECT_EQ(box->text(),
+              QStringLiteral("This image has only 1 sample per pixel: its edges are still jagged, "
+                             "and every later render would be scored against that noise instead "
+                             "of the true picture.\n\nRender a converged reference at 256 "
+                             "samples per pixel (in double precision, in the background) and pin "
+                             "it when it is done?"));
+    EXPECT_FALSE(view->isPinned()) << "pinned before the user answered";
+    QTest::mouseClick(child<QPushButton>("pinAnywayButton"), Qt::LeftButton);
+    ASSERT_TRUE(view->isPinned());
+    EXPECT_EQ(view->pinnedImage(), shown.linear);
+    EXPECT_EQ(view->pinnedSettings().samplesPerPixel, 1);
+}
+
+TEST_F(TradeoffViewTest, Pin_ManySamples_PinsWithoutAsking) {
+    ASSERT_TRUE(
+        editAndWait([](Scene& s) { s.render.samplesPerPixel = TradeoffView::kNoisyBelowSamples; }));
+    view->pinAction()->trigger();
+    EXPECT_TRUE(view->isPinned());
+    EXPECT_EQ(window->findChild<QMessageBox*>(QStringLiteral("noisyPinWarning")), nullptr);
+}
+
+// The converged reference is core's renderReference at the stated samples, of
+// the scene as the view renders it: the pinned image is that, pixel for pixel,
+// and the noisy image on screen is scored against it at once.
+TEST_F(TradeoffViewTest, Pin_ConvergedReference_PinsARenderAtTheStatedSamples) {
+    view->setMeasureGrid(tinyGrid(), 16);  // a 16-sample reference renders in a blink
+    const RenderFrame noisy = frames->last;
+    QMessageBox* box = pinNoisy();
+    ASSERT_NE(box, nullptr);
+    EXPECT_TRUE(box->text().contains(QStringLiteral("at 16 samples per pixel")));
+    QTest::mouseClick(child<QPushButton>("renderConvergedButton"), Qt::LeftButton);
+    EXPECT_TRUE(
+        child<QLabel>("pinStatus")
+            ->text()
+            .startsWith(QStringLiteral("Rendering a converged reference at 16 samples per pixel")));
+    QSignalSpy measured(view, &TradeoffView::pointMeasured);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return view->isPinned(); }, kTimeoutMs));
+    const ReferenceRender want = renderReference(doc->scene(), 16);
+    EXPECT_EQ(view->pinnedSettings(), want.scene.render);
+    EXPECT_EQ(view->pinnedSettings().samplesPerPixel, 16);
+    EXPECT_EQ(view->pinnedSettings().precision, Precision::Double);
+    EXPECT_EQ(view->pinnedImage()->rgb, want.image.rgb);
+    EXPECT_TRUE(child<QLabel>("pinStatus")->text().startsWith(QStringLiteral("Pinned: 16 spp")))
+        << child<QLabel>("pinStatus")->text().toStdString();
+
+    ASSERT_TRUE(QTest::qWaitFor([&] { return measured.count() == 1; }, kTimeoutMs));
+    const PinnedPoint& p = view->pinnedPoints()[0];
+    EXPECT_EQ(p.settings.samplesPerPixel, 1);
+    ASSERT_TRUE(p.error.has_value());
+    EXPECT_EQ(p.error->rmseSrgb8, measureError(*noisy.linear, want.image).rmseSrgb8);
+}
+
+// A sphere moved: the pinned image shows another scene. The dock says so and
+// scores nothing until it is pinned again or the move is undone.
+TEST_F(TradeoffViewTest, Pin_SphereMoved_MarksThePinStale_NoPointsUntilUndone) {
+    pin();
+    auto* stale = child<QLabel>("pinStale");
+    ASSERT_TRUE(view->isVisible());  // pinning showed the dock
+    EXPECT_FALSE(stale->isVisible());
+
+    ASSERT_TRUE(editAndWait([](Scene& s) { s.spheres[0].center.x += 0.3; }));
+    EXPECT_TRUE(view->isPinStale());
+    EXPECT_TRUE(stale->isVisible());
+    EXPECT_EQ(stale->text(), QStringLiteral("The pinned reference is out of date: the scene has "
+                                            "changed since it was pinned. Renders are not scored "
+                                            "against it until you pin again."));
+    // A render-settings change afterwards does not make it current again.
+    ASSERT_TRUE(editAndWait([](Scene& s) { s.render.samplesPerPixel = 2; }));
+    QTest::qWait(100);  // an error, had one been submitted, would be back by now
+    EXPECT_TRUE(view->pinnedPoints().empty());
+    EXPECT_TRUE(view->plot()->spec().points.empty());
+    EXPECT_EQ(child<QTableWidget>("pinnedTable")->rowCount(), 0);
+
+    // Undo the move (the samples stay at 2): the pinned scene again, scored again.
+    QSignalSpy measured(view, &TradeoffView::pointMeasured);
+    const int before = frames->count;
+    doc->undoStack()->undo();
+    doc->undoStack()->undo();
+    ASSERT_TRUE(editAndWait([](Scene& s) { s.render.samplesPerPixel = 2; }));
+    ASSERT_GT(frames->count, before);
+    EXPECT_FALSE(view->isPinStale());
+    EXPECT_FALSE(stale->isVisible());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return measured.count() >= 1; }, kTimeoutMs));
+    EXPECT_EQ(view->pinnedPoints().back().settings.samplesPerPixel, 2);
 }
 
 TEST_F(TradeoffViewTest, Unpin_ClearsPointsPlotAndTable_LaterRendersAddNothing) {

@@ -138,6 +138,7 @@ void PrecisionView::sceneChanged() {
     // The running comparison is of an old scene: stop it now, start again once edits pause.
     worker_.cancel();
     inFlight_ = false;
+    waitingForMain_ = false;  // the quiet time comes first, then the wait
     debounce_.start(kDebounceMs);
     status_->setText(tr("Scene changed: comparing again shortly…"));
 }

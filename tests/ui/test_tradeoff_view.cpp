@@ -365,6 +365,29 @@ TEST_F(TradeoffViewTest, Pin_ConvergedReference_PinsARenderAtTheStatedSamples) {
     EXPECT_EQ(p.error->rmseSrgb8, measureError(*noisy.linear, want.image).rmseSrgb8);
 }
 
+// The converged reference of a scene that is gone is never pinned; Unpin stops it too.
+TEST_F(TradeoffViewTest, Pin_ConvergedReference_StoppedBySphereMoveOrUnpin) {
+    for (bool byUnpin : {false, true}) {
+        SCOPED_TRACE(byUnpin ? "Unpin" : "sphere moved");
+        ASSERT_NE(pinNoisy(), nullptr);
+        QTest::mouseClick(child<QPushButton>("renderConvergedButton"), Qt::LeftButton);
+        ASSERT_TRUE(view->isRenderingReference());
+        EXPECT_TRUE(view->unpinAction()->isEnabled());  // it cancels the render
+        if (byUnpin)
+            view->unpinAction()->trigger();
+        else
+            ASSERT_TRUE(
+                doc->edit(QStringLiteral("move"), [](Scene& s) { s.spheres[0].center.x += 0.3; }));
+        EXPECT_FALSE(view->isRenderingReference());
+        EXPECT_EQ(child<QLabel>("pinStatus")->text(),
+                  QStringLiteral("Pin the finished image as a reference to plot every later "
+                                 "render's error against it."));
+        QTest::qWait(300);  // whatever the stopped render posted arrives, and is dropped
+        EXPECT_FALSE(view->isPinned());
+        ASSERT_TRUE(QTest::qWaitFor([&] { return view->pinAction()->isEnabled(); }, kTimeoutMs));
+    }
+}
+
 // A sphere moved: the pinned image shows another scene. The dock says so and
 // scores nothing until it is pinned again or the move is undone.
 TEST_F(TradeoffViewTest, Pin_SphereMoved_MarksThePinStale_NoPointsUntilUndone) {

@@ -2,6 +2,7 @@
 
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QScrollArea>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -108,12 +109,22 @@ PrecisionView::PrecisionView(SceneDocument* doc, QWidget* parent) : QWidget(pare
     form->addRow(tr("Different shadow:"), shadow_);
     form->addRow(tr("Different total internal reflection:"), tir_);
 
-    auto* layout = new QVBoxLayout(this);
+    auto* content = new QWidget;
+    auto* layout = new QVBoxLayout(content);
     layout->addWidget(intro_);
     layout->addWidget(status_);
     layout->addWidget(heatMap_, 1);
     layout->addWidget(makeLegend());
     layout->addLayout(form);
+    // In a short dock a scroll bar, rather than text squeezed into illegible lines.
+    auto* scroll = new QScrollArea;
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidgetResizable(true);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setWidget(content);
+    auto* outer = new QVBoxLayout(this);
+    outer->setContentsMargins(0, 0, 0, 0);
+    outer->addWidget(scroll);
 
     debounce_.setSingleShot(true);
     connect(&debounce_, &QTimer::timeout, this, &PrecisionView::startWhenMainRenderDone);

@@ -187,9 +187,11 @@ void TradeoffView::resizeEvent(QResizeEvent* e) {
 
 void TradeoffView::arrangeSplit() {
     // Under the render view the dock is wide: plot and table side by side, the
-    // table as wide as its columns need while the plot keeps a readable width;
-    // in a side column, one above the other. Until the user moves the divider.
-    const auto orientation = width() > height() * 3 / 2 ? Qt::Horizontal : Qt::Vertical;
+    // table as wide as its columns need while the plot keeps a readable width
+    // (narrower, the table scrolls); in a side column, taller than wide, one
+    // above the other. Until the user moves the divider. Stacked in a wide
+    // dock, plot and table would ask for more height than the render view can spare.
+    const auto orientation = height() > width() ? Qt::Vertical : Qt::Horizontal;
     if (split_->orientation() == orientation && splitMoved_) return;
     split_->setOrientation(orientation);
     if (orientation == Qt::Vertical) {

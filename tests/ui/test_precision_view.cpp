@@ -215,7 +215,7 @@ TEST_F(PrecisionViewTest, EditWhileShown_ComparesAtPreviewSizeOnlyAfterTheMainRe
                      [&] { events << QStringLiteral("comparison started"); });
     QSignalSpy shown(view, &PrecisionView::comparisonShown);
     nudgeBall(0.1);
-    ASSERT_TRUE(shown.wait(kTimeoutMs));
+    ASSERT_TRUE(shown.wait(3 * kTimeoutMs));  // both renders, one after the other, sanitizers
     EXPECT_EQ(events, QStringList({QStringLiteral("main render complete"),
                                    QStringLiteral("comparison started")}));
     EXPECT_EQ(mainSize, QSize(480, 360));  // the main render keeps its full size

@@ -9,7 +9,7 @@
 //
 // It never takes cores from the main render: a comparison starts only once
 // the main render of the same scene is complete, and a new edit stops a
-// running one; its threads run at the lowest priority besides
+// running one; its threads run at a lower priority besides
 // (PrecisionWorker). So mainFrameShown must receive the main render's frames:
 // after a scene change, nothing is compared until a complete one comes.
 #pragma once

@@ -175,7 +175,10 @@ TradeoffView::TradeoffView(SceneDocument* doc, TradeoffRecord* record, QWidget* 
 TradeoffView::~TradeoffView() {
     // Nothing may come back to a half-destroyed view.
     errors_.disconnect(this);
-    stopReference();
+    // Not stopReference(): its status update reads the document, which the
+    // main window may have destroyed already.
+    if (referenceJob_) referenceJob_->disconnect(this);
+    referenceJob_.reset();
     if (job_) job_->disconnect(this);
     job_.reset();
 }

@@ -145,16 +145,25 @@ class TradeoffViewTest : public ::testing::Test {
         QAction* action = view->pinAction();
         EXPECT_TRUE(action->isEnabled());
         action->trigger();
-        auto* box = window->findChild<QMessageBox*>(QStringLiteral("noisyPinWarning"));
+        // The one on screen: an answered one is deleted only later.
+        QMessageBox* box = nullptr;
+        for (auto* b : window->findChildren<QMessageBox*>(QStringLiteral("noisyPinWarning")))
+            if (b->isVisible()) box = b;
         EXPECT_NE(box, nullptr);
-        EXPECT_TRUE(box && box->isVisible());
         return box;
+    }
+
+    // Clicks a button of `box`, as the user does.
+    static void click(QMessageBox* box, const char* button) {
+        auto* b = box->findChild<QPushButton*>(QString::fromLatin1(button));
+        ASSERT_NE(b, nullptr) << button;
+        QTest::mouseClick(b, Qt::LeftButton);
     }
 
     // Pins the finished frame (the seed's 1 sample per pixel: past the warning); returns it.
     RenderFrame pin() {
         QMessageBox* box = pinNoisy();
-        if (box) QTest::mouseClick(child<QPushButton>("pinAnywayButton"), Qt::LeftButton);
+        if (box) click(box, "pinAnywayButton");
         EXPECT_TRUE(view->isPinned());
         return frames->last;
     }
@@ -320,7 +329,7 @@ TEST_F(TradeoffViewTest, Pin_OneSampleImage_WarnsFirst_PinAnywayPinsIt) {
                              "samples per pixel (in double precision, in the background) and pin "
                              "it when it is done?"));
     EXPECT_FALSE(view->isPinned()) << "pinned before the user answered";
-    QTest::mouseClick(child<QPushButton>("pinAnywayButton"), Qt::LeftButton);
+    click(box, "pinAnywayButton");
     ASSERT_TRUE(view->isPinned());
     EXPECT_EQ(view->pinnedImage(), shown.linear);
     EXPECT_EQ(view->pinnedSettings().samplesPerPixel, 1);
@@ -343,7 +352,7 @@ TEST_F(TradeoffViewTest, Pin_ConvergedReference_PinsARenderAtTheStatedSamples) {
     QMessageBox* box = pinNoisy();
     ASSERT_NE(box, nullptr);
     EXPECT_TRUE(box->text().contains(QStringLiteral("at 16 samples per pixel")));
-    QTest::mouseClick(child<QPushButton>("renderConvergedButton"), Qt::LeftButton);
+    click(box, "renderConvergedButton");
     EXPECT_TRUE(
         child<QLabel>("pinStatus")
             ->text()
@@ -369,8 +378,9 @@ TEST_F(TradeoffViewTest, Pin_ConvergedReference_PinsARenderAtTheStatedSamples) {
 TEST_F(TradeoffViewTest, Pin_ConvergedReference_StoppedBySphereMoveOrUnpin) {
     for (bool byUnpin : {false, true}) {
         SCOPED_TRACE(byUnpin ? "Unpin" : "sphere moved");
-        ASSERT_NE(pinNoisy(), nullptr);
-        QTest::mouseClick(child<QPushButton>("renderConvergedButton"), Qt::LeftButton);
+        QMessageBox* box = pinNoisy();
+        ASSERT_NE(box, nullptr);
+        click(box, "renderConvergedButton");
         ASSERT_TRUE(view->isRenderingReference());
         EXPECT_TRUE(view->unpinAction()->isEnabled());  // it cancels the render
         if (byUnpin)
@@ -386,6 +396,19 @@ TEST_F(TradeoffViewTest, Pin_ConvergedReference_StoppedBySphereMoveOrUnpin) {
         EXPECT_FALSE(view->isPinned());
         ASSERT_TRUE(QTest::qWaitFor([&] { return view->pinAction()->isEnabled(); }, kTimeoutMs));
     }
+}
+
+// The main window goes (its document first) while a converged reference renders
+// over an earlier pin: the render stops, nothing reads the document (ASan).
+TEST_F(TradeoffViewTest, Pin_ConvergedReference_WindowClosedMeanwhile_StopsCleanly) {
+    pin();
+    QMessageBox* box = pinNoisy();
+    ASSERT_NE(box, nullptr);
+    click(box, "renderConvergedButton");
+    ASSERT_TRUE(view->isRenderingReference());
+    frames.reset();
+    window.reset();
+    SUCCEED();
 }
 
 // A sphere moved: the pinned image shows another scene. The dock says so and

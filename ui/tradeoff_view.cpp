@@ -124,14 +124,14 @@ TradeoffView::TradeoffView(SceneDocument* doc, TradeoffRecord* record, QWidget* 
     auto* progressRow = new QHBoxLayout;
     progressRow->addWidget(progress_, 1);
     progressRow->addWidget(cancelButton_);
-    auto* plotBox = new QWidget;
-    auto* plotLayout = new QVBoxLayout(plotBox);
+    plotBox_ = new QWidget;
+    auto* plotLayout = new QVBoxLayout(plotBox_);
     plotLayout->setContentsMargins(0, 0, 0, 0);
     plotLayout->addWidget(plot_, 1);
     plotLayout->addWidget(plotNote_);
     split_ = new QSplitter;
     split_->setChildrenCollapsible(false);
-    split_->addWidget(plotBox);
+    split_->addWidget(plotBox_);
     split_->addWidget(tabs_);
     connect(split_, &QSplitter::splitterMoved, this, [this] { splitMoved_ = true; });
     // Rows change the columns' widths: the split follows, once per burst.
@@ -190,23 +190,46 @@ void TradeoffView::resizeEvent(QResizeEvent* e) {
 
 void TradeoffView::arrangeSplit() {
     // Under the render view the dock is wide: plot and table side by side, the
-    // table as wide as its columns need while the plot keeps a readable width
-    // (narrower, the table scrolls); in a side column, taller than wide, one
-    // above the other. Until the user moves the divider. Stacked in a wide
-    // dock, plot and table would ask for more height than the render view can spare.
-    const auto orientation = height() > width() ? Qt::Vertical : Qt::Horizontal;
-    if (split_->orientation() == orientation && splitMoved_) return;
-    split_->setOrientation(orientation);
-    if (orientation == Qt::Vertical) {
-        split_->setSizes({height() * 7 / 10, height() - height() * 7 / 10});
-        return;
-    }
+    // table as wide as its columns need while the plot keeps a readable width.
+    // Where both do not fit, the plot becomes a tab beside the tables, each
+    // with the dock's whole width. In a side column, taller than wide, one
+    // above the other. Stacked in a wide dock, plot and table would ask for
+    // more height than the render view can spare.
+    const bool tall = height() > width();
     const int tabFrame = tabs_->width() - tabs_->currentWidget()->width();
     const int tableWidth =
         std::max(tableContentWidth(pinnedTable_), tableContentWidth(measureTable_)) + tabFrame;
     const int room = width() - split_->handleWidth();
-    const int plotWidth = std::max(room - tableWidth, std::min(kMinPlotWidth, room * 7 / 10));
-    split_->setSizes({plotWidth, room - plotWidth});
+    setPlotTabbed(!tall && room - tableWidth < kMinPlotWidth);
+    if (plotTabbed()) return;
+    const auto orientation = tall ? Qt::Vertical : Qt::Horizontal;
+    if (split_->orientation() == orientation && splitMoved_) return;
+    split_->setOrientation(orientation);
+    if (tall)
+        split_->setSizes({height() * 7 / 10, height() - height() * 7 / 10});
+    else
+        split_->setSizes({room - tableWidth, tableWidth});
+}
+
+bool TradeoffView::plotTabbed() const {
+    return tabs_->indexOf(plotBox_) >= 0;
+}
+
+void TradeoffView::setPlotTabbed(bool tabbed) {
+    if (tabbed == plotTabbed()) return;
+    if (tabbed) {
+        tabs_->insertTab(0, plotBox_, tr("Plot"));
+        tabs_->setCurrentWidget(plotBox_);
+    } else {
+        tabs_->removeTab(tabs_->indexOf(plotBox_));
+        split_->insertWidget(0, plotBox_);
+        plotBox_->show();
+    }
+}
+
+void TradeoffView::showTable(QTableWidget* table) {
+    // Tabbed, the plot is where new points show first.
+    tabs_->setCurrentWidget(plotTabbed() ? plotBox_ : table);
 }
 
 void TradeoffView::setMeasureGrid(const TradeoffGrid& grid, int referenceSamples) {
@@ -349,7 +372,7 @@ void TradeoffView::pin(std::shared_ptr<const Image> image, const RenderSettings&
     pinnedGeneration_ = generation;
     pinnedScene_ = scene;
     fillPinnedTable(pinnedTable_, points_);
-    tabs_->setCurrentWidget(pinnedTable_);
+    showTable(pinnedTable_);
     updateActions();
     updatePinStatus();
     refreshPlot();
@@ -435,7 +458,7 @@ bool TradeoffView::startMeasure() {
     progress_->show();
     cancelButton_->show();
     job_->start();
-    tabs_->setCurrentWidget(measureTable_);
+    showTable(measureTable_);
     updateActions();
     updateMeasureStatus();
     refreshPlot();

@@ -116,6 +116,9 @@ class TradeoffView : public QWidget {
     void updateMeasureStatus();
     void refreshPlot();
     void arrangeSplit();
+    bool plotTabbed() const;
+    void setPlotTabbed(bool tabbed);
+    void showTable(QTableWidget* table);  // or the plot, where it is a tab of its own
 
     SceneDocument* doc_;
     TradeoffRecord* record_;
@@ -148,6 +151,7 @@ class TradeoffView : public QWidget {
     QSplitter* split_;         // the plot and the tables
     bool splitMoved_ = false;  // by the user: then only a turn resets it
     QTimer arrange_;           // arrangeSplit() after the columns' widths changed
+    QWidget* plotBox_;         // the plot and its note: in the split, or a tab beside the tables
     PlotWidget* plot_;
     QLabel* plotNote_;
     QTabWidget* tabs_;

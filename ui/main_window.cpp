@@ -116,9 +116,11 @@ void MainWindow::buildDocks() {
 
     // Hidden until asked for from the View menu: it renders the scene twice more.
     precisionView_ = new PrecisionView(&doc_);
-    auto* precisionDock = new QDockWidget(tr("Float vs Double"), this);
+    auto* precisionDock = new QDockWidget(tr("Precision Check"), this);
     precisionDock->setObjectName("precisionDock");
     precisionDock->setWidget(precisionView_);
+    // It compares only once the main render is done: it never delays what the user edits.
+    connect(this, &MainWindow::frameShown, precisionView_, &PrecisionView::mainFrameShown);
     addDockWidget(Qt::RightDockWidgetArea, precisionDock);
     splitDockWidget(settingsDock, precisionDock, Qt::Vertical);
     precisionDock->hide();

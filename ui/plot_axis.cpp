@@ -30,6 +30,17 @@ double niceStep(double raw) {
     return nice * magnitude;
 }
 
+// Ticks at 1, 2 or 5 times a power of ten inside [lo, hi], at least two of them.
+std::vector<double> linearTicksWithin(double lo, double hi) {
+    std::vector<double> ticks;
+    for (double parts = 4.0; ticks.size() < 2; parts *= 2.0) {
+        ticks.clear();
+        const double step = niceStep((hi - lo) / parts);
+        for (double k = std::ceil(lo / step); k * step <= hi; k += 1.0) ticks.push_back(k * step);
+    }
+    return ticks;
+}
+
 PlotAxis linearAxis(double dataMin, double dataMax) {
     if (!(dataMin <= dataMax)) dataMin = 0.0, dataMax = 1.0;
     if (dataMax - dataMin <= std::abs(dataMax) * 1e-12) {
@@ -98,6 +109,11 @@ PlotAxis logAxis(double dataMin, double dataMax) {
                 }
             if (axis.major.size() >= 2) break;
         }
+        // Well inside one decade (1.2 .. 1.8): plain numbers at a nice step.
+        if (axis.major.size() < 2) {
+            axis.minor.clear();
+            axis.major = linearTicksWithin(axis.lo, axis.hi);
+        }
     }
     std::sort(axis.major.begin(), axis.major.end());
     std::sort(axis.minor.begin(), axis.minor.end());
@@ -119,10 +135,13 @@ bool PlotAxis::canShow(double v) const {
 QString PlotAxis::label(double v) const {
     if (!log) return QString::number(v, 'g', 6);
     const int e = static_cast<int>(std::floor(std::log10(v) + kSlack));
-    const long mantissa = std::lround(v / std::pow(10.0, e));
     if (e >= -3 && e <= 5) return QString::number(v, 'g', 8);
+    const double mantissa = v / std::pow(10.0, e);
     const QString power = QStringLiteral("10") + superscript(e);
-    return mantissa == 1 ? power : QString::number(mantissa) + QChar(u'×') + power;
+    // 'g' 3: a plain-number tick's mantissa (1.2) as well as a whole one (2).
+    return std::abs(mantissa - 1.0) < 1e-6
+               ? power
+               : QString::number(mantissa, 'g', 3) + QChar(u'×') + power;
 }
 
 PlotAxis makePlotAxis(double dataMin, double dataMax, bool log) {

@@ -29,7 +29,9 @@ struct PlotAxis {
 // the caller) with a little room on either side. A log axis ticks whole decades,
 // and 2 and 5 times them when the range holds fewer than two decades; a linear
 // axis ticks at 1, 2 or 5 times a power of ten, about five to eight ticks, and is
-// widened to its outer ticks. An empty or single-valued range gets a sensible span.
+// widened to its outer ticks. A log axis inside one decade with fewer than two
+// of those multiples ticks plain numbers at such a step instead: every axis has
+// at least two labelled ticks. An empty or single-valued range gets a sensible span.
 PlotAxis makePlotAxis(double dataMin, double dataMax, bool log);
 
 }  // namespace whitted::ui

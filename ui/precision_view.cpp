@@ -2,6 +2,7 @@
 
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QScrollArea>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -71,6 +72,12 @@ QSize PrecisionView::comparisonSize(const Scene& scene) {
 }
 
 PrecisionView::PrecisionView(SceneDocument* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
+    // For someone who has never heard of float and double: what is compared, and why look.
+    intro_ = new QLabel(
+        tr("Renders the scene with 32-bit (float) and 64-bit (double) numbers and shows where "
+           "the two pictures differ: where they barely do, the faster float is accurate enough."));
+    intro_->setObjectName(QStringLiteral("precisionIntro"));
+    intro_->setWordWrap(true);
     status_ = new QLabel;
     status_->setObjectName(QStringLiteral("precisionStatus"));
     status_->setWordWrap(true);
@@ -102,41 +109,74 @@ PrecisionView::PrecisionView(SceneDocument* doc, QWidget* parent) : QWidget(pare
     form->addRow(tr("Different shadow:"), shadow_);
     form->addRow(tr("Different total internal reflection:"), tir_);
 
-    auto* layout = new QVBoxLayout(this);
+    auto* content = new QWidget;
+    auto* layout = new QVBoxLayout(content);
+    layout->addWidget(intro_);
     layout->addWidget(status_);
     layout->addWidget(heatMap_, 1);
     layout->addWidget(makeLegend());
     layout->addLayout(form);
+    // In a short dock a scroll bar, rather than text squeezed into illegible lines.
+    auto* scroll = new QScrollArea;
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidgetResizable(true);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setWidget(content);
+    auto* outer = new QVBoxLayout(this);
+    outer->setContentsMargins(0, 0, 0, 0);
+    outer->addWidget(scroll);
 
     debounce_.setSingleShot(true);
-    connect(&debounce_, &QTimer::timeout, this, &PrecisionView::start);
+    connect(&debounce_, &QTimer::timeout, this, &PrecisionView::startWhenMainRenderDone);
     connect(doc_, &SceneDocument::sceneChanged, this, &PrecisionView::sceneChanged);
     connect(&worker_, &PrecisionWorker::comparisonReady, this, &PrecisionView::onResult);
-    status_->setText(tr("Shows where the float render differs from the double one."));
+    status_->setText(tr("Compares once the dock is shown."));
+}
+
+void PrecisionView::mainFrameShown(const RenderFrame& frame) {
+    mainRenderRunning_ = !frame.renderComplete;
+    if (mainRenderRunning_ || !waitingForMain_) return;
+    waitingForMain_ = false;
+    // Not from inside the frame's signal: every other receiver sees the frame first.
+    debounce_.start(0);
 }
 
 void PrecisionView::sceneChanged() {
     dirty_ = true;
+    // Every edit restarts the main render (MainWindow), whose frames say when it is done.
+    mainRenderRunning_ = true;
     if (!isVisible()) return;
     // The running comparison is of an old scene: stop it now, start again once edits pause.
     worker_.cancel();
     inFlight_ = false;
+    waitingForMain_ = false;  // the quiet time comes first, then the wait
     debounce_.start(kDebounceMs);
     status_->setText(tr("Scene changed: comparing again shortly…"));
 }
 
 void PrecisionView::showEvent(QShowEvent* e) {
     QWidget::showEvent(e);
-    if (dirty_ && !inFlight_) debounce_.start(0);
+    if (dirty_ && !inFlight_ && !waitingForMain_) debounce_.start(0);
 }
 
 void PrecisionView::hideEvent(QHideEvent* e) {
     QWidget::hideEvent(e);
     // Nobody looks: no work. What was pending is done again when shown.
-    if (debounce_.isActive() || inFlight_) dirty_ = true;
+    if (debounce_.isActive() || inFlight_ || waitingForMain_) dirty_ = true;
     debounce_.stop();
+    waitingForMain_ = false;
     worker_.cancel();
     inFlight_ = false;
+}
+
+void PrecisionView::startWhenMainRenderDone() {
+    if (!mainRenderRunning_) {
+        start();
+        return;
+    }
+    // Both at once would share the cores and delay the picture the user is editing.
+    waitingForMain_ = true;
+    status_->setText(tr("Waiting for the main render to finish…"));
 }
 
 void PrecisionView::start() {
@@ -162,10 +202,16 @@ void PrecisionView::onResult(const PrecisionResult& result) {
     hit_->setText(pixelsText(c.hitDiffers, c.pixels));
     shadow_->setText(pixelsText(c.shadowDiffers, c.pixels));
     tir_->setText(pixelsText(c.tirDiffers, c.pixels));
-    const int spp = doc_->scene().render.samplesPerPixel;
-    status_->setText(tr("Float against double at %1 × %2, %3 per pixel, in %4 s.")
+    const RenderSettings& render = doc_->scene().render;
+    const QString size =
+        render.width == c.width && render.height == c.height
+            ? tr("the scene's full size")
+            : tr("preview size; the scene renders at %1 × %2").arg(render.width).arg(render.height);
+    const int spp = render.samplesPerPixel;
+    status_->setText(tr("Measured at %1 × %2 (%3), %4 per pixel, in %5 s.")
                          .arg(c.width)
                          .arg(c.height)
+                         .arg(size)
                          .arg(spp == 1 ? tr("1 sample") : tr("%1 samples").arg(spp))
                          .arg(result.seconds, 0, 'f', 2));
     emit comparisonShown(result);

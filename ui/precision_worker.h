@@ -6,6 +6,7 @@
 // whose stop predicate says yes as soon as a newer generation exists, and hands
 // the result back through a queued signal that carries its generation, so the
 // GUI can drop stale ones. cancel() bumps the generation without a new request.
+// Its threads run at a lower priority (nice 10 on Linux).
 #pragma once
 
 #include <QImage>

@@ -1,6 +1,7 @@
 #include "tradeoff_tables.h"
 
 #include <QHeaderView>
+#include <QStyle>
 #include <QTableWidget>
 
 #include <cmath>
@@ -51,8 +52,10 @@ QTableWidget* makeTable(const QString& name, const QStringList& headers) {
     table->setSelectionBehavior(QAbstractItemView::SelectRows);
     table->verticalHeader()->hide();
     table->verticalHeader()->setDefaultSectionSize(table->fontMetrics().height() + 6);
+    // Every column as wide as its title and cells; not stretched, so that the
+    // header's length is the width the table needs (tableContentWidth).
     table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    table->horizontalHeader()->setStretchLastSection(true);
+    table->horizontalHeader()->setStretchLastSection(false);
     // Unsorted (in the order given) until the user clicks a header.
     table->horizontalHeader()->setSortIndicator(-1, Qt::AscendingOrder);
     table->setSortingEnabled(true);
@@ -69,20 +72,27 @@ void setRow(QTableWidget* table, int row, const std::vector<QTableWidgetItem*>& 
 
 }  // namespace
 
-// The columns a user compares by come first: the dock is often narrow.
+int tableContentWidth(const QTableWidget* table) {
+    // Room for a vertical scroll bar too: rows arriving must not cover a column.
+    const int scrollBar = table->style()->pixelMetric(QStyle::PM_ScrollBarExtent, nullptr, table);
+    return table->horizontalHeader()->length() + 2 * table->frameWidth() + scrollBar;
+}
+
+// The columns a user compares by come first: the dock is often narrow. Units
+// on a second line keep the columns of small numbers narrow.
 QTableWidget* makePinnedTable() {
     return makeTable(
         QStringLiteral("pinnedTable"),
         {QObject::tr("#"), QObject::tr("Samples"), QObject::tr("Depth"), QObject::tr("Precision"),
-         QObject::tr("Time (s)"), QObject::tr("RMSE 8-bit"), QObject::tr("PSNR (dB)"),
+         QObject::tr("Time\n(s)"), QObject::tr("RMSE\n8-bit"), QObject::tr("PSNR\n(dB)"),
          QObject::tr("Largest"), QObject::tr("Size"), QObject::tr("Note")});
 }
 
 QTableWidget* makeMeasureTable() {
     return makeTable(QStringLiteral("measureTable"),
                      {QObject::tr("Samples"), QObject::tr("Depth"), QObject::tr("Precision"),
-                      QObject::tr("Scale"), QObject::tr("Time (s)"), QObject::tr("RMSE 8-bit"),
-                      QObject::tr("PSNR (dB)"), QObject::tr("Front"), QObject::tr("Runs"),
+                      QObject::tr("Scale"), QObject::tr("Time\n(s)"), QObject::tr("RMSE\n8-bit"),
+                      QObject::tr("PSNR\n(dB)"), QObject::tr("Front"), QObject::tr("Runs"),
                       QObject::tr("Mrays/s"), QObject::tr("Size")});
 }
 

@@ -13,6 +13,9 @@ namespace whitted::ui {
 QTableWidget* makePinnedTable();
 QTableWidget* makeMeasureTable();
 
+// The width that shows every column of `table` whole, frame and scroll bar included.
+int tableContentWidth(const QTableWidget* table);
+
 // Replace every row with the points' (newest pinned first; Measure in grid order).
 void fillPinnedTable(QTableWidget* table, const std::vector<PinnedPoint>& points);
 void fillMeasureTable(QTableWidget* table, const std::vector<TradeoffPoint>& points);

@@ -2,6 +2,7 @@
 
 #include <QAction>
 #include <QHBoxLayout>
+#include <QHeaderView>
 #include <QLabel>
 #include <QMessageBox>
 #include <QProgressBar>
@@ -18,6 +19,7 @@
 
 #include "plot_widget.h"
 #include "scene_document.h"
+#include "settings_prediction.h"
 #include "tradeoff_plot_spec.h"
 #include "tradeoff_record.h"
 #include "tradeoff_tables.h"
@@ -29,6 +31,8 @@ namespace {
 // Measure's points arrive every few milliseconds on small scenes: the plot and
 // the table follow at most this often.
 constexpr int kLiveRefreshMs = 200;
+// Narrower than this, a plot's labels crowd out its points.
+constexpr int kMinPlotWidth = 360;
 
 QLabel* makeStatus(const QString& name) {
     auto* label = new QLabel;
@@ -90,6 +94,14 @@ TradeoffView::TradeoffView(SceneDocument* doc, TradeoffRecord* record, QWidget* 
     });
 
     pinStatus_ = makeStatus(QStringLiteral("pinStatus"));
+    pinStale_ = makeStatus(QStringLiteral("pinStale"));
+    // Hard to miss: every point from now on would be wrong.
+    pinStale_->setStyleSheet(
+        QStringLiteral("QLabel { background: #fff3c4; color: #5c4400; padding: 3px; }"));
+    pinStale_->setText(
+        tr("The pinned reference is out of date: the scene has changed since it was pinned. "
+           "Renders are not scored against it until you pin again."));
+    pinStale_->hide();
     measureStatus_ = makeStatus(QStringLiteral("measureStatus"));
     progress_ = new QProgressBar;
     progress_->setObjectName(QStringLiteral("measureProgress"));
@@ -112,19 +124,26 @@ TradeoffView::TradeoffView(SceneDocument* doc, TradeoffRecord* record, QWidget* 
     auto* progressRow = new QHBoxLayout;
     progressRow->addWidget(progress_, 1);
     progressRow->addWidget(cancelButton_);
-    auto* plotBox = new QWidget;
-    auto* plotLayout = new QVBoxLayout(plotBox);
+    plotBox_ = new QWidget;
+    auto* plotLayout = new QVBoxLayout(plotBox_);
     plotLayout->setContentsMargins(0, 0, 0, 0);
     plotLayout->addWidget(plot_, 1);
     plotLayout->addWidget(plotNote_);
     split_ = new QSplitter;
     split_->setChildrenCollapsible(false);
-    split_->addWidget(plotBox);
+    split_->addWidget(plotBox_);
     split_->addWidget(tabs_);
     connect(split_, &QSplitter::splitterMoved, this, [this] { splitMoved_ = true; });
+    // Rows change the columns' widths: the split follows, once per burst.
+    arrange_.setSingleShot(true);
+    connect(&arrange_, &QTimer::timeout, this, &TradeoffView::arrangeSplit);
+    for (QTableWidget* table : {pinnedTable_, measureTable_})
+        connect(table->horizontalHeader(), &QHeaderView::sectionResized, &arrange_,
+                qOverload<>(&QTimer::start));
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(buttons);
     layout->addWidget(pinStatus_);
+    layout->addWidget(pinStale_);
     layout->addWidget(measureStatus_);
     layout->addLayout(progressRow);
     layout->addWidget(split_, 1);
@@ -140,7 +159,11 @@ TradeoffView::TradeoffView(SceneDocument* doc, TradeoffRecord* record, QWidget* 
         // A new render is on its way: what the view shows is no longer the
         // current settings' finished image.
         complete_.reset();
+        // A converged reference of a scene that is gone would be stale at once.
+        if (referenceJob_ && !sameSceneContent(doc_->scene(), referenceJob_->scene()))
+            stopReference();
         updateActions();
+        updatePinStatus();
         updateMeasureStatus();
     });
     updateActions();
@@ -152,20 +175,61 @@ TradeoffView::TradeoffView(SceneDocument* doc, TradeoffRecord* record, QWidget* 
 TradeoffView::~TradeoffView() {
     // Nothing may come back to a half-destroyed view.
     errors_.disconnect(this);
+    // Not stopReference(): its status update reads the document, which the
+    // main window may have destroyed already.
+    if (referenceJob_) referenceJob_->disconnect(this);
+    referenceJob_.reset();
     if (job_) job_->disconnect(this);
     job_.reset();
 }
 
 void TradeoffView::resizeEvent(QResizeEvent* e) {
     QWidget::resizeEvent(e);
-    // Under the render view the dock is wide: plot and table side by side;
-    // in a side column, one above the other. The plot gets most of the room
-    // until the user moves the divider.
-    const auto orientation = width() > height() * 3 / 2 ? Qt::Horizontal : Qt::Vertical;
+    arrangeSplit();
+}
+
+void TradeoffView::arrangeSplit() {
+    // Under the render view the dock is wide: plot and table side by side, the
+    // table as wide as its columns need while the plot keeps a readable width.
+    // Where both do not fit, the plot becomes a tab beside the tables, each
+    // with the dock's whole width. In a side column, taller than wide, one
+    // above the other. Stacked in a wide dock, plot and table would ask for
+    // more height than the render view can spare.
+    const bool tall = height() > width();
+    const int tabFrame = tabs_->width() - tabs_->currentWidget()->width();
+    const int tableWidth =
+        std::max(tableContentWidth(pinnedTable_), tableContentWidth(measureTable_)) + tabFrame;
+    const int room = width() - split_->handleWidth();
+    setPlotTabbed(!tall && room - tableWidth < kMinPlotWidth);
+    if (plotTabbed()) return;
+    const auto orientation = tall ? Qt::Vertical : Qt::Horizontal;
     if (split_->orientation() == orientation && splitMoved_) return;
     split_->setOrientation(orientation);
-    const int length = orientation == Qt::Horizontal ? width() : height();
-    split_->setSizes({length * 7 / 10, length - length * 7 / 10});
+    if (tall)
+        split_->setSizes({height() * 7 / 10, height() - height() * 7 / 10});
+    else
+        split_->setSizes({room - tableWidth, tableWidth});
+}
+
+bool TradeoffView::plotTabbed() const {
+    return tabs_->indexOf(plotBox_) >= 0;
+}
+
+void TradeoffView::setPlotTabbed(bool tabbed) {
+    if (tabbed == plotTabbed()) return;
+    if (tabbed) {
+        tabs_->insertTab(0, plotBox_, tr("Plot"));
+        tabs_->setCurrentWidget(plotBox_);
+    } else {
+        tabs_->removeTab(tabs_->indexOf(plotBox_));
+        split_->insertWidget(0, plotBox_);
+        plotBox_->show();
+    }
+}
+
+void TradeoffView::showTable(QTableWidget* table) {
+    // Tabbed, the plot is where new points show first.
+    tabs_->setCurrentWidget(plotTabbed() ? plotBox_ : table);
 }
 
 void TradeoffView::setMeasureGrid(const TradeoffGrid& grid, int referenceSamples) {
@@ -180,12 +244,20 @@ const std::vector<TradeoffPoint>& TradeoffView::measurePoints() const {
     return m ? m->points : none;
 }
 
+bool TradeoffView::isPinStale() const {
+    return isPinned() && !sameSceneContent(doc_->scene(), pinnedScene_);
+}
+
 void TradeoffView::frameShown(const RenderFrame& frame) {
     if (!frame.renderComplete || !frame.linear) return;
     complete_ = frame;
     updateActions();
-    if (!pinnedImage_ || frame.generation <= pinnedGeneration_) return;
+    if (frame.generation > pinnedGeneration_) scoreFrame(frame);
+}
 
+void TradeoffView::scoreFrame(const RenderFrame& frame) {
+    // A frame always shows the document's scene (MainWindow drops older ones).
+    if (!pinnedImage_ || isPinStale()) return;
     PinnedPoint p;
     p.id = nextId_++;
     p.generation = frame.generation;
@@ -217,20 +289,98 @@ void TradeoffView::onErrorMeasured(quint64 id, const ErrorStats& error) {
 
 void TradeoffView::pinCurrent() {
     if (!complete_) return;  // the action is disabled then; a shortcut may still race
+    if (complete_->settings.samplesPerPixel < kNoisyBelowSamples) {
+        offerConvergedReference(*complete_);
+        return;
+    }
+    pin(complete_->linear, complete_->settings, complete_->seconds, complete_->generation,
+        doc_->scene());
+}
+
+void TradeoffView::offerConvergedReference(const RenderFrame& noisy) {
+    const int spp = noisy.settings.samplesPerPixel;
+    const QString text =
+        tr("This image has only %1 per pixel: its edges are still jagged, and every later "
+           "render would be scored against that noise instead of the true picture.\n\n"
+           "Render a converged reference at %2 samples per pixel (in double precision, in the "
+           "background) and pin it when it is done?")
+            .arg(spp == 1 ? tr("1 sample") : tr("%1 samples").arg(spp))
+            .arg(referenceSamples_);
+    auto* box = new QMessageBox(QMessageBox::Warning, tr("Pin a Noisy Image?"), text,
+                                QMessageBox::Cancel, this);
+    box->setObjectName(QStringLiteral("noisyPinWarning"));
+    QPushButton* converged =
+        box->addButton(tr("Render Converged Reference"), QMessageBox::AcceptRole);
+    converged->setObjectName(QStringLiteral("renderConvergedButton"));
+    QPushButton* anyway = box->addButton(tr("Pin This Image Anyway"), QMessageBox::ActionRole);
+    anyway->setObjectName(QStringLiteral("pinAnywayButton"));
+    box->setDefaultButton(converged);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    // The frame as it was when asked: the view may have moved on by the answer.
+    const Scene scene = doc_->scene();
+    connect(converged, &QPushButton::clicked, this, &TradeoffView::startConvergedReference);
+    connect(anyway, &QPushButton::clicked, this, [this, noisy, scene] {
+        pin(noisy.linear, noisy.settings, noisy.seconds, noisy.generation, scene);
+    });
+    // Not exec(): the editor (and a test driving it) carries on while it is open.
+    box->open();
+}
+
+void TradeoffView::startConvergedReference() {
+    stopReference();
+    referenceError_.clear();
+    // At the size the view renders, so that its frames compare with it.
+    referenceJob_ = std::make_unique<ReferenceJob>(viewSized(doc_->scene()), referenceSamples_);
+    connect(referenceJob_.get(), &ReferenceJob::finished, this, &TradeoffView::onReferenceRendered);
+    referenceJob_->start();
+    updateActions();
+    updatePinStatus();
+}
+
+void TradeoffView::stopReference() {
+    if (!referenceJob_) return;
+    referenceJob_->disconnect(this);
+    referenceJob_.reset();  // cancels and joins: the stop is asked every tile row
+    updateActions();
+    updatePinStatus();
+}
+
+void TradeoffView::onReferenceRendered(const ConvergedReference& reference, const QString& error) {
+    if (!referenceJob_ || sender() != referenceJob_.get()) return;
+    const Scene scene = referenceJob_->scene();
+    referenceJob_.reset();  // its thread has returned from run(): the join is immediate
+    referenceError_ = error;
+    if (!error.isEmpty() || !reference.image) {
+        updateActions();
+        updatePinStatus();
+        return;
+    }
+    // Every frame from now on is scored; the one on screen at once.
+    pin(reference.image, reference.settings, reference.seconds,
+        complete_ ? complete_->generation : 0, scene);
+    if (complete_) scoreFrame(*complete_);
+}
+
+void TradeoffView::pin(std::shared_ptr<const Image> image, const RenderSettings& settings,
+                       double seconds, quint64 generation, const Scene& scene) {
+    stopReference();
     errors_.clear();
     points_.clear();
-    pinnedImage_ = complete_->linear;
-    pinnedSettings_ = complete_->settings;
-    pinnedSeconds_ = complete_->seconds;
-    pinnedGeneration_ = complete_->generation;
+    pinnedImage_ = std::move(image);
+    pinnedSettings_ = settings;
+    pinnedSeconds_ = seconds;
+    pinnedGeneration_ = generation;
+    pinnedScene_ = scene;
     fillPinnedTable(pinnedTable_, points_);
-    tabs_->setCurrentWidget(pinnedTable_);
+    showTable(pinnedTable_);
     updateActions();
     updatePinStatus();
     refreshPlot();
 }
 
 void TradeoffView::unpinAll() {
+    stopReference();
+    referenceError_.clear();
     errors_.clear();
     points_.clear();
     pinnedImage_.reset();
@@ -308,7 +458,7 @@ bool TradeoffView::startMeasure() {
     progress_->show();
     cancelButton_->show();
     job_->start();
-    tabs_->setCurrentWidget(measureTable_);
+    showTable(measureTable_);
     updateActions();
     updateMeasureStatus();
     refreshPlot();
@@ -346,7 +496,7 @@ void TradeoffView::onMeasureFinished(const MeasureResults& results, const QStrin
 void TradeoffView::updateActions() {
     pin_->setEnabled(complete_.has_value());
     pin_->setText(complete_ ? tr("&Pin as Reference") : tr("&Pin as Reference (rendering…)"));
-    unpin_->setEnabled(isPinned());
+    unpin_->setEnabled(isPinned() || referenceJob_);
     measure_->setEnabled(!job_);
     cancel_->setEnabled(job_ != nullptr);
     progress_->setVisible(job_ != nullptr);
@@ -354,6 +504,17 @@ void TradeoffView::updateActions() {
 }
 
 void TradeoffView::updatePinStatus() {
+    pinStale_->setVisible(isPinStale());
+    if (referenceJob_) {
+        pinStatus_->setText(tr("Rendering a converged reference at %1 samples per pixel in the "
+                               "background; it is pinned when done (Unpin cancels).")
+                                .arg(referenceJob_->samples()));
+        return;
+    }
+    if (!referenceError_.isEmpty()) {
+        pinStatus_->setText(tr("The converged reference failed: %1").arg(referenceError_));
+        return;
+    }
     if (!isPinned()) {
         pinStatus_->setText(
             tr("Pin the finished image as a reference to plot every later "

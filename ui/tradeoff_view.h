@@ -6,6 +6,14 @@
 // and its error against the pinned image (measureError on an ErrorWorker, off
 // the GUI thread). Unpin drops the image and the points.
 //
+// A noisy image (fewer than kNoisyBelowSamples samples per pixel) is not
+// pinned without a word: a message box offers to render a converged reference
+// in the background (ReferenceJob, as Measure's reference) and pin that, or to
+// pin the image anyway. A change of the scene other than its render settings
+// (a sphere moved, the camera turned) makes the pin stale: the dock says so,
+// and renders are not scored against it until it is pinned again (or the
+// scene is undone back to the pinned one).
+//
 // Measure runs the whole trade-off of the scene (MeasureJob) in the background,
 // with progress and Cancel; its points fill the plot as they come, the Pareto
 // front ringed, and the finished (or cancelled) run goes to the TradeoffRecord
@@ -21,6 +29,7 @@
 
 #include "error_worker.h"
 #include "measure_job.h"
+#include "reference_job.h"
 #include "render_worker.h"
 #include "tradeoff_points.h"
 
@@ -58,7 +67,14 @@ class TradeoffView : public QWidget {
     bool startMeasure();
     bool isMeasuring() const { return job_ != nullptr; }
 
+    // Fewer samples per pixel than this: jagged edges, worth a converged reference.
+    static constexpr int kNoisyBelowSamples = 64;
+
     bool isPinned() const { return pinnedImage_ != nullptr; }
+    // The scene has changed since the pin, other than in its render settings.
+    bool isPinStale() const;
+    bool isRenderingReference() const { return referenceJob_ != nullptr; }
+    const RenderSettings& pinnedSettings() const { return pinnedSettings_; }
     std::shared_ptr<const Image> pinnedImage() const { return pinnedImage_; }
     const std::vector<PinnedPoint>& pinnedPoints() const { return points_; }
     // Measure's points on show: the running job's so far, else the last run's.
@@ -83,6 +99,13 @@ class TradeoffView : public QWidget {
 
   private:
     void pinCurrent();
+    void offerConvergedReference(const RenderFrame& noisy);
+    void startConvergedReference();
+    void onReferenceRendered(const ConvergedReference& reference, const QString& error);
+    void pin(std::shared_ptr<const Image> image, const RenderSettings& settings, double seconds,
+             quint64 generation, const Scene& scene);
+    void scoreFrame(const RenderFrame& frame);
+    void stopReference();
     void unpinAll();
     void confirmMeasure();
     void onErrorMeasured(quint64 id, const ErrorStats& error);
@@ -92,6 +115,10 @@ class TradeoffView : public QWidget {
     void updatePinStatus();
     void updateMeasureStatus();
     void refreshPlot();
+    void arrangeSplit();
+    bool plotTabbed() const;
+    void setPlotTabbed(bool tabbed);
+    void showTable(QTableWidget* table);  // or the plot, where it is a tab of its own
 
     SceneDocument* doc_;
     TradeoffRecord* record_;
@@ -102,6 +129,9 @@ class TradeoffView : public QWidget {
     RenderSettings pinnedSettings_;
     double pinnedSeconds_ = 0.0;
     quint64 pinnedGeneration_ = 0;
+    Scene pinnedScene_;  // what the pinned image shows
+    std::unique_ptr<ReferenceJob> referenceJob_;
+    QString referenceError_;  // the last converged reference's failure, if it failed
     std::vector<PinnedPoint> points_;
     quint64 nextId_ = 1;
 
@@ -114,11 +144,14 @@ class TradeoffView : public QWidget {
 
     QAction *pin_, *unpin_, *measure_, *cancel_;
     QLabel* pinStatus_;
+    QLabel* pinStale_;  // shown while the pin is stale
     QLabel* measureStatus_;
     QProgressBar* progress_;
     QPushButton* cancelButton_;
     QSplitter* split_;         // the plot and the tables
     bool splitMoved_ = false;  // by the user: then only a turn resets it
+    QTimer arrange_;           // arrangeSplit() after the columns' widths changed
+    QWidget* plotBox_;         // the plot and its note: in the split, or a tab beside the tables
     PlotWidget* plot_;
     QLabel* plotNote_;
     QTabWidget* tabs_;

@@ -165,17 +165,66 @@ TEST_F(PrecisionViewTest, Undo_ComparesAgain) {
     expectShowsComparisonOfCurrentScene();
 }
 
-TEST(PrecisionViewSize, CappedAtTheLongSideKeepingTheAspectRatio) {
+TEST(PrecisionViewSize, CappedAtPreviewSizeKeepingTheAspectRatio) {
     Scene s;
     s.render.width = 1920;
     s.render.height = 1080;
-    EXPECT_EQ(PrecisionView::comparisonSize(s), QSize(480, 270));
+    EXPECT_EQ(PrecisionView::comparisonSize(s), QSize(320, 180));
     s.render.width = 600;
     s.render.height = 1200;
-    EXPECT_EQ(PrecisionView::comparisonSize(s), QSize(240, 480));
+    EXPECT_EQ(PrecisionView::comparisonSize(s), QSize(160, 320));
     s.render.width = 320;
     s.render.height = 240;
     EXPECT_EQ(PrecisionView::comparisonSize(s), QSize(320, 240));
+}
+
+TEST_F(PrecisionViewTest, Dock_PlainTitleAndAnExplanationAtItsTop) {
+    EXPECT_EQ(dock->windowTitle(), QStringLiteral("Precision Check"));
+    EXPECT_EQ(toggle->text(), QStringLiteral("Precision Check"));  // the View menu's entry
+    ASSERT_TRUE(showDock());
+    QLabel* intro = label("precisionIntro");
+    ASSERT_TRUE(intro->isVisible());
+    EXPECT_EQ(intro->text(),
+              QStringLiteral("Renders the scene with 32-bit (float) and 64-bit (double) numbers "
+                             "and shows where the two pictures differ: where they barely do, the "
+                             "faster float is accurate enough."));
+    // At the top: above the status line and the heat map.
+    EXPECT_LT(intro->geometry().top(), label("precisionStatus")->geometry().top());
+}
+
+// An edit while the dock is open: the main render gets the cores first and its
+// finished frame reaches the view before the comparison starts, which then
+// works at preview size and says so.
+TEST_F(PrecisionViewTest, EditWhileShown_ComparesAtPreviewSizeOnlyAfterTheMainRenderIsComplete) {
+    // Slower than the debounce delay, so that a comparison not waiting for it would overlap.
+    ASSERT_TRUE(doc->edit(QStringLiteral("bigger"), [](Scene& s) {
+        s.render.width = 480;
+        s.render.height = 360;
+        s.render.samplesPerPixel = 32;
+    }));
+    ASSERT_TRUE(showDock());
+    QStringList events;
+    QSize mainSize;
+    QObject listening;  // disconnects the lambdas below when the test ends
+    QObject::connect(window.get(), &MainWindow::frameShown, &listening, [&](const RenderFrame& f) {
+        if (!f.renderComplete) return;
+        events << QStringLiteral("main render complete");
+        mainSize = f.image.size();
+    });
+    QObject::connect(view, &PrecisionView::comparisonStarted, &listening,
+                     [&] { events << QStringLiteral("comparison started"); });
+    QSignalSpy shown(view, &PrecisionView::comparisonShown);
+    nudgeBall(0.1);
+    ASSERT_TRUE(shown.wait(3 * kTimeoutMs));  // both renders, one after the other, sanitizers
+    EXPECT_EQ(events, QStringList({QStringLiteral("main render complete"),
+                                   QStringLiteral("comparison started")}));
+    EXPECT_EQ(mainSize, QSize(480, 360));  // the main render keeps its full size
+    const PrecisionComparison& c = view->shownResult().comparison;
+    EXPECT_EQ(QSize(c.width, c.height), QSize(320, 240));
+    const QString status = label("precisionStatus")->text();
+    EXPECT_TRUE(status.startsWith(QStringLiteral(
+        "Measured at 320 × 240 (preview size; the scene renders at 480 × 360), 32 samples")))
+        << status.toStdString();
 }
 
 TEST_F(PrecisionViewTest, FloatRangeWarning_HiddenForTheSeed) {

@@ -48,6 +48,35 @@ TEST(PlotAxis, NarrowLogAxis_StillHasTwoLabelledTicks) {
     }
 }
 
+// The labels a reader sees on `axis`, in order.
+QStringList labelsOf(const PlotAxis& axis) {
+    QStringList labels;
+    for (double v : axis.major) labels << axis.label(v);
+    return labels;
+}
+
+TEST(PlotAxis, LogAxisSpanning2To5Ms_LabelsTwoAndFiveMs) {
+    const PlotAxis axis = makePlotAxis(0.002, 0.005, true);
+    EXPECT_EQ(labelsOf(axis), QStringList({QStringLiteral("0.002"), QStringLiteral("0.005")}));
+}
+
+// Render times of 1.2 to 1.8 s hold no 1, 2 or 5 and no other whole multiple:
+// plain numbers at a nice step instead, never an axis without a label.
+TEST(PlotAxis, LogAxisWithinOneDecadeWithoutWholeMultiples_LabelsPlainNumbers) {
+    const PlotAxis axis = makePlotAxis(1.2, 1.8, true);
+    EXPECT_EQ(labelsOf(axis), QStringList({QStringLiteral("1.2"), QStringLiteral("1.4"),
+                                           QStringLiteral("1.6"), QStringLiteral("1.8")}));
+    for (double v : axis.major) {
+        EXPECT_GE(v, axis.lo);
+        EXPECT_LE(v, axis.hi);
+    }
+    EXPECT_TRUE(axis.minor.empty());
+    // The same far from 1, where labels carry a power of ten.
+    const PlotAxis tiny = makePlotAxis(1.2e-7, 1.8e-7, true);
+    ASSERT_GE(tiny.major.size(), 2u);
+    EXPECT_EQ(tiny.label(tiny.major[0]), QStringLiteral("1.2×10⁻⁷"));
+}
+
 TEST(PlotAxis, LinearAxis_NiceTicksCoveringTheData) {
     const PlotAxis axis = makePlotAxis(0.3, 9.7, false);
     EXPECT_LE(axis.lo, 0.3);

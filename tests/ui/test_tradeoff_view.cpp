@@ -9,13 +9,17 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QElapsedTimer>
+#include <QHeaderView>
 #include <QLabel>
 #include <QMessageBox>
 #include <QProgressBar>
+#include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QStandardPaths>
+#include <QStyle>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QTest>
 #include <QUndoStack>
@@ -32,6 +36,7 @@
 #include "scene_io.h"
 #include "settings_prediction.h"
 #include "test_support.h"
+#include "tradeoff.h"
 #include "tradeoff_view.h"
 
 namespace whitted::ui {
@@ -135,11 +140,30 @@ class TradeoffViewTest : public ::testing::Test {
         emit combo->activated(index);
     }
 
-    // Pins the finished frame; returns it.
-    RenderFrame pin() {
+    // Triggers Pin as Reference on a noisy image; returns the warning it shows.
+    QMessageBox* pinNoisy() {
         QAction* action = view->pinAction();
         EXPECT_TRUE(action->isEnabled());
         action->trigger();
+        // The one on screen: an answered one is deleted only later.
+        QMessageBox* box = nullptr;
+        for (auto* b : window->findChildren<QMessageBox*>(QStringLiteral("noisyPinWarning")))
+            if (b->isVisible()) box = b;
+        EXPECT_NE(box, nullptr);
+        return box;
+    }
+
+    // Clicks a button of `box`, as the user does.
+    static void click(QMessageBox* box, const char* button) {
+        auto* b = box->findChild<QPushButton*>(QString::fromLatin1(button));
+        ASSERT_NE(b, nullptr) << button;
+        QTest::mouseClick(b, Qt::LeftButton);
+    }
+
+    // Pins the finished frame (the seed's 1 sample per pixel: past the warning); returns it.
+    RenderFrame pin() {
+        QMessageBox* box = pinNoisy();
+        if (box) click(box, "pinAnywayButton");
         EXPECT_TRUE(view->isPinned());
         return frames->last;
     }
@@ -294,6 +318,133 @@ TEST_F(TradeoffViewTest, Pin_SmallerRenderComparedStretched_OtherShapeSkippedWit
     EXPECT_EQ(view->plot()->spec().points.size(), 1u);  // the skipped one has no error to plot
 }
 
+TEST_F(TradeoffViewTest, Pin_OneSampleImage_WarnsFirst_PinAnywayPinsIt) {
+    const RenderFrame shown = frames->last;
+    QMessageBox* box = pinNoisy();
+    ASSERT_NE(box, nullptr);
+    EXPECT_EQ(box->text(),
+              QStringLiteral("This image has only 1 sample per pixel: its edges are still jagged, "
+                             "and every later render would be scored against that noise instead "
+                             "of the true picture.\n\nRender a converged reference at 256 "
+                             "samples per pixel (in double precision, in the background) and pin "
+                             "it when it is done?"));
+    EXPECT_FALSE(view->isPinned()) << "pinned before the user answered";
+    click(box, "pinAnywayButton");
+    ASSERT_TRUE(view->isPinned());
+    EXPECT_EQ(view->pinnedImage(), shown.linear);
+    EXPECT_EQ(view->pinnedSettings().samplesPerPixel, 1);
+}
+
+TEST_F(TradeoffViewTest, Pin_ManySamples_PinsWithoutAsking) {
+    ASSERT_TRUE(
+        editAndWait([](Scene& s) { s.render.samplesPerPixel = TradeoffView::kNoisyBelowSamples; }));
+    view->pinAction()->trigger();
+    EXPECT_TRUE(view->isPinned());
+    EXPECT_EQ(window->findChild<QMessageBox*>(QStringLiteral("noisyPinWarning")), nullptr);
+}
+
+// The converged reference is core's renderReference at the stated samples, of
+// the scene as the view renders it: the pinned image is that, pixel for pixel,
+// and the noisy image on screen is scored against it at once.
+TEST_F(TradeoffViewTest, Pin_ConvergedReference_PinsARenderAtTheStatedSamples) {
+    view->setMeasureGrid(tinyGrid(), 16);  // a 16-sample reference renders in a blink
+    const RenderFrame noisy = frames->last;
+    QMessageBox* box = pinNoisy();
+    ASSERT_NE(box, nullptr);
+    EXPECT_TRUE(box->text().contains(QStringLiteral("at 16 samples per pixel")));
+    click(box, "renderConvergedButton");
+    EXPECT_TRUE(
+        child<QLabel>("pinStatus")
+            ->text()
+            .startsWith(QStringLiteral("Rendering a converged reference at 16 samples per pixel")));
+    QSignalSpy measured(view, &TradeoffView::pointMeasured);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return view->isPinned(); }, kTimeoutMs));
+    const ReferenceRender want = renderReference(doc->scene(), 16);
+    EXPECT_EQ(view->pinnedSettings(), want.scene.render);
+    EXPECT_EQ(view->pinnedSettings().samplesPerPixel, 16);
+    EXPECT_EQ(view->pinnedSettings().precision, Precision::Double);
+    EXPECT_EQ(view->pinnedImage()->rgb, want.image.rgb);
+    EXPECT_TRUE(child<QLabel>("pinStatus")->text().startsWith(QStringLiteral("Pinned: 16 spp")))
+        << child<QLabel>("pinStatus")->text().toStdString();
+
+    ASSERT_TRUE(QTest::qWaitFor([&] { return measured.count() == 1; }, kTimeoutMs));
+    const PinnedPoint& p = view->pinnedPoints()[0];
+    EXPECT_EQ(p.settings.samplesPerPixel, 1);
+    ASSERT_TRUE(p.error.has_value());
+    EXPECT_EQ(p.error->rmseSrgb8, measureError(*noisy.linear, want.image).rmseSrgb8);
+}
+
+// The converged reference of a scene that is gone is never pinned; Unpin stops it too.
+TEST_F(TradeoffViewTest, Pin_ConvergedReference_StoppedBySphereMoveOrUnpin) {
+    for (bool byUnpin : {false, true}) {
+        SCOPED_TRACE(byUnpin ? "Unpin" : "sphere moved");
+        QMessageBox* box = pinNoisy();
+        ASSERT_NE(box, nullptr);
+        click(box, "renderConvergedButton");
+        ASSERT_TRUE(view->isRenderingReference());
+        EXPECT_TRUE(view->unpinAction()->isEnabled());  // it cancels the render
+        if (byUnpin)
+            view->unpinAction()->trigger();
+        else
+            ASSERT_TRUE(
+                doc->edit(QStringLiteral("move"), [](Scene& s) { s.spheres[0].center.x += 0.3; }));
+        EXPECT_FALSE(view->isRenderingReference());
+        EXPECT_EQ(child<QLabel>("pinStatus")->text(),
+                  QStringLiteral("Pin the finished image as a reference to plot every later "
+                                 "render's error against it."));
+        QTest::qWait(300);  // whatever the stopped render posted arrives, and is dropped
+        EXPECT_FALSE(view->isPinned());
+        ASSERT_TRUE(QTest::qWaitFor([&] { return view->pinAction()->isEnabled(); }, kTimeoutMs));
+    }
+}
+
+// The main window goes (its document first) while a converged reference renders
+// over an earlier pin: the render stops, nothing reads the document (ASan).
+TEST_F(TradeoffViewTest, Pin_ConvergedReference_WindowClosedMeanwhile_StopsCleanly) {
+    pin();
+    QMessageBox* box = pinNoisy();
+    ASSERT_NE(box, nullptr);
+    click(box, "renderConvergedButton");
+    ASSERT_TRUE(view->isRenderingReference());
+    frames.reset();
+    window.reset();
+    SUCCEED();
+}
+
+// A sphere moved: the pinned image shows another scene. The dock says so and
+// scores nothing until it is pinned again or the move is undone.
+TEST_F(TradeoffViewTest, Pin_SphereMoved_MarksThePinStale_NoPointsUntilUndone) {
+    pin();
+    auto* stale = child<QLabel>("pinStale");
+    ASSERT_TRUE(view->isVisible());  // pinning showed the dock
+    EXPECT_FALSE(stale->isVisible());
+
+    ASSERT_TRUE(editAndWait([](Scene& s) { s.spheres[0].center.x += 0.3; }));
+    EXPECT_TRUE(view->isPinStale());
+    EXPECT_TRUE(stale->isVisible());
+    EXPECT_EQ(stale->text(), QStringLiteral("The pinned reference is out of date: the scene has "
+                                            "changed since it was pinned. Renders are not scored "
+                                            "against it until you pin again."));
+    // A render-settings change afterwards does not make it current again.
+    ASSERT_TRUE(editAndWait([](Scene& s) { s.render.samplesPerPixel = 2; }));
+    QTest::qWait(100);  // an error, had one been submitted, would be back by now
+    EXPECT_TRUE(view->pinnedPoints().empty());
+    EXPECT_TRUE(view->plot()->spec().points.empty());
+    EXPECT_EQ(child<QTableWidget>("pinnedTable")->rowCount(), 0);
+
+    // Undo the move (the samples stay at 2): the pinned scene again, scored again.
+    QSignalSpy measured(view, &TradeoffView::pointMeasured);
+    const int before = frames->count;
+    doc->undoStack()->undo();
+    doc->undoStack()->undo();
+    ASSERT_TRUE(editAndWait([](Scene& s) { s.render.samplesPerPixel = 2; }));
+    ASSERT_GT(frames->count, before);
+    EXPECT_FALSE(view->isPinStale());
+    EXPECT_FALSE(stale->isVisible());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return measured.count() >= 1; }, kTimeoutMs));
+    EXPECT_EQ(view->pinnedPoints().back().settings.samplesPerPixel, 2);
+}
+
 TEST_F(TradeoffViewTest, Unpin_ClearsPointsPlotAndTable_LaterRendersAddNothing) {
     pin();
     QSignalSpy measured(view, &TradeoffView::pointMeasured);
@@ -321,6 +472,66 @@ TEST_F(TradeoffViewTest, OpeningAScene_UnpinsAndForgetsTheRecord) {
     EXPECT_FALSE(view->isPinned());
     // Only the new scene's first render is remembered.
     EXPECT_EQ(window->tradeoffRecord()->renders().size(), 1u);
+}
+
+// Every column of `table` as wide as its title and its widest cell need, with
+// the style's margins: no text is elided ("Time (…").
+void expectColumnsFitTheirContents(const QTableWidget* table, bool allInView) {
+    const QHeaderView* header = table->horizontalHeader();
+    QStyle* style = table->style();
+    const int headerMargins = 2 * style->pixelMetric(QStyle::PM_HeaderMargin, nullptr, header);
+    const int cellMargins =
+        2 * (style->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, table) + 1);
+    for (int c = 0; c < table->columnCount(); ++c) {
+        const QString title = table->horizontalHeaderItem(c)->text();
+        const int width = header->sectionSize(c);
+        for (const QString& line : title.split(QLatin1Char('\n')))
+            EXPECT_GE(width, header->fontMetrics().horizontalAdvance(line) + headerMargins)
+                << table->objectName().toStdString() << ": " << title.toStdString();
+        // Whole inside the table's visible part: nothing cut off at its right edge.
+        if (allInView) {
+            EXPECT_LE(header->sectionViewportPosition(c) + width, table->viewport()->width())
+                << table->objectName().toStdString() << ": " << title.toStdString();
+        }
+        for (int r = 0; r < table->rowCount(); ++r) {
+            const QString cell = table->item(r, c)->text();
+            EXPECT_GE(width, table->fontMetrics().horizontalAdvance(cell) + cellMargins)
+                << title.toStdString() << ", row " << r << ": " << cell.toStdString();
+        }
+    }
+}
+
+// In the default window the dock is too narrow for the plot and the table side
+// by side: the plot becomes a tab of its own and each table has the dock's
+// whole width (about 660 px: the last columns still scroll into view). In a
+// wider one, the table sits beside the plot with every column in view.
+TEST_F(TradeoffViewTest, Tables_ColumnsAsWideAsTheirTitlesAndCellsAndAllInView) {
+    pin();
+    QSignalSpy measured(view, &TradeoffView::pointMeasured);
+    ASSERT_TRUE(editAndWait([](Scene& s) { s.render.samplesPerPixel = 4; }));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return measured.count() == 1; }, kTimeoutMs));
+    auto* pinned = child<QTableWidget>("pinnedTable");
+    auto* measureTable = child<QTableWidget>("measureTable");
+    ASSERT_EQ(pinned->rowCount(), 1);
+    auto* tabs = qobject_cast<QTabWidget*>(pinned->parentWidget()->parentWidget());
+    ASSERT_NE(tabs, nullptr);
+    const QWidget* plot = view->plot();
+    for (int windowWidth : {1400, 1900}) {
+        SCOPED_TRACE(windowWidth);
+        window->resize(windowWidth, 900);
+        QTest::qWait(50);  // the dock and the split follow
+        const bool beside = windowWidth == 1900;
+        EXPECT_EQ(tabs->tabText(0), beside ? QStringLiteral("Pinned") : QStringLiteral("Plot"));
+        for (QTableWidget* table : {pinned, measureTable}) {
+            tabs->setCurrentWidget(table);  // as a click on its tab does
+            QTest::qWait(50);
+            EXPECT_EQ(plot->isVisible(), beside);
+            if (!beside) {
+                EXPECT_GE(table->width(), view->width() - 40);  // the dock's whole width
+            }
+            expectColumnsFitTheirContents(table, beside);
+        }
+    }
 }
 
 // ---------------------------------------------------------------------------

@@ -79,8 +79,7 @@ void MaterialPage::addCheckerRows(QFormLayout* form) {
     // turning it back on restores what the user had.
     std::vector<DoubleField*> unused;
     checkerSize_ = makeField(
-        doc_, QStringLiteral("materialCheckerSize"),
-        DoubleFieldSpec::range(kSmallestLength, kLargest, 0.1).adaptive(),
+        doc_, QStringLiteral("materialCheckerSize"), kPositiveLength,
         [this](auto& s) {
             auto* m = itemAt(s.materials, index_);
             return m && m->checker ? &m->checker->size : nullptr;

@@ -21,12 +21,14 @@ namespace whitted::ui {
 // (scenes/extremes/ holds floors of radius 1e9 and balls of radius 5e-5), so a
 // value from a file is never clamped on display or on the next edit.
 inline constexpr double kLargest = std::numeric_limits<double>::max();
-inline constexpr double kSmallestLength = std::numeric_limits<double>::denorm_min();
 inline const DoubleFieldSpec kCoordinate = DoubleFieldSpec::range(-kLargest, kLargest, 0.1);
-// A radius slider is logarithmic over six decades: a 0.05 marble and a 100-unit
-// dome both sit inside it, and one step changes either by the same few percent.
-inline const DoubleFieldSpec kLength =
-    DoubleFieldSpec::range(kSmallestLength, kLargest, 0.1).adaptive().logSlider(0.001, 1000.0);
+// A length's spin box takes 0, so that a typed 0 is refused with the reason
+// ("must be greater than 0") rather than quietly clamped to the smallest double.
+// Its slider is logarithmic over six decades: a 0.05 marble and a 100-unit dome
+// both sit inside it, and one step changes either by the same few percent.
+inline const DoubleFieldSpec kPositiveLength =
+    DoubleFieldSpec::range(0.0, kLargest, 0.1).adaptive();
+inline const DoubleFieldSpec kLength = kPositiveLength.logSlider(0.001, 1000.0);
 inline const DoubleFieldSpec kUnitInterval =
     DoubleFieldSpec::range(0.0, 1.0, 0.05).linearSlider(0.0, 1.0);
 

@@ -56,7 +56,7 @@ SpherePage::SpherePage(SceneDocument* doc, QWidget* parent)
                                     },
                                     text(tr("radius")), fields_));
     form->addRow(tr("Material:"), buildMaterialChoice());
-    form->addRow(tr("Shared:"), users_);
+    form->addRow(QString(), users_);  // "Shared by 3 spheres" says what it is
     materialRows_ = std::make_unique<MaterialRows>(
         doc_, this, form, MaterialRows::Extent::Main, QStringLiteral("sphereMaterial"),
         [this](const Scene& s) { return materialIndex(s); },

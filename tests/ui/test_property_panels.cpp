@@ -16,6 +16,7 @@
 #include <QUndoStack>
 
 #include <memory>
+#include <ostream>
 #include <string>
 
 #include "camera_control.h"
@@ -29,6 +30,11 @@
 #include "scene_io.h"
 #include "scene_panel.h"
 #include "test_support.h"
+
+// Failures print a QString as its text.
+inline void PrintTo(const QString& text, std::ostream* os) {
+    *os << '"' << text.toStdString() << '"';
+}
 
 namespace whitted::ui {
 namespace {

@@ -14,6 +14,7 @@
 #include <QSlider>
 #include <QTest>
 #include <QUndoStack>
+#include <QWheelEvent>
 
 #include <memory>
 #include <ostream>
@@ -25,6 +26,7 @@
 #include "gui_test_main.h"
 #include "main_window.h"
 #include "material_presets.h"
+#include "material_sharing.h"
 #include "number_field.h"
 #include "render_view.h"
 #include "scene_io.h"
@@ -203,6 +205,19 @@ TEST(EditMessages, EveryValidationProblem_NamesTheItemAndTheFieldLabel) {
     }
 }
 
+// Item 7: Make unique's names count on from the original's.
+TEST(MaterialSharing, CopyNames_CountOn_SharersCounted) {
+    Scene s = loadScene(kSeedScene);
+    EXPECT_EQ(numberedMaterialName(s, "blue"), "blue 2");
+    s.spheres[kPurpleBall].material = "blue";
+    EXPECT_EQ(spheresUsing(s, "blue"), 2);
+    makeMaterialUnique(s, kPurpleBall);
+    EXPECT_EQ(s.spheres[kPurpleBall].material, "blue 2");
+    EXPECT_EQ(spheresUsing(s, "blue"), 1);
+    EXPECT_EQ(numberedMaterialName(s, "blue"), "blue 3");
+    EXPECT_EQ(numberedMaterialName(s, "blue 2"), "blue 3") << "not \"blue 2 2\"";
+}
+
 // Item 7: the sphere page shows its material and who shares it.
 TEST_F(PropertyPanelsTest, SpherePage_ShowsMaterialAndHowManySpheresShareIt) {
     window->scenePanel()->select(ItemKind::Sphere, kPurpleBall);
@@ -369,6 +384,15 @@ TEST_F(PropertyPanelsTest, SmallBall_SliderAndArrowSteps_SmallAndFinerWithShift)
     const double fine = (doc->scene().spheres[kBlueBall].radius - r1) / r1;
     EXPECT_GT(fine, 0.0);
     EXPECT_LT(fine, step / 4) << "Shift steps finer";
+
+    // Shift and the wheel: one slider position, a fraction of a percent.
+    const double r3 = doc->scene().spheres[kBlueBall].radius;
+    QWheelEvent wheel(QPointF(5, 5), slider->mapToGlobal(QPointF(5, 5)), QPoint(), QPoint(0, 120),
+                      Qt::NoButton, Qt::ShiftModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(slider, &wheel);
+    const double wheeled = (doc->scene().spheres[kBlueBall].radius - r3) / r3;
+    EXPECT_GT(wheeled, 0.0);
+    EXPECT_LT(wheeled, step / 4) << "Shift+wheel steps finely, not by a page";
 
     auto* x = child<QDoubleSpinBox>("sphereCenterX");
     const double x0 = doc->scene().spheres[kBlueBall].center.x;

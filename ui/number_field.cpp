@@ -5,11 +5,14 @@
 #include <cmath>
 
 #include <QFontMetrics>
+#include <QGuiApplication>
 #include <QHBoxLayout>
+#include <QKeyEvent>
 #include <QLineEdit>
 #include <QLocale>
 #include <QMessageBox>
 #include <QSignalBlocker>
+#include <QWheelEvent>
 
 namespace whitted::ui {
 
@@ -48,6 +51,54 @@ double roundForSlider(double value, const DoubleFieldSpec& spec, int steps) {
     return std::round(value / quantum) * quantum;
 }
 
+// Sets `flag` for the lifetime of the scope: the Shift of the event being handled.
+class FineScope {
+  public:
+    FineScope(bool& flag, Qt::KeyboardModifiers modifiers) : flag_(flag) {
+        flag_ = modifiers.testFlag(Qt::ShiftModifier);
+    }
+    ~FineScope() { flag_ = false; }
+    FineScope(const FineScope&) = delete;
+    FineScope& operator=(const FineScope&) = delete;
+
+  private:
+    bool& flag_;
+};
+
+// A slider whose arrow keys and wheel move one position, its finest, while
+// Shift is held. (QSlider's own wheel jumps a page on Shift.)
+class FineSlider : public QSlider {
+  public:
+    using QSlider::QSlider;
+
+  protected:
+    void keyPressEvent(QKeyEvent* event) override {
+        if (!event->modifiers().testFlag(Qt::ShiftModifier)) return QSlider::keyPressEvent(event);
+        const int coarse = singleStep();
+        setSingleStep(1);
+        QSlider::keyPressEvent(event);
+        setSingleStep(coarse);
+    }
+    void wheelEvent(QWheelEvent* event) override {
+        if (!event->modifiers().testFlag(Qt::ShiftModifier)) return QSlider::wheelEvent(event);
+        // Some platforms turn a Shift+wheel into a horizontal one.
+        const QPoint delta = event->angleDelta();
+        const int turn = delta.y() != 0 ? delta.y() : delta.x();
+        if (turn == 0) return event->ignore();
+        const int direction = (turn > 0) != invertedControls() ? 1 : -1;
+        setValue(value() + direction);
+        event->accept();
+    }
+};
+
+// A logarithmic slider has this many positions per decade: one position is a
+// 0.58 % change, one arrow step (kLogSingleStep positions) 4.7 %, whatever the
+// value, so a 0.05 marble's radius moves as finely as a 5-unit ball's.
+constexpr int kLogPositionsPerDecade = 400;
+constexpr int kLogSingleStep = 8;
+// A linear slider: 1000 positions, an arrow step being 1 % of its range.
+constexpr int kLinearPositions = 1000;
+
 }  // namespace
 
 NumberSpinBox::NumberSpinBox(QWidget* parent) : QDoubleSpinBox(parent) {
@@ -62,7 +113,11 @@ NumberSpinBox::NumberSpinBox(QWidget* parent) : QDoubleSpinBox(parent) {
 // sizes included) with signals blocked, so the field sees one change.
 void NumberSpinBox::stepBy(int steps) {
     double stepped;
-    {
+    // The spin box's auto-repeat steps from a timer, with no event to ask.
+    const bool fine = fine_ || QGuiApplication::keyboardModifiers().testFlag(Qt::ShiftModifier);
+    if (fine) {
+        stepped = std::clamp(value() + steps * stepSize(steps) / 10.0, minimum(), maximum());
+    } else {
         const QSignalBlocker block(this);
         const double before = value();
         QDoubleSpinBox::stepBy(steps);
@@ -70,6 +125,31 @@ void NumberSpinBox::stepBy(int steps) {
         setValue(before);
     }
     setValue(QString::number(stepped, 'g', 15).toDouble());
+}
+
+// Qt's step: the single step, or with adaptive steps a tenth of the value's
+// power of ten (a step down from 1 is 0.01, Qt's rule of thumb).
+double NumberSpinBox::stepSize(int steps) const {
+    if (stepType() != AdaptiveDecimalStepType) return singleStep();
+    double magnitude = std::abs(value());
+    if (magnitude == 0.0) return singleStep();
+    if ((value() < 0) != (steps < 0)) magnitude /= 1.01;
+    return std::pow(10.0, std::floor(std::log10(magnitude)) - 1.0);
+}
+
+void NumberSpinBox::keyPressEvent(QKeyEvent* event) {
+    const FineScope scope(fine_, event->modifiers());
+    QDoubleSpinBox::keyPressEvent(event);
+}
+
+void NumberSpinBox::wheelEvent(QWheelEvent* event) {
+    const FineScope scope(fine_, event->modifiers());
+    QDoubleSpinBox::wheelEvent(event);
+}
+
+void NumberSpinBox::mousePressEvent(QMouseEvent* event) {
+    const FineScope scope(fine_, event->modifiers());
+    QDoubleSpinBox::mousePressEvent(event);
 }
 
 QString NumberSpinBox::textFromValue(double value) const {
@@ -151,7 +231,8 @@ DoubleField::DoubleField(SceneDocument* doc, const QString& objectName, const Do
     spin_->setObjectName(objectName);
     spin_->setRange(spec.min, spec.max);
     spin_->setSingleStep(spec.step);
-    if (spec.adaptiveStep) spin_->setStepType(QAbstractSpinBox::AdaptiveDecimalStepType);
+    if (spec.adaptiveStep && !spec.stepOf)
+        spin_->setStepType(QAbstractSpinBox::AdaptiveDecimalStepType);
     spin_->setSuffix(spec.suffix);
 
     auto* layout = new QHBoxLayout(this);
@@ -160,11 +241,12 @@ DoubleField::DoubleField(SceneDocument* doc, const QString& objectName, const Do
     connect(spin_, &QDoubleSpinBox::valueChanged, this, &DoubleField::commit);
 
     if (spec.slider != SliderScale::None) {
-        slider_ = new QSlider(Qt::Horizontal, this);
+        slider_ = new FineSlider(Qt::Horizontal, this);
         slider_->setObjectName(objectName + QStringLiteral("Slider"));
-        slider_->setRange(0, kSliderSteps);
-        slider_->setSingleStep(kSliderSteps / 100);
-        slider_->setPageStep(kSliderSteps / 10);
+        slider_->setRange(0, sliderSteps());
+        const int single = spec.slider == SliderScale::Log ? kLogSingleStep : sliderSteps() / 100;
+        slider_->setSingleStep(single);
+        slider_->setPageStep(single * 10);
         layout->addWidget(slider_, 3);
         connect(slider_, &QSlider::sliderPressed, this, [this] {
             if (!doc_ || gestureOpen_) return;
@@ -200,15 +282,21 @@ void DoubleField::endGestureIfOpen() {
     if (doc_) doc_->endGesture();
 }
 
+int DoubleField::sliderSteps() const {
+    if (spec_.slider != SliderScale::Log) return kLinearPositions;
+    const double decades = std::log10(spec_.sliderMax / spec_.sliderMin);
+    return std::max(1, static_cast<int>(std::lround(decades * kLogPositionsPerDecade)));
+}
+
 double DoubleField::sliderToValue(int position) const {
-    const double t = static_cast<double>(position) / kSliderSteps;
+    const double t = static_cast<double>(position) / sliderSteps();
     double value;
     if (spec_.slider == SliderScale::Log)
         value = std::exp(std::log(spec_.sliderMin) +
                          t * (std::log(spec_.sliderMax) - std::log(spec_.sliderMin)));
     else
         value = spec_.sliderMin + t * (spec_.sliderMax - spec_.sliderMin);
-    return roundForSlider(value, spec_, kSliderSteps);
+    return roundForSlider(value, spec_, sliderSteps());
 }
 
 int DoubleField::valueToSlider(double value) const {
@@ -220,12 +308,13 @@ int DoubleField::valueToSlider(double value) const {
     else
         t = (value - spec_.sliderMin) / (spec_.sliderMax - spec_.sliderMin);
     if (!std::isfinite(t)) t = 0.0;
-    return static_cast<int>(std::lround(std::clamp(t, 0.0, 1.0) * kSliderSteps));
+    return static_cast<int>(std::lround(std::clamp(t, 0.0, 1.0) * sliderSteps()));
 }
 
 void DoubleField::refresh() {
     if (!doc_) return;
     const double value = get_(doc_->scene());
+    if (spec_.stepOf) spin_->setSingleStep(spec_.stepOf(doc_->scene()));
     {
         const QSignalBlocker block(spin_);
         spin_->setValue(value);
@@ -239,12 +328,7 @@ void DoubleField::refresh() {
 
 void DoubleField::commit(double value) {
     if (!doc_) return;
-    QString error;
-    if (!doc_->edit(
-            undoText_(), [&](Scene& scene) { set_(scene, value); }, &error)) {
-        showRefusal(this, error);
-        refresh();
-    }
+    if (!editOrTell(this, doc_, undoText_(), [&](Scene& scene) { set_(scene, value); })) refresh();
 }
 
 IntField::IntField(SceneDocument* doc, const QString& objectName, int min, int max, Getter get,
@@ -259,12 +343,8 @@ IntField::IntField(SceneDocument* doc, const QString& objectName, int min, int m
     setKeyboardTracking(false);
     setAccelerated(true);
     connect(this, &QSpinBox::valueChanged, this, [this](int value) {
-        QString error;
-        if (!doc_->edit(
-                undoText_(), [&](Scene& scene) { set_(scene, value); }, &error)) {
-            showRefusal(this, error);
+        if (!editOrTell(this, doc_, undoText_(), [&](Scene& scene) { set_(scene, value); }))
             refresh();
-        }
     });
 }
 
@@ -287,6 +367,14 @@ void showRefusal(QWidget* parent, const QString& reason) {
     box->setObjectName(name);
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->open();
+}
+
+bool editOrTell(QWidget* from, SceneDocument* doc, const QString& text,
+                const std::function<void(Scene&)>& change) {
+    QString error;
+    if (doc->edit(text, change, &error)) return true;
+    showRefusal(from, error);
+    return false;
 }
 
 }  // namespace whitted::ui

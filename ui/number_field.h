@@ -27,9 +27,13 @@ class NumberSpinBox : public QDoubleSpinBox {
 
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
+    // Holding Shift steps by a tenth of the usual step (arrows, keys and wheel).
     void stepBy(int steps) override;
 
   protected:
+    void keyPressEvent(QKeyEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
     QString textFromValue(double value) const override;
     double valueFromText(const QString& text) const override;
     QValidator::State validate(QString& text, int& pos) const override;
@@ -37,6 +41,9 @@ class NumberSpinBox : public QDoubleSpinBox {
 
   private:
     bool parse(QString text, double* value) const;
+    double stepSize(int steps) const;  // the unmodified step from the current value
+
+    bool fine_ = false;  // the event being handled holds Shift
 };
 
 enum class SliderScale { None, Linear, Log };
@@ -52,6 +59,9 @@ struct DoubleFieldSpec {
     double sliderMin = 0.0;  // the slider's end values; the spin box may go beyond them
     double sliderMax = 1.0;
     QString suffix;  // unit, e.g. " °"
+    // The spin box's step, re-read from the scene on refresh (a sphere's centre
+    // steps by a tenth of its radius); overrides `step` and `adaptiveStep`.
+    std::function<double(const Scene&)> stepOf;
 
     static DoubleFieldSpec range(double min, double max, double step) {
         DoubleFieldSpec spec;
@@ -70,6 +80,11 @@ struct DoubleFieldSpec {
     }
     DoubleFieldSpec logSlider(double from, double to) const {
         return withSlider(SliderScale::Log, from, to);
+    }
+    DoubleFieldSpec stepFrom(std::function<double(const Scene&)> fn) const {
+        DoubleFieldSpec spec = *this;
+        spec.stepOf = std::move(fn);
+        return spec;
     }
     DoubleFieldSpec unit(const QString& text) const {
         DoubleFieldSpec spec = *this;
@@ -111,7 +126,7 @@ class DoubleField : public QWidget {
     void hideEvent(QHideEvent* event) override;
 
   private:
-    static constexpr int kSliderSteps = 1000;
+    int sliderSteps() const;
     double sliderToValue(int position) const;
     int valueToSlider(double value) const;
     void commit(double value);
@@ -151,5 +166,9 @@ class IntField : public QSpinBox {
 // without a nested event loop, so a refused edit never blocks the caller (or a
 // test); a second refusal while it is open replaces its text.
 void showRefusal(QWidget* parent, const QString& reason);
+
+// Makes one edit; a refusal is shown to the user over `from`. True when made.
+bool editOrTell(QWidget* from, SceneDocument* doc, const QString& text,
+                const std::function<void(Scene&)>& change);
 
 }  // namespace whitted::ui

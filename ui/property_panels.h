@@ -10,7 +10,6 @@
 
 #include "scene_document.h"
 
-class QCheckBox;
 class QComboBox;
 class QLabel;
 class QStackedWidget;
@@ -20,6 +19,8 @@ namespace whitted::ui {
 class ColorButton;
 class DoubleField;
 class IntField;
+class MaterialPage;
+class SpherePage;
 
 class PropertyPanel : public QWidget {
     Q_OBJECT
@@ -31,9 +32,7 @@ class PropertyPanel : public QWidget {
     void showItem(ItemKind kind, int index);
 
   private:
-    QWidget* buildSpherePage();
     QWidget* buildLightPage();
-    QWidget* buildMaterialPage();
     void refresh();
     bool valid() const;
     QString itemLabel() const;  // the shown item's name, for undo texts
@@ -46,19 +45,12 @@ class PropertyPanel : public QWidget {
     int index_ = -1;
     QStackedWidget* pages_;
     QWidget* emptyPage_;
-    QWidget* spherePage_;
+    SpherePage* spherePage_;
     QWidget* lightPage_;
-    QWidget* materialPage_;
-    QLabel* sphereName_;
+    MaterialPage* materialPage_;
     QLabel* lightName_;
-    QLabel* materialName_;
-    QComboBox* sphereMaterial_;
     ColorButton* lightColor_;
-    ColorButton* materialDiffuse_;
-    QCheckBox* materialChecker_;
-    ColorButton* checkerColor_;
-    DoubleField* checkerSize_;
-    std::vector<DoubleField*> sphereFields_, lightFields_, materialFields_;
+    std::vector<DoubleField*> lightFields_;
 };
 
 // The camera: position, look-at point, up vector and vertical field of view.

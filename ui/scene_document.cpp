@@ -2,6 +2,7 @@
 
 #include <QUndoCommand>
 
+#include "edit_messages.h"
 #include "scene_io.h"
 
 namespace whitted::ui {
@@ -145,7 +146,7 @@ bool SceneDocument::edit(const QString& text, const std::function<void(Scene&)>&
     change(after);
     if (after == scene_) return true;
     if (auto problem = validateScene(after)) {
-        if (error) *error = QString::fromStdString(problem->jsonPath + ": " + problem->reason);
+        if (error) *error = editProblemText(*problem, after);
         return false;
     }
     undo_.push(new SceneEditCommand(this, scene_, after, text));

@@ -56,16 +56,8 @@ bool SceneListModel::setData(const QModelIndex& index, const QVariant& value, in
     const QString newName = value.toString().trimmed();
     if (newName == oldName) return true;
     const QString noun = kindNoun(kind_);
-    if (newName.isEmpty()) {
-        emit editRefused(tr("A %1 needs a name.").arg(noun));
-        return false;
-    }
-    for (int i = 0; i < itemCount(doc_->scene(), kind_); ++i) {
-        if (i != row && itemName(doc_->scene(), kind_, i) == newName) {
-            emit editRefused(tr("There is already a %1 named \"%2\".").arg(noun, newName));
-            return false;
-        }
-    }
+    // An empty or taken name is refused by the document, in the user's words
+    // (edit_messages.h): "There is already a sphere named “ball”".
     const std::string oldStd = oldName.toStdString(), newStd = newName.toStdString();
     QString error;
     const bool ok = doc_->edit(

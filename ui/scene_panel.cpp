@@ -8,11 +8,14 @@
 #include <QHBoxLayout>
 #include <QItemSelectionModel>
 #include <QListView>
+#include <QMenu>
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QTabWidget>
 #include <QVBoxLayout>
 
+#include "material_presets.h"
+#include "material_sharing.h"
 #include "number_field.h"
 #include "scene_list_model.h"
 
@@ -118,7 +121,10 @@ void ScenePanel::buildTab(ItemKind kind, const QString& title, const QString& li
     t.rename = button(tr("Rename"), QStringLiteral("renameButton"),
                       tr("Rename the selected %1").arg(noun));
     // Each tab's buttons act on their own list, whichever tab is showing.
-    connect(add, &QPushButton::clicked, this, [this, kind] { addItem(kind); });
+    if (kind == ItemKind::Material)
+        add->setMenu(buildAddMaterialMenu(add));
+    else
+        connect(add, &QPushButton::clicked, this, [this, kind] { addItem(kind); });
     connect(t.duplicate, &QPushButton::clicked, this, [this, kind] { duplicateItem(kind); });
     connect(t.remove, &QPushButton::clicked, this, [this, kind] { deleteItem(kind); });
     connect(t.rename, &QPushButton::clicked, this, [this, kind] { renameItem(kind); });
@@ -254,20 +260,50 @@ void ScenePanel::addItem(ItemKind kind) {
                 &error);
             break;
         }
-        case ItemKind::Material: {
-            const QString name = doc_->uniqueName(kind, tr("material"));
-            ok = doc_->edit(
-                tr("Add material %1").arg(name),
-                [&](Scene& s) { s.materials.push_back(defaultMaterial(name.toStdString())); },
-                &error);
-            break;
-        }
+        case ItemKind::Material:
+            return addMaterial(nullptr);
     }
     if (!ok) {
         showRefusal(this, error);
         return;
     }
     select(kind, itemCount(doc_->scene(), kind) - 1);
+}
+
+// Add on the materials tab offers the presets, so that glass is one click away
+// (a plain material is diffuse 0.8: made transparent, it still looks white).
+QMenu* ScenePanel::buildAddMaterialMenu(QWidget* parent) {
+    auto* menu = new QMenu(parent);
+    menu->setObjectName(QStringLiteral("addMaterialMenu"));
+    QAction* plain = menu->addAction(tr("Plain"), this, [this] { addMaterial(nullptr); });
+    plain->setObjectName(QStringLiteral("addMaterialPlain"));
+    menu->addSeparator();
+    for (const MaterialPreset& preset : materialPresets()) {
+        const QString name =
+            QString::fromUtf8(preset.name.data(), static_cast<qsizetype>(preset.name.size()));
+        QAction* action = menu->addAction(name, this, [this, &preset] { addMaterial(&preset); });
+        action->setObjectName(QStringLiteral("addMaterial") + name);
+    }
+    return menu;
+}
+
+void ScenePanel::addMaterial(const MaterialPreset* preset) {
+    const Scene& scene = doc_->scene();
+    std::string name;
+    if (!preset) {
+        name = doc_->uniqueName(ItemKind::Material, tr("material")).toStdString();
+    } else {
+        // Named after its preset: "glass", then "glass 2".
+        name = QString::fromUtf8(preset->name.data(), static_cast<qsizetype>(preset->name.size()))
+                   .toLower()
+                   .toStdString();
+        if (findMaterial(scene, name) >= 0) name = numberedMaterialName(scene, name);
+    }
+    const Material material = preset ? presetMaterial(*preset, name) : defaultMaterial(name);
+    if (!editOrTell(this, doc_, tr("Add material %1").arg(QString::fromStdString(name)),
+                    [&](Scene& s) { s.materials.push_back(material); }))
+        return;
+    select(ItemKind::Material, itemCount(doc_->scene(), ItemKind::Material) - 1);
 }
 
 void ScenePanel::duplicateItem(ItemKind kind) {

@@ -10,8 +10,13 @@
 
 class QAction;
 class QListView;
+class QMenu;
 class QPushButton;
 class QTabWidget;
+
+namespace whitted {
+struct MaterialPreset;
+}
 
 namespace whitted::ui {
 
@@ -61,6 +66,8 @@ class ScenePanel : public QWidget {
     void announce();
 
     void addItem(ItemKind kind);
+    QMenu* buildAddMaterialMenu(QWidget* parent);
+    void addMaterial(const MaterialPreset* preset);  // nullptr: a plain material
     void duplicateItem(ItemKind kind);
     void deleteItem(ItemKind kind);
     void renameItem(ItemKind kind);

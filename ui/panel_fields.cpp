@@ -1,0 +1,58 @@
+#include "panel_fields.h"
+
+#include <QFont>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+
+namespace whitted::ui {
+
+QWidget* makeVectorRow(SceneDocument* doc, const QString& name, const DoubleFieldSpec& spec,
+                       std::function<const Vec3*(const Scene&)> get, VectorAccess set,
+                       const DoubleField::TextFn& text, std::vector<DoubleField*>& fields) {
+    auto* row = new QWidget;
+    auto* layout = new QHBoxLayout(row);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(4);
+    static const char* const kAxes[] = {"X", "Y", "Z"};
+    for (int axis = 0; axis < 3; ++axis) {
+        auto* field = new DoubleField(
+            doc, name + QLatin1String(kAxes[axis]), spec,
+            [get, axis](const Scene& s) {
+                const Vec3* v = get(s);
+                return v ? (*v)[axis] : 0.0;
+            },
+            [set, axis](Scene& s, double value) {
+                if (Vec3* v = set(s)) (*v)[axis] = value;
+            },
+            text);
+        field->spinBox()->setToolTip(QString(QLatin1Char('x' + axis)));
+        fields.push_back(field);
+        layout->addWidget(field);
+    }
+    return row;
+}
+
+QFormLayout* makeForm(QWidget* page) {
+    auto* form = new QFormLayout(page);
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    form->setLabelAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    form->setRowWrapPolicy(QFormLayout::DontWrapRows);
+    return form;
+}
+
+QLabel* makeNameLabel(const QString& objectName) {
+    auto* label = new QLabel;
+    label->setObjectName(objectName);
+    label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    QFont font = label->font();
+    font.setBold(true);
+    label->setFont(font);
+    return label;
+}
+
+void refreshAll(const std::vector<DoubleField*>& fields) {
+    for (DoubleField* field : fields) field->refresh();
+}
+
+}  // namespace whitted::ui

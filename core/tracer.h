@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "camera.h"
-#include "ray_packet.h"
 #include "scene.h"
 #include "sphere_intersect.h"
+#include "sphere_set.h"
 
 namespace whitted {
 

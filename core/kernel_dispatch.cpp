@@ -105,7 +105,7 @@ std::string activeKernelName() {
 
 std::string activeKernelDescription() {
     const TracerKernel& kernel = activeKernel();
-    return std::string(kernel.name) + " (" + kernel.isa + ", " +
+    return std::string(kernel.name) + " (-march=" + kernel.isa + ", " +
            std::to_string(kernel.vectorBytes / sizeof(float)) + " floats per packet)";
 }
 

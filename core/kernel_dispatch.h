@@ -19,7 +19,7 @@ const TracerKernel& activeKernel();
 
 // The running kernel's name ("avx2"), for --stats and the About box.
 std::string activeKernelName();
-// The name with what it was compiled for: "avx2 (x86-64-v3, 8 floats per packet)".
+// The name with what it was compiled for: "avx2 (-march=x86-64-v3, 8 floats per packet)".
 std::string activeKernelDescription();
 
 // Kernels built into this program, widest first, and those of them this CPU runs.

@@ -72,11 +72,11 @@ TEST_F(KernelDispatch, PicksTheWidestSupportedKernel) {
 TEST_F(KernelDispatch, DescriptionsNameTheInstructionSetAndWidth) {
     useKernel("baseline");
     EXPECT_EQ(activeKernelName(), "baseline");
-    EXPECT_EQ(activeKernelDescription(), "baseline (x86-64, 4 floats per packet)");
+    EXPECT_EQ(activeKernelDescription(), "baseline (-march=x86-64, 4 floats per packet)");
     if (!contains(supportedKernelNames(), "avx2")) GTEST_SKIP() << "this CPU has no AVX2";
     useKernel("avx2");
     EXPECT_EQ(activeKernelName(), "avx2");
-    EXPECT_EQ(activeKernelDescription(), "avx2 (x86-64-v3, 8 floats per packet)");
+    EXPECT_EQ(activeKernelDescription(), "avx2 (-march=x86-64-v3, 8 floats per packet)");
 }
 
 TEST_F(KernelDispatch, RefusesAnUnknownKernelAndKeepsTheActiveOne) {

@@ -5,15 +5,19 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include <sys/wait.h>
 
 #include <gtest/gtest.h>
 
 #include "kernel_dispatch.h"
 #include "renderer.h"
 #include "scene_io.h"
+#include "test_support.h"
 
 namespace whitted {
 namespace {
@@ -109,6 +113,46 @@ TEST_F(KernelDispatch, EnvironmentVariableForcesAKernel) {
     std::printf("refused: %s\n", message.c_str());
     EXPECT_EQ(message.rfind("WHITTED_KERNEL: no tracer kernel is named \"sse9\"", 0), 0u)
         << message;
+}
+
+// whitted-render run with WHITTED_KERNEL=kernel: its exit status (-1 for a
+// signal, SIGILL included) and everything it printed.
+struct ProgramRun {
+    int exitCode = -1;
+    std::string output;
+};
+
+ProgramRun renderWithKernel(const std::string& kernel, const std::filesystem::path& image) {
+    std::string cmd = "WHITTED_KERNEL=" + kernel + " '" WHITTED_RENDER_EXE "' '";
+    cmd.append(WHITTED_SCENES_DIR "/seed.json' --quiet --width 16 --height 12 -o '");
+    cmd.append(image.string()).append("' 2>&1");
+    ProgramRun run;
+    FILE* pipe = popen(cmd.c_str(), "r");
+    if (!pipe) return {-1, "cannot start: " + cmd};
+    char buffer[256];
+    while (std::fgets(buffer, sizeof buffer, pipe)) run.output += buffer;
+    const int status = pclose(pipe);
+    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return run;
+}
+
+TEST_F(KernelDispatch, WhittedRenderRefusesKernelsItCannotRun) {
+    test::TempDir dir;
+    std::vector<std::string> refused = {"sse9"};
+    for (const std::string& name : builtKernelNames())
+        if (!contains(supportedKernelNames(), name)) refused.push_back(name);
+    for (const std::string& kernel : refused) {
+        const ProgramRun run = renderWithKernel(kernel, dir.path() / "out.png");
+        std::printf("WHITTED_KERNEL=%s: exit %d, %s", kernel.c_str(), run.exitCode,
+                    run.output.c_str());
+        EXPECT_EQ(run.exitCode, 2) << run.output;
+        EXPECT_NE(run.output.find("WHITTED_KERNEL: "), std::string::npos) << run.output;
+        EXPECT_NE(run.output.find("\"" + kernel + "\""), std::string::npos) << run.output;
+        EXPECT_FALSE(std::filesystem::exists(dir.path() / "out.png"));
+    }
+    const ProgramRun baseline = renderWithKernel("baseline", dir.path() / "out.png");
+    EXPECT_EQ(baseline.exitCode, 0) << baseline.output;
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / "out.png"));
 }
 
 // Renders of the repository's scenes, one per kernel this CPU runs.

@@ -1,7 +1,7 @@
 // The namespace that holds code compiled for one instruction set.
 //
 // The tracer's hot kernel is compiled once per instruction set (baseline
-// x86-64, x86-64-v3, x86-64-v4; core/CMakeLists.txt), each object with
+// x86-64, x86-64-v2, x86-64-v3, x86-64-v4; core/CMakeLists.txt), each object with
 // WHITTED_ISA naming its set. Every inline function and template those objects
 // compile (packets, lane operations, intersection) lives in
 // whitted::isa_<WHITTED_ISA>, so its mangled name carries the set: the linker

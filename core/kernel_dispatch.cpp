@@ -20,6 +20,9 @@ extern const TracerKernel kTracerKernel;
 namespace isa_avx2 {
 extern const TracerKernel kTracerKernel;
 }
+namespace isa_sse4 {
+extern const TracerKernel kTracerKernel;
+}
 namespace isa_baseline {
 extern const TracerKernel kTracerKernel;
 }
@@ -34,9 +37,8 @@ constexpr const TracerKernel* kBuiltKernels[] = {
 #ifdef WHITTED_KERNEL_NATIVE
     &isa_build::kTracerKernel,
 #endif
-    &isa_avx512::kTracerKernel,
-    &isa_avx2::kTracerKernel,
-    &isa_baseline::kTracerKernel,
+    &isa_avx512::kTracerKernel, &isa_avx2::kTracerKernel,
+    &isa_sse4::kTracerKernel,   &isa_baseline::kTracerKernel,
 };
 
 // This file is built with the project's flags, never a kernel's, so it can ask
@@ -46,6 +48,7 @@ bool cpuRuns(const TracerKernel& kernel) {
     const std::string_view isa = kernel.isa;
     if (isa == "x86-64-v4") return __builtin_cpu_supports("x86-64-v4");
     if (isa == "x86-64-v3") return __builtin_cpu_supports("x86-64-v3");
+    if (isa == "x86-64-v2") return __builtin_cpu_supports("x86-64-v2");
     return true;  // x86-64 itself, or "native": the flags this program already needs
 }
 

@@ -1,7 +1,7 @@
 // Which build of the tracing kernel runs (tracer_kernel.h): the widest
 // instruction set this CPU supports, chosen once at the first trace, or the
-// one the environment variable WHITTED_KERNEL names (baseline, avx2, avx512,
-// native) for tests and benchmarks.
+// one the environment variable WHITTED_KERNEL names (baseline, sse4, avx2,
+// avx512, native) for tests and benchmarks.
 #pragma once
 
 #include <string>

@@ -120,6 +120,11 @@ inline V laneFloor(const V& v) {
         return reinterpret_cast<V>(_mm256_floor_ps(reinterpret_cast<__m256>(v)));
     else
         return reinterpret_cast<V>(_mm256_floor_pd(reinterpret_cast<__m256d>(v)));
+#elif defined(__SSE4_1__)
+    if constexpr (sizeof(v[0]) == 4)
+        return reinterpret_cast<V>(_mm_floor_ps(reinterpret_cast<__m128>(v)));
+    else
+        return reinterpret_cast<V>(_mm_floor_pd(reinterpret_cast<__m128d>(v)));
 #elif defined(__SSE2__)
     return floorBySnapping(v);
 #else

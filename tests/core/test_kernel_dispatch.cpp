@@ -48,8 +48,8 @@ class KernelDispatch : public ::testing::Test {
     }
 };
 
-TEST_F(KernelDispatch, BuildsTheThreeInstructionSetsWidestFirst) {
-    std::vector<std::string> expected = {"avx512", "avx2", "baseline"};
+TEST_F(KernelDispatch, BuildsTheFourInstructionSetsWidestFirst) {
+    std::vector<std::string> expected = {"avx512", "avx2", "sse4", "baseline"};
     if (contains(builtKernelNames(), "native")) expected.insert(expected.begin(), "native");
     EXPECT_EQ(builtKernelNames(), expected);
 }
@@ -59,6 +59,7 @@ TEST_F(KernelDispatch, SupportedKernelsAreWhatTheCpuReports) {
     const std::vector<std::string> supported = supportedKernelNames();
     EXPECT_EQ(contains(supported, "avx512"), __builtin_cpu_supports("x86-64-v4") != 0);
     EXPECT_EQ(contains(supported, "avx2"), __builtin_cpu_supports("x86-64-v3") != 0);
+    EXPECT_EQ(contains(supported, "sse4"), __builtin_cpu_supports("x86-64-v2") != 0);
     EXPECT_TRUE(contains(supported, "baseline"));
     EXPECT_EQ(contains(supported, "native"), contains(builtKernelNames(), "native"));
 }
@@ -66,6 +67,7 @@ TEST_F(KernelDispatch, SupportedKernelsAreWhatTheCpuReports) {
 TEST_F(KernelDispatch, PicksTheWidestSupportedKernel) {
     __builtin_cpu_init();
     std::string widest = "baseline";
+    if (__builtin_cpu_supports("x86-64-v2")) widest = "sse4";
     if (__builtin_cpu_supports("x86-64-v3")) widest = "avx2";
     if (__builtin_cpu_supports("x86-64-v4")) widest = "avx512";
     if (contains(builtKernelNames(), "native")) widest = "native";  // the build's own flags
@@ -88,7 +90,7 @@ TEST_F(KernelDispatch, RefusesAnUnknownKernelAndKeepsTheActiveOne) {
     const std::string message = refusal([] { useKernel("sse9"); });
     std::printf("refused: %s\n", message.c_str());
     EXPECT_NE(message.find("\"sse9\""), std::string::npos) << message;
-    EXPECT_NE(message.find("avx512, avx2, baseline"), std::string::npos) << message;
+    EXPECT_NE(message.find("avx512, avx2, sse4, baseline"), std::string::npos) << message;
     EXPECT_EQ(activeKernelName(), "baseline");
 }
 

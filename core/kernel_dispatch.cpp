@@ -17,6 +17,9 @@ extern const TracerKernel kTracerKernel;
 namespace isa_avx512 {
 extern const TracerKernel kTracerKernel;
 }
+namespace isa_avx2_zen {
+extern const TracerKernel kTracerKernel;
+}
 namespace isa_avx2 {
 extern const TracerKernel kTracerKernel;
 }
@@ -32,13 +35,14 @@ namespace whitted {
 
 namespace {
 
-// Widest first: the first one the CPU runs is the default.
+// Widest first: the first one the CPU runs, and is tuned for, is the default.
 constexpr const TracerKernel* kBuiltKernels[] = {
 #ifdef WHITTED_KERNEL_NATIVE
     &isa_build::kTracerKernel,
 #endif
-    &isa_avx512::kTracerKernel, &isa_avx2::kTracerKernel,
-    &isa_sse4::kTracerKernel,   &isa_baseline::kTracerKernel,
+    &isa_avx512::kTracerKernel,   &isa_avx2_zen::kTracerKernel,
+    &isa_avx2::kTracerKernel,     &isa_sse4::kTracerKernel,
+    &isa_baseline::kTracerKernel,  // one a line
 };
 
 // This file is built with the project's flags, never a kernel's, so it can ask
@@ -58,9 +62,15 @@ std::string joined(const std::vector<std::string>& names) {
     return out;
 }
 
+// A kernel tuned for one vendor's cores is the default on those alone.
+bool tunedForThisCpu(const TracerKernel& kernel) {
+    if (std::string_view(kernel.tune).starts_with("znver")) return __builtin_cpu_is("amd");
+    return true;
+}
+
 const TracerKernel& widestSupported() {
     for (const TracerKernel* kernel : kBuiltKernels)
-        if (cpuRuns(*kernel)) return *kernel;
+        if (cpuRuns(*kernel) && tunedForThisCpu(*kernel)) return *kernel;
     return isa_baseline::kTracerKernel;  // not reached: every x86-64 CPU runs it
 }
 
@@ -108,7 +118,9 @@ std::string activeKernelName() {
 
 std::string activeKernelDescription() {
     const TracerKernel& kernel = activeKernel();
-    return std::string(kernel.name) + " (-march=" + kernel.isa + ", " +
+    const std::string tune =
+        std::string_view(kernel.tune) == "generic" ? "" : std::string(" -mtune=") + kernel.tune;
+    return std::string(kernel.name) + " (-march=" + kernel.isa + tune + ", " +
            std::to_string(kernel.vectorBytes / sizeof(float)) + " floats per packet)";
 }
 

@@ -1,7 +1,8 @@
 // Which build of the tracing kernel runs (tracer_kernel.h): the widest
-// instruction set this CPU supports, chosen once at the first trace, or the
-// one the environment variable WHITTED_KERNEL names (baseline, sse4, avx2,
-// avx512, native) for tests and benchmarks.
+// instruction set this CPU supports (tuned for its cores where a kernel is),
+// chosen once at the first trace, or the one the environment variable
+// WHITTED_KERNEL names (baseline, sse4, avx2, avx2_zen, avx512, native) for
+// tests and benchmarks.
 #pragma once
 
 #include <string>
@@ -25,7 +26,8 @@ std::string activeKernelDescription();
 // Kernels built into this program, widest first, and those of them this CPU runs.
 std::vector<std::string> builtKernelNames();
 std::vector<std::string> supportedKernelNames();
-// The widest kernel this CPU runs: what activeKernel() picks without WHITTED_KERNEL.
+// The widest kernel this CPU runs (of two alike, the one tuned for its cores):
+// what activeKernel() picks without WHITTED_KERNEL.
 std::string widestSupportedKernelName();
 
 // From now on trace with the named kernel (tests, benchmarks); an empty name

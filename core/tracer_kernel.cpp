@@ -10,13 +10,14 @@
 #include "ray_packet.h"
 #include "tracer_kernel.h"
 
-// The per-ISA objects get WHITTED_ISA and WHITTED_ISA_MARCH from CMake; built
+// The per-ISA objects get WHITTED_ISA, _MARCH and _TUNE from CMake; built
 // with the project's own flags (WHITTED_NATIVE), this is the "native" kernel.
 #ifdef WHITTED_ISA_MARCH
 #define WHITTED_KERNEL_NAME WHITTED_ISA_STR(WHITTED_ISA)
 #else
 #define WHITTED_KERNEL_NAME "native"
 #define WHITTED_ISA_MARCH "native"
+#define WHITTED_ISA_TUNE "native"
 #endif
 
 namespace whitted {
@@ -390,6 +391,7 @@ extern const TracerKernel kTracerKernel;
 constinit const TracerKernel kTracerKernel{
     .name = WHITTED_KERNEL_NAME,
     .isa = WHITTED_ISA_MARCH,
+    .tune = WHITTED_ISA_TUNE,
     .vectorBytes = kSimdBytes,
     .floats = {kernelClosestHit<float>, kernelTraceRay<float>, kernelCameraSamples<float>,
                kernelCameraRow<float>},

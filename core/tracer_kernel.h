@@ -20,8 +20,10 @@ struct KernelEntryPoints {
 };
 
 struct TracerKernel {
-    const char* name;  // "avx512", "avx2", "baseline", or "native" (the build's own flags)
+    const char*
+        name;  // "avx512", "avx2", "avx2_zen", "sse4", "baseline", "native" (the build's flags)
     const char* isa;   // the -march it was compiled with ("native": the build's flags)
+    const char* tune;  // and the -mtune: "generic", or a core family ("znver3")
     int vectorBytes;   // size of one packet vector: 16 floats per packet at 64
     KernelEntryPoints<float> floats;
     KernelEntryPoints<double> doubles;

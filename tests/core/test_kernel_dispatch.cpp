@@ -48,8 +48,8 @@ class KernelDispatch : public ::testing::Test {
     }
 };
 
-TEST_F(KernelDispatch, BuildsTheFourInstructionSetsWidestFirst) {
-    std::vector<std::string> expected = {"avx512", "avx2", "sse4", "baseline"};
+TEST_F(KernelDispatch, BuildsEveryInstructionSetWidestFirst) {
+    std::vector<std::string> expected = {"avx512", "avx2_zen", "avx2", "sse4", "baseline"};
     if (contains(builtKernelNames(), "native")) expected.insert(expected.begin(), "native");
     EXPECT_EQ(builtKernelNames(), expected);
 }
@@ -59,6 +59,7 @@ TEST_F(KernelDispatch, SupportedKernelsAreWhatTheCpuReports) {
     const std::vector<std::string> supported = supportedKernelNames();
     EXPECT_EQ(contains(supported, "avx512"), __builtin_cpu_supports("x86-64-v4") != 0);
     EXPECT_EQ(contains(supported, "avx2"), __builtin_cpu_supports("x86-64-v3") != 0);
+    EXPECT_EQ(contains(supported, "avx2_zen"), __builtin_cpu_supports("x86-64-v3") != 0);
     EXPECT_EQ(contains(supported, "sse4"), __builtin_cpu_supports("x86-64-v2") != 0);
     EXPECT_TRUE(contains(supported, "baseline"));
     EXPECT_EQ(contains(supported, "native"), contains(builtKernelNames(), "native"));
@@ -68,7 +69,7 @@ TEST_F(KernelDispatch, PicksTheWidestSupportedKernel) {
     __builtin_cpu_init();
     std::string widest = "baseline";
     if (__builtin_cpu_supports("x86-64-v2")) widest = "sse4";
-    if (__builtin_cpu_supports("x86-64-v3")) widest = "avx2";
+    if (__builtin_cpu_supports("x86-64-v3")) widest = __builtin_cpu_is("amd") ? "avx2_zen" : "avx2";
     if (__builtin_cpu_supports("x86-64-v4")) widest = "avx512";
     if (contains(builtKernelNames(), "native")) widest = "native";  // the build's own flags
     EXPECT_EQ(widestSupportedKernelName(), widest);
@@ -83,6 +84,9 @@ TEST_F(KernelDispatch, DescriptionsNameTheInstructionSetAndWidth) {
     useKernel("avx2");
     EXPECT_EQ(activeKernelName(), "avx2");
     EXPECT_EQ(activeKernelDescription(), "avx2 (-march=x86-64-v3, 8 floats per packet)");
+    useKernel("avx2_zen");
+    EXPECT_EQ(activeKernelDescription(),
+              "avx2_zen (-march=x86-64-v3 -mtune=znver3, 8 floats per packet)");
 }
 
 TEST_F(KernelDispatch, RefusesAnUnknownKernelAndKeepsTheActiveOne) {
@@ -90,7 +94,7 @@ TEST_F(KernelDispatch, RefusesAnUnknownKernelAndKeepsTheActiveOne) {
     const std::string message = refusal([] { useKernel("sse9"); });
     std::printf("refused: %s\n", message.c_str());
     EXPECT_NE(message.find("\"sse9\""), std::string::npos) << message;
-    EXPECT_NE(message.find("avx512, avx2, sse4, baseline"), std::string::npos) << message;
+    EXPECT_NE(message.find("avx512, avx2_zen, avx2, sse4, baseline"), std::string::npos) << message;
     EXPECT_EQ(activeKernelName(), "baseline");
 }
 

@@ -40,9 +40,8 @@ constexpr const TracerKernel* kBuiltKernels[] = {
 #ifdef WHITTED_KERNEL_NATIVE
     &isa_build::kTracerKernel,
 #endif
-    &isa_avx512::kTracerKernel,   &isa_avx2_zen::kTracerKernel,
-    &isa_avx2::kTracerKernel,     &isa_sse4::kTracerKernel,
-    &isa_baseline::kTracerKernel,  // one a line
+    &isa_avx512::kTracerKernel, &isa_avx2_zen::kTracerKernel, &isa_avx2::kTracerKernel,
+    &isa_sse4::kTracerKernel,   &isa_baseline::kTracerKernel,
 };
 
 // This file is built with the project's flags, never a kernel's, so it can ask

@@ -16,6 +16,7 @@
 
 #include "atomic_file.h"
 #include "image_io.h"
+#include "kernel_dispatch.h"
 #include "renderer.h"
 #include "scene_io.h"
 
@@ -99,6 +100,7 @@ std::string statsJson(const RenderSettings& r, const RenderResult& result) {
     j["max_depth"] = r.maxDepth;
     j["precision"] = std::string(precisionName(r.precision));
     j["threads"] = result.threads;
+    j["kernel"] = activeKernelName();
     j["seconds"] = result.seconds;
     j["rays"] = {{"camera", rays.camera},
                  {"shadow", rays.shadow},
@@ -133,6 +135,12 @@ int run(const Options& o) {
     }
     applyOverrides(o, scene.render);
 
+    try {
+        activeKernel();  // a WHITTED_KERNEL this CPU cannot run is refused before rendering
+    } catch (const std::runtime_error& e) {
+        std::cerr << "whitted-render: " << e.what() << "\n";
+        return kExitBadInput;
+    }
     ProgressBar bar(!o.quiet);
     RenderOptions options;
     options.threads = o.threads;
@@ -159,11 +167,12 @@ int run(const Options& o) {
         }
     }
     if (!o.quiet) {
-        std::fprintf(stderr, "wrote %s: %dx%d, %d spp, depth %d, %s, %.3f s, %.1f Mrays/s\n",
-                     o.output.c_str(), scene.render.width, scene.render.height,
-                     scene.render.samplesPerPixel, scene.render.maxDepth,
-                     std::string(precisionName(scene.render.precision)).c_str(), result.seconds,
-                     result.seconds > 0 ? result.rays.total() / result.seconds / 1e6 : 0.0);
+        std::fprintf(
+            stderr, "wrote %s: %dx%d, %d spp, depth %d, %s, %.3f s, %.1f Mrays/s, %s kernel\n",
+            o.output.c_str(), scene.render.width, scene.render.height, scene.render.samplesPerPixel,
+            scene.render.maxDepth, std::string(precisionName(scene.render.precision)).c_str(),
+            result.seconds, result.seconds > 0 ? result.rays.total() / result.seconds / 1e6 : 0.0,
+            activeKernelName().c_str());
     }
     return kExitOk;
 }

@@ -5,8 +5,15 @@
 // Time is wall time per image; Mrays/s counts every ray traced (camera, shadow,
 // reflection, refraction) per second of wall time. Compare rows of one run: the
 // machines are shared, so absolute times drift between runs.
+//
+// BM_SeedFloat and BM_SeedDouble run the kernel the dispatcher picks (or the one
+// WHITTED_KERNEL names); BM_Kernel/<name>/<precision> runs each kernel this CPU
+// supports, on one thread, so that the kernels compare within one run.
 #include <benchmark/benchmark.h>
 
+#include <string>
+
+#include "kernel_dispatch.h"
 #include "plain_tracer.h"
 #include "renderer.h"
 #include "scene_io.h"
@@ -75,6 +82,34 @@ WHITTED_BENCH(BM_PlainScalarFloat);
 WHITTED_BENCH(BM_SeedDouble);
 WHITTED_BENCH(BM_PlainScalarDouble);
 
+// The seed on one thread in the named kernel; the automatic choice afterwards.
+void oneKernel(benchmark::State& state, const std::string& kernel, Precision precision) {
+    whitted::useKernel(kernel);
+    ours(state, precision);
+    whitted::useKernel("");
+}
+
+void registerKernelBenchmarks() {
+    for (const std::string& kernel : whitted::supportedKernelNames()) {
+        for (const Precision precision : {Precision::Float, Precision::Double}) {
+            const std::string name =
+                "BM_Kernel/" + kernel + "/" + std::string(whitted::precisionName(precision));
+            benchmark::RegisterBenchmark(name.c_str(), oneKernel, kernel, precision)
+                ->Arg(1)
+                ->Unit(benchmark::kMillisecond)
+                ->UseRealTime();
+        }
+    }
+}
+
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    registerKernelBenchmarks();
+    benchmark::AddCustomContext("kernel", whitted::activeKernelDescription());
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}

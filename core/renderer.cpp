@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "kernel_dispatch.h"
 #include "scene_io.h"
 
 namespace whitted {
@@ -211,6 +212,8 @@ RenderResult render(const Scene& scene, const RenderOptions& options, const Tile
                     const StopPredicate& shouldStop) {
     if (auto problem = validateScene(scene))
         throw std::invalid_argument(problem->jsonPath + ": " + problem->reason);
+    // Here, not in a worker: a WHITTED_KERNEL this CPU cannot run throws to the caller.
+    activeKernel();
     const auto start = std::chrono::steady_clock::now();
     RenderResult result = scene.render.precision == Precision::Double
                               ? TileRenderer<double>(scene, options, onTile, shouldStop).run()

@@ -66,7 +66,8 @@ struct RenderResult {
 int resolveThreadCount(int requested);
 
 // Renders the scene with its render settings. Throws std::invalid_argument for a
-// scene that validateScene() refuses.
+// scene that validateScene() refuses, std::runtime_error when WHITTED_KERNEL
+// names a tracer kernel that is unknown or that this CPU cannot run.
 RenderResult render(const Scene& scene, const RenderOptions& options = {},
                     const TileCallback& onTile = {}, const StopPredicate& shouldStop = {});
 

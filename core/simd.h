@@ -2,24 +2,32 @@
 // lane operations they lack (masks as bits, square root, floor).
 //
 // The tracer's hot paths run 16 floats or 8 doubles at once with AVX-512, 8 or 4
-// with AVX, and pairs of SSE instructions elsewhere. Each lane performs IEEE
+// with AVX, and 4 or 2 with SSE alone. Each lane performs IEEE
 // operations of its own, so a lane's result never depends on its neighbours.
 #pragma once
 
 #include <cmath>
-#if defined(__AVX__)
+#include "isa_namespace.h"
+#if defined(__SSE2__)
 #include <immintrin.h>
 #endif
+#include <type_traits>
 
 namespace whitted {
 
-// The widest vectors the target has: 64 bytes with AVX-512, else 32 (AVX, or
-// pairs of SSE instructions). The attribute cannot take a template parameter,
-// hence the two specialisations.
+inline namespace WHITTED_ISA_NAMESPACE {
+
+// The widest vectors the target has: 64 bytes with AVX-512, 32 with AVX, 16
+// with SSE alone (wider ones would be split into SSE halves, passed through
+// memory between functions). Lanes are independent, so the width changes
+// speed, never results. The attribute cannot take a template parameter, hence
+// the two specialisations.
 #if defined(__AVX512F__)
 inline constexpr int kSimdBytes = 64;
-#else
+#elif defined(__AVX__)
 inline constexpr int kSimdBytes = 32;
+#else
+inline constexpr int kSimdBytes = 16;
 #endif
 template <typename T>
 struct Simd;
@@ -47,6 +55,11 @@ inline unsigned laneBits(const M& m) {
         return static_cast<unsigned>(_mm256_movemask_ps(reinterpret_cast<__m256>(m)));
     else
         return static_cast<unsigned>(_mm256_movemask_pd(reinterpret_cast<__m256d>(m)));
+#elif defined(__SSE2__)
+    if constexpr (sizeof(m[0]) == 4)
+        return static_cast<unsigned>(_mm_movemask_ps(reinterpret_cast<__m128>(m)));
+    else
+        return static_cast<unsigned>(_mm_movemask_pd(reinterpret_cast<__m128d>(m)));
 #else
     unsigned bits = 0;
     for (unsigned l = 0; l < sizeof(M) / sizeof(m[0]); ++l) bits |= (m[l] ? 1u : 0u) << l;
@@ -66,11 +79,31 @@ inline V laneSqrt(const V& v) {
         return reinterpret_cast<V>(_mm256_sqrt_ps(reinterpret_cast<__m256>(v)));
     else
         return reinterpret_cast<V>(_mm256_sqrt_pd(reinterpret_cast<__m256d>(v)));
+#elif defined(__SSE2__)
+    if constexpr (sizeof(v[0]) == 4)
+        return reinterpret_cast<V>(_mm_sqrt_ps(reinterpret_cast<__m128>(v)));
+    else
+        return reinterpret_cast<V>(_mm_sqrt_pd(reinterpret_cast<__m128d>(v)));
 #else
-    V r;
+    V r{};
     for (unsigned l = 0; l < sizeof(V) / sizeof(v[0]); ++l) r[l] = std::sqrt(v[l]);
     return r;
 #endif
+}
+
+// floor() with SSE2 alone, which has no rounding instruction: adding and
+// subtracting 2^23 (2^52 for double) rounds |v| to a whole number, exactly,
+// then one step down fixes what rounded up. Larger magnitudes and NaN are
+// their own floor, and so is a zero, whose sign the snapping would lose.
+template <typename V>
+inline V floorBySnapping(const V& v) {
+    using T = std::remove_cvref_t<decltype(v[0])>;
+    constexpr T kWhole = sizeof(T) == 4 ? T(8388608.0) : T(4503599627370496.0);
+    const V magnitude = v < T(0) ? -v : v;
+    V r = (magnitude + kWhole) - kWhole;
+    r = v < T(0) ? -r : r;
+    r = r > v ? r - T(1) : r;
+    return (magnitude < kWhole) & (r != v) ? r : v;
 }
 
 template <typename V>
@@ -87,11 +120,19 @@ inline V laneFloor(const V& v) {
         return reinterpret_cast<V>(_mm256_floor_ps(reinterpret_cast<__m256>(v)));
     else
         return reinterpret_cast<V>(_mm256_floor_pd(reinterpret_cast<__m256d>(v)));
+#elif defined(__SSE4_1__)
+    if constexpr (sizeof(v[0]) == 4)
+        return reinterpret_cast<V>(_mm_floor_ps(reinterpret_cast<__m128>(v)));
+    else
+        return reinterpret_cast<V>(_mm_floor_pd(reinterpret_cast<__m128d>(v)));
+#elif defined(__SSE2__)
+    return floorBySnapping(v);
 #else
-    V r;
+    V r{};
     for (unsigned l = 0; l < sizeof(V) / sizeof(v[0]); ++l) r[l] = std::floor(v[l]);
     return r;
 #endif
 }
 
+}  // namespace WHITTED_ISA_NAMESPACE
 }  // namespace whitted

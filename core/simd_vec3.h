@@ -6,12 +6,15 @@
 
 #include <glm/vec3.hpp>
 
+#include "isa_namespace.h"
 #include "simd.h"
 
 namespace whitted {
 
 template <typename T>
 using Vec = glm::vec<3, T, glm::defaultp>;
+
+inline namespace WHITTED_ISA_NAMESPACE {
 
 template <typename T>
 struct Vec3x {
@@ -66,4 +69,5 @@ inline Vec3x<T> select(const M& mask, const Vec3x<T>& a, const Vec3x<T>& b) {
     return {mask ? a.x : b.x, mask ? a.y : b.y, mask ? a.z : b.z};
 }
 
+}  // namespace WHITTED_ISA_NAMESPACE
 }  // namespace whitted

@@ -17,6 +17,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "isa_namespace.h"
 namespace whitted {
 
 template <typename T>
@@ -27,6 +28,8 @@ struct SphereRoots {
     T tNear;  // tNear <= tFar; either may be negative (behind the origin)
     T tFar;
 };
+
+inline namespace WHITTED_ISA_NAMESPACE {
 
 namespace exact {
 
@@ -134,4 +137,5 @@ inline void splitRadiusSquared(T r, T& rrHi, T& rrLo) {
     exact::twoSquare(r, rrHi, rrLo);
 }
 
+}  // namespace WHITTED_ISA_NAMESPACE
 }  // namespace whitted

@@ -1,5 +1,8 @@
 // The Whitted tracer (SPEC §3), one template for float and double.
 //
+// The tracing functions below run in the kernel built for the widest
+// instruction set the CPU has (kernel_dispatch.h, tracer_kernel.cpp).
+//
 // A render first compiles the Scene into a PreparedScene<T>: numbers in T,
 // material names resolved to indices, spheres laid out for the hit loop, and
 // flags saying which kinds of secondary rays the scene can use at all.
@@ -15,9 +18,9 @@
 #include <vector>
 
 #include "camera.h"
-#include "ray_packet.h"
 #include "scene.h"
 #include "sphere_intersect.h"
+#include "sphere_set.h"
 
 namespace whitted {
 

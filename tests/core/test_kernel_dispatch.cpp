@@ -1,0 +1,217 @@
+// Tests for core/kernel_dispatch.*: the tracer's per-instruction-set kernels
+// render the same images bit for bit, the dispatcher picks the widest one the
+// CPU runs, and a kernel that is unknown or that the CPU lacks is refused with
+// a message instead of crashing.
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <sys/wait.h>
+
+#include <gtest/gtest.h>
+
+#include "kernel_dispatch.h"
+#include "renderer.h"
+#include "scene_io.h"
+#include "test_support.h"
+
+namespace whitted {
+namespace {
+
+bool contains(const std::vector<std::string>& names, const std::string& name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+// The message of what `action` throws, or "" when it throws nothing.
+template <typename Action>
+std::string refusal(Action action) {
+    try {
+        action();
+    } catch (const std::runtime_error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+// Every test starts and ends with the automatic choice and no WHITTED_KERNEL.
+class KernelDispatch : public ::testing::Test {
+  protected:
+    void SetUp() override { resetChoice(); }
+    void TearDown() override { resetChoice(); }
+    static void resetChoice() {
+        unsetenv("WHITTED_KERNEL");
+        useKernel("");
+    }
+};
+
+TEST_F(KernelDispatch, BuildsEveryInstructionSetWidestFirst) {
+    std::vector<std::string> expected = {"avx512", "avx2_zen", "avx2", "sse4", "baseline"};
+    if (contains(builtKernelNames(), "native")) expected.insert(expected.begin(), "native");
+    EXPECT_EQ(builtKernelNames(), expected);
+}
+
+TEST_F(KernelDispatch, SupportedKernelsAreWhatTheCpuReports) {
+    __builtin_cpu_init();
+    const std::vector<std::string> supported = supportedKernelNames();
+    EXPECT_EQ(contains(supported, "avx512"), __builtin_cpu_supports("x86-64-v4") != 0);
+    EXPECT_EQ(contains(supported, "avx2"), __builtin_cpu_supports("x86-64-v3") != 0);
+    EXPECT_EQ(contains(supported, "avx2_zen"), __builtin_cpu_supports("x86-64-v3") != 0);
+    EXPECT_EQ(contains(supported, "sse4"), __builtin_cpu_supports("x86-64-v2") != 0);
+    EXPECT_TRUE(contains(supported, "baseline"));
+    EXPECT_EQ(contains(supported, "native"), contains(builtKernelNames(), "native"));
+}
+
+TEST_F(KernelDispatch, PicksTheWidestSupportedKernel) {
+    __builtin_cpu_init();
+    std::string widest = "baseline";
+    if (__builtin_cpu_supports("x86-64-v2")) widest = "sse4";
+    if (__builtin_cpu_supports("x86-64-v3")) widest = __builtin_cpu_is("amd") ? "avx2_zen" : "avx2";
+    if (__builtin_cpu_supports("x86-64-v4")) widest = "avx512";
+    if (contains(builtKernelNames(), "native")) widest = "native";  // the build's own flags
+    EXPECT_EQ(widestSupportedKernelName(), widest);
+    EXPECT_EQ(activeKernelName(), widest);
+}
+
+TEST_F(KernelDispatch, DescriptionsNameTheInstructionSetAndWidth) {
+    useKernel("baseline");
+    EXPECT_EQ(activeKernelName(), "baseline");
+    EXPECT_EQ(activeKernelDescription(), "baseline (-march=x86-64, 4 floats per packet)");
+    if (!contains(supportedKernelNames(), "avx2")) GTEST_SKIP() << "this CPU has no AVX2";
+    useKernel("avx2");
+    EXPECT_EQ(activeKernelName(), "avx2");
+    EXPECT_EQ(activeKernelDescription(), "avx2 (-march=x86-64-v3, 8 floats per packet)");
+    useKernel("avx2_zen");
+    EXPECT_EQ(activeKernelDescription(),
+              "avx2_zen (-march=x86-64-v3 -mtune=znver3, 8 floats per packet)");
+}
+
+TEST_F(KernelDispatch, RefusesAnUnknownKernelAndKeepsTheActiveOne) {
+    useKernel("baseline");
+    const std::string message = refusal([] { useKernel("sse9"); });
+    std::printf("refused: %s\n", message.c_str());
+    EXPECT_NE(message.find("\"sse9\""), std::string::npos) << message;
+    EXPECT_NE(message.find("avx512, avx2_zen, avx2, sse4, baseline"), std::string::npos) << message;
+    EXPECT_EQ(activeKernelName(), "baseline");
+}
+
+TEST_F(KernelDispatch, RefusesAKernelTheCpuLacks) {
+    std::string missing;
+    for (const std::string& name : builtKernelNames())
+        if (!contains(supportedKernelNames(), name)) missing = name;
+    if (missing.empty()) GTEST_SKIP() << "this CPU runs every kernel built";
+    const std::string message = refusal([&] { useKernel(missing); });
+    std::printf("refused: %s\n", message.c_str());
+    EXPECT_NE(message.find("\"" + missing + "\" needs x86-64-v"), std::string::npos) << message;
+    EXPECT_NE(message.find("this CPU lacks"), std::string::npos) << message;
+    EXPECT_NE(activeKernelName(), missing);
+}
+
+TEST_F(KernelDispatch, EnvironmentVariableForcesAKernel) {
+    setenv("WHITTED_KERNEL", "baseline", 1);
+    useKernel("");
+    EXPECT_EQ(activeKernelName(), "baseline");
+    setenv("WHITTED_KERNEL", "sse9", 1);
+    const std::string message = refusal([] { useKernel(""); });
+    std::printf("refused: %s\n", message.c_str());
+    EXPECT_EQ(message.rfind("WHITTED_KERNEL: no tracer kernel is named \"sse9\"", 0), 0u)
+        << message;
+}
+
+// whitted-render run with WHITTED_KERNEL=kernel: its exit status (-1 for a
+// signal, SIGILL included) and everything it printed.
+struct ProgramRun {
+    int exitCode = -1;
+    std::string output;
+};
+
+ProgramRun renderWithKernel(const std::string& kernel, const std::filesystem::path& image) {
+    std::string cmd = "WHITTED_KERNEL=" + kernel + " '" WHITTED_RENDER_EXE "' '";
+    cmd.append(WHITTED_SCENES_DIR "/seed.json' --quiet --width 16 --height 12 -o '");
+    cmd.append(image.string()).append("' 2>&1");
+    ProgramRun run;
+    FILE* pipe = popen(cmd.c_str(), "r");
+    if (!pipe) return {-1, "cannot start: " + cmd};
+    char buffer[256];
+    while (std::fgets(buffer, sizeof buffer, pipe)) run.output += buffer;
+    const int status = pclose(pipe);
+    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return run;
+}
+
+TEST_F(KernelDispatch, WhittedRenderRefusesKernelsItCannotRun) {
+    test::TempDir dir;
+    std::vector<std::string> refused = {"sse9"};
+    for (const std::string& name : builtKernelNames())
+        if (!contains(supportedKernelNames(), name)) refused.push_back(name);
+    for (const std::string& kernel : refused) {
+        const ProgramRun run = renderWithKernel(kernel, dir.path() / "out.png");
+        std::printf("WHITTED_KERNEL=%s: exit %d, %s", kernel.c_str(), run.exitCode,
+                    run.output.c_str());
+        EXPECT_EQ(run.exitCode, 2) << run.output;
+        EXPECT_NE(run.output.find("WHITTED_KERNEL: "), std::string::npos) << run.output;
+        EXPECT_NE(run.output.find("\"" + kernel + "\""), std::string::npos) << run.output;
+        EXPECT_FALSE(std::filesystem::exists(dir.path() / "out.png"));
+    }
+    const ProgramRun baseline = renderWithKernel("baseline", dir.path() / "out.png");
+    EXPECT_EQ(baseline.exitCode, 0) << baseline.output;
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / "out.png"));
+}
+
+// Renders of the repository's scenes, one per kernel this CPU runs.
+struct SceneCase {
+    const char* file;
+    Precision precision;
+};
+
+class KernelsRenderAlike : public KernelDispatch,
+                           public ::testing::WithParamInterface<SceneCase> {};
+
+RenderResult renderWith(const std::string& kernel, const Scene& scene) {
+    useKernel(kernel);
+    RenderOptions options;
+    options.progressive = false;
+    return render(scene, options);
+}
+
+// The first pixel where two images differ, as "(x, y)", or "" when they are the same.
+std::string firstDifference(const Image& a, const Image& b) {
+    if (a.width != b.width || a.height != b.height) return "size";
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x)
+            for (int c = 0; c < 3; ++c)
+                if (a.pixel(x, y)[c] != b.pixel(x, y)[c])
+                    return "(" + std::to_string(x) + ", " + std::to_string(y) + ")";
+    return "";
+}
+
+TEST_P(KernelsRenderAlike, BitForBit) {
+    const std::vector<std::string> kernels = supportedKernelNames();
+    if (kernels.size() < 2) GTEST_SKIP() << "this CPU runs one kernel: nothing to compare";
+    Scene scene = loadScene(std::string(WHITTED_SCENES_DIR "/") + GetParam().file);
+    scene.render.precision = GetParam().precision;
+    const RenderResult reference = renderWith(kernels.back(), scene);
+    for (std::size_t k = 0; k + 1 < kernels.size(); ++k) {
+        const RenderResult other = renderWith(kernels[k], scene);
+        EXPECT_EQ(firstDifference(other.image, reference.image), "")
+            << kernels[k] << " against " << kernels.back();
+        EXPECT_EQ(other.rays.total(), reference.rays.total()) << kernels[k];
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, KernelsRenderAlike,
+                         ::testing::Values(SceneCase{"seed.json", Precision::Float},
+                                           SceneCase{"seed.json", Precision::Double},
+                                           SceneCase{"glass.json", Precision::Float},
+                                           SceneCase{"glass.json", Precision::Double}),
+                         [](const auto& info) {
+                             std::string name = info.param.file;
+                             name = name.substr(0, name.find('.'));
+                             return name + "_" + std::string(precisionName(info.param.precision));
+                         });
+
+}  // namespace
+}  // namespace whitted

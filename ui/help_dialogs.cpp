@@ -19,6 +19,7 @@
 #include <QVBoxLayout>
 
 #include "image_io.h"
+#include "kernel_dispatch.h"
 
 #ifndef WHITTED_VERSION
 #define WHITTED_VERSION "unknown"
@@ -114,9 +115,10 @@ QDialog* showAbout(QWidget* window) {
     box->setInformativeText(
         QObject::tr("A scene editor for a classic Whitted ray tracer: spheres, lights and "
                     "materials, shadows, reflection and refraction, in float or double.\n\n"
-                    "Qt %1 (built with %2)\nOpenImageIO %3")
+                    "Qt %1 (built with %2)\nOpenImageIO %3\nTracing kernel: %4")
             .arg(QString::fromLatin1(qVersion()), QStringLiteral(QT_VERSION_STR),
-                 QString::fromStdString(openImageIOVersion())));
+                 QString::fromStdString(openImageIOVersion()),
+                 QString::fromStdString(activeKernelDescription())));
     box->open();
     return box;
 }

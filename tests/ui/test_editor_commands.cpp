@@ -31,6 +31,7 @@
 #include "gui_test_main.h"
 #include "help_dialogs.h"
 #include "image_io.h"
+#include "kernel_dispatch.h"
 #include "main_window.h"
 #include "render_view.h"
 #include "scene_io.h"
@@ -310,6 +311,7 @@ TEST_F(EditorCommandsTest, About_NamesVersionQtAndOpenImageIO) {
     EXPECT_TRUE(text.contains(QStringLiteral("Qt ") + qVersion())) << text.toStdString();
     EXPECT_TRUE(text.contains(QString::fromStdString("OpenImageIO " + openImageIOVersion())));
     EXPECT_NE(openImageIOVersion().substr(0, 2), "0.");
+    EXPECT_TRUE(text.contains(QString::fromStdString(activeKernelDescription())));
     box->close();
 }
 

@@ -4,6 +4,7 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGuiApplication>
 #include <QMenu>
 #include <QMessageBox>
 #include <QMimeData>
@@ -234,6 +235,10 @@ bool MainWindow::saveAs() {
     // A name typed without ".json" gets it, and the overwrite question is
     // asked of the name that will be written.
     dialog.setDefaultSuffix(QStringLiteral("json"));
+    // Offscreen (the GUI tests) the platform's native dialog never shows and
+    // never returns; Qt's own dialog is the one a test can fill in.
+    dialog.setOption(QFileDialog::DontUseNativeDialog,
+                     QGuiApplication::platformName() == QLatin1String("offscreen"));
     if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty()) return false;
     return saveTo(dialog.selectedFiles().constFirst());
 }

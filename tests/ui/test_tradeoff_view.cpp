@@ -516,11 +516,11 @@ TEST_F(TradeoffViewTest, Tables_ColumnsAsWideAsTheirTitlesAndCellsAndAllInView) 
     auto* tabs = qobject_cast<QTabWidget*>(pinned->parentWidget()->parentWidget());
     ASSERT_NE(tabs, nullptr);
     const QWidget* plot = view->plot();
-    for (int windowWidth : {1400, 1900}) {
+    for (int windowWidth : {1400, 2300}) {
         SCOPED_TRACE(windowWidth);
         window->resize(windowWidth, 900);
         QTest::qWait(50);  // the dock and the split follow
-        const bool beside = windowWidth == 1900;
+        const bool beside = windowWidth == 2300;
         EXPECT_EQ(tabs->tabText(0), beside ? QStringLiteral("Pinned") : QStringLiteral("Plot"));
         for (QTableWidget* table : {pinned, measureTable}) {
             tabs->setCurrentWidget(table);  // as a click on its tab does

@@ -235,8 +235,8 @@ bool MainWindow::saveAs() {
     // A name typed without ".json" gets it, and the overwrite question is
     // asked of the name that will be written.
     dialog.setDefaultSuffix(QStringLiteral("json"));
-    // Offscreen (the GUI tests) the platform's native dialog never shows and
-    // never returns; Qt's own dialog is the one a test can fill in.
+    // Offscreen (the GUI tests) the platform's dialog was seen to hang in exec()
+    // on this machine; Qt's own dialog is the one a test can fill in.
     dialog.setOption(QFileDialog::DontUseNativeDialog,
                      QGuiApplication::platformName() == QLatin1String("offscreen"));
     if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty()) return false;

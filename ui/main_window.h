@@ -1,6 +1,6 @@
 // The editor's main window: the render view in the middle, the scene lists on
-// the left, properties, camera and render settings on the right, the Float vs
-// Double and Trade-off docks, the File, Edit, Render, View and Help menus and
+// the left, properties, camera and render settings on the right, the
+// Precision Check and Trade-off docks, the File, Edit, Render, View and Help menus and
 // the tool bar (main_window_menus.cpp). It
 // owns the document and the render worker and wires them together: every
 // scene change restarts the render, every frame that is not stale reaches the

@@ -4,6 +4,7 @@
 #include <QRegularExpression>
 
 #include "scene_io.h"
+#include "scene_list_model.h"
 
 namespace whitted::ui {
 
@@ -133,13 +134,15 @@ QString listText(const SceneProblem& problem, const Scene& scene) {
     const int index = match.captured(2).toInt();
     if (list == QLatin1String("spheres")) {
         if (field == QLatin1String("material")) return sphereMaterialText(scene, index);
-        return itemText(scene.spheres, index, QObject::tr("sphere"), kSphereFields, field, problem);
+        return itemText(scene.spheres, index, kindNoun(ItemKind::Sphere), kSphereFields, field,
+                        problem);
     }
     if (list == QLatin1String("lights"))
-        return itemText(scene.lights, index, QObject::tr("light"), kLightFields, field, problem);
-    if (list == QLatin1String("materials"))
-        return itemText(scene.materials, index, QObject::tr("material"), kMaterialFields, field,
+        return itemText(scene.lights, index, kindNoun(ItemKind::Light), kLightFields, field,
                         problem);
+    if (list == QLatin1String("materials"))
+        return itemText(scene.materials, index, kindNoun(ItemKind::Material), kMaterialFields,
+                        field, problem);
     return {};
 }
 

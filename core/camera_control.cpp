@@ -30,18 +30,25 @@ constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 
-Camera orbit(const Camera& c, double yaw, double pitch) {
+Camera orbitAbout(const Camera& c, const Vec3& pivot, double yaw, double pitch) {
     const Frame f = frameOf(c);
     const Vec3 axis = glm::normalize(c.up);
-    // Angle between the view direction (from look_at back to the camera) and up.
-    const Vec3 back = -f.forward;
-    const double polar = std::acos(std::clamp(glm::dot(back, axis), -1.0, 1.0));
+    // Angle between the view direction and up; pitching raises the eye, so it grows.
+    const double polar = std::acos(std::clamp(glm::dot(f.forward, axis), -1.0, 1.0));
     const double limit = kPi / 180.0;
-    const double newPolar = std::clamp(polar - pitch, limit, kPi - limit);
-    Vec3 dir = glm::rotate(back, polar - newPolar, f.right);
-    dir = glm::rotate(dir, yaw, axis);
+    const double turn = std::clamp(polar + pitch, limit, kPi - limit) - polar;
+    auto turned = [&](const Vec3& p) {
+        return pivot + glm::rotate(glm::rotate(p - pivot, turn, f.right), yaw, axis);
+    };
     Camera out = c;
-    out.position = c.lookAt + glm::normalize(dir) * f.distance;
+    out.position = turned(c.position);
+    out.lookAt = turned(c.lookAt);
+    return out;
+}
+
+Camera orbit(const Camera& c, double yaw, double pitch) {
+    Camera out = orbitAbout(c, c.lookAt, yaw, pitch);
+    out.lookAt = c.lookAt;  // exactly, not rounded by a rotation of zero
     return out;
 }
 
@@ -59,6 +66,15 @@ Camera dolly(const Camera& c, double factor) {
     const double distance = std::max(f.distance * factor, f.distance * 1e-6);
     Camera out = c;
     out.position = c.lookAt - f.forward * distance;
+    return out;
+}
+
+Camera dollyToward(const Camera& c, const Vec3& target, double factor) {
+    const Vec3 towards = target - c.position;
+    const Vec3 delta = towards * (1.0 - std::max(factor, 1e-6));
+    Camera out = c;
+    out.position += delta;
+    out.lookAt += delta;
     return out;
 }
 
@@ -88,14 +104,21 @@ Camera frameSphere(const Camera& c, const Vec3& centre, double radius) {
     return out;
 }
 
-std::optional<int> pickSphere(const Scene& scene, double x, double y) {
+std::optional<SurfacePick> pickSurface(const Scene& scene, double x, double y) {
     const PreparedScene<double> s = prepareScene<double>(scene);
     const int i = static_cast<int>(std::floor(x)), j = static_cast<int>(std::floor(y));
     const Ray<double> ray{s.camera.origin, cameraDirection(s.camera, i, j, x - i, y - j), -1, false,
                           true};
     const auto hit = closestHit(s, ray);
     if (!hit) return std::nullopt;
-    return hit->sphere;
+    // Prepared positions are relative to frameOrigin: back to scene coordinates.
+    return SurfacePick{hit->sphere, s.frameOrigin + ray.origin + ray.dir * hit->t};
+}
+
+std::optional<int> pickSphere(const Scene& scene, double x, double y) {
+    const auto pick = pickSurface(scene, x, y);
+    if (!pick) return std::nullopt;
+    return pick->sphere;
 }
 
 }  // namespace whitted

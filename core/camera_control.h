@@ -10,9 +10,14 @@
 
 namespace whitted {
 
-// Turns the camera around look_at: `yaw` about the camera's up axis, `pitch`
-// about its right axis, both in radians; the distance stays. Pitch stops 1 degree
-// short of the up axis rather than flipping over it.
+// Turns the camera around `pivot`: `yaw` about the camera's up axis, `pitch`
+// about its right axis, both in radians. Position and look_at turn together, so
+// the pivot stays where it is in the picture and the camera keeps its distance
+// to it. A positive pitch raises the eye (it looks down more); the view stops 1
+// degree short of straight up or down rather than flipping over.
+Camera orbitAbout(const Camera& c, const Vec3& pivot, double yaw, double pitch);
+
+// orbitAbout() look_at.
 Camera orbit(const Camera& c, double yaw, double pitch);
 
 // Slides position and look_at together across the view: `right` and `up` are
@@ -22,6 +27,12 @@ Camera pan(const Camera& c, double right, double up);
 // Moves towards look_at (factor < 1) or away (factor > 1); the distance never
 // falls below 1e-6 of what it was.
 Camera dolly(const Camera& c, double factor);
+
+// Moves position and look_at together towards `target` (factor < 1) or away
+// from it, so the distance to it becomes `factor` times what it was, never less
+// than 1e-6 of it: the camera never reaches or passes the target, and the target
+// stays where it is in the picture (the wheel zooms towards the cursor).
+Camera dollyToward(const Camera& c, const Vec3& target, double factor);
 
 // Walks position and look_at together: `right`, `up`, `forward` as fractions of
 // the distance to look_at (W/A/S/D/Q/E).
@@ -34,9 +45,18 @@ Camera zoom(const Camera& c, double factor);
 // about two thirds of the view's height.
 Camera frameSphere(const Camera& c, const Vec3& centre, double radius);
 
-// The sphere seen through image point (x, y), in pixels of the scene's render
+// What is seen through one image point: the sphere and the point on its surface.
+struct SurfacePick {
+    int sphere;
+    Vec3 point;
+};
+
+// The surface seen through image point (x, y), in pixels of the scene's render
 // size (x right, y down, continuous: the centre of pixel (i, j) is (i+0.5, j+0.5)),
 // or nothing. Uses the tracer's own intersection in double.
+std::optional<SurfacePick> pickSurface(const Scene& scene, double x, double y);
+
+// pickSurface()'s sphere.
 std::optional<int> pickSphere(const Scene& scene, double x, double y);
 
 }  // namespace whitted

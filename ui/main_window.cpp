@@ -72,8 +72,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(&doc_, &SceneDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(&doc_, &SceneDocument::filePathChanged, this, &MainWindow::updateTitle);
     connect(&worker_, &RenderWorker::frameReady, this, &MainWindow::onFrame);
-    connect(view_, &RenderView::spherePicked, this, [this](int index) {
-        if (index >= 0) scenePanel_->select(ItemKind::Sphere, index);
+    connect(view_, &RenderView::picked, this, [this](ItemKind kind, int index) {
+        if (index >= 0) scenePanel_->select(kind, index);
     });
 
     QSettings settings;
@@ -137,7 +137,7 @@ void MainWindow::buildDocks() {
     connect(scenePanel_, &ScenePanel::selectionChanged, this,
             [this, tabs](ItemKind kind, int index) {
                 propertyPanel_->showItem(kind, index);
-                view_->setSelectedSphere(kind == ItemKind::Sphere ? index : -1);
+                view_->setSelection(kind, index);
                 if (index >= 0) tabs->setCurrentWidget(propertyPanel_);
             });
 }

@@ -1,5 +1,6 @@
 #include "scene_document.h"
 
+#include <QElapsedTimer>
 #include <QUndoCommand>
 
 #include "edit_messages.h"
@@ -28,6 +29,7 @@ class ListDelta {
                 after_.push_back(after[i]);
             }
     }
+    bool empty() const { return !whole_ && index_.empty(); }
     // Applies the change forwards (redo) or backwards (undo); true when it
     // added, removed, renamed or reordered items.
     bool apply(std::vector<T>& list, bool forward) const {
@@ -67,6 +69,8 @@ struct SceneDelta {
         h.ambient = s.ambient;
         return h;
     }
+    // Only the camera, render settings, background or ambient changed.
+    bool headOnly() const { return spheres.empty() && lights.empty() && materials.empty(); }
     Scene headBefore, headAfter;
     ListDelta<Sphere> spheres;
     ListDelta<Light> lights;
@@ -76,14 +80,40 @@ struct SceneDelta {
 class SceneEditCommand : public QUndoCommand {
   public:
     SceneEditCommand(SceneDocument* doc, const Scene& before, const Scene& after,
-                     const QString& text)
-        : QUndoCommand(text), doc_(doc), delta_(before, after) {}
-    void undo() override { doc_->applyDelta(delta_, false); }
-    void redo() override { doc_->applyDelta(delta_, true); }
+                     const QString& text, EditRun run)
+        : QUndoCommand(text), doc_(doc), delta_(before, after) {
+        joinable_ = run == EditRun::Join && delta_.headOnly();
+        sinceLast_.start();
+    }
+    // A move after an undo or redo starts a step of its own: they close the run.
+    void undo() override {
+        doc_->runOpen_ = false;
+        doc_->applyDelta(delta_, false);
+    }
+    void redo() override {
+        if (pushed_) doc_->runOpen_ = false;
+        pushed_ = true;  // the first redo is QUndoStack::push applying the edit
+        doc_->applyDelta(delta_, true);
+    }
+    // QUndoStack asks the step on top whether a new one of the same id joins it.
+    int id() const override { return joinable_ ? 1 : -1; }
+    bool mergeWith(const QUndoCommand* other) override {
+        const auto* next = static_cast<const SceneEditCommand*>(other);
+        if (!doc_->runOpen_ || !joinable_ || !next->joinable_ ||
+            sinceLast_.elapsed() >= SceneDocument::kRunGapMs)
+            return false;
+        delta_.headAfter = next->delta_.headAfter;
+        if (text() != next->text()) setText(QObject::tr("Move camera"));
+        sinceLast_.start();
+        return true;
+    }
 
   private:
     SceneDocument* doc_;
     SceneDelta delta_;
+    bool joinable_ = false;
+    bool pushed_ = false;
+    QElapsedTimer sinceLast_;
 };
 
 void SceneDocument::applyDelta(const SceneDelta& delta, bool forward) {
@@ -107,6 +137,7 @@ SceneDocument::SceneDocument(QObject* parent) : QObject(parent) {
 void SceneDocument::reset(const Scene& scene, const QString& filePath) {
     undo_.clear();
     gestureDepth_ = 0;
+    runOpen_ = false;
     scene_ = scene;
     filePath_ = filePath;
     emit filePathChanged(filePath_);
@@ -141,7 +172,7 @@ bool SceneDocument::save(const QString& path, QString* error) {
 }
 
 bool SceneDocument::edit(const QString& text, const std::function<void(Scene&)>& change,
-                         QString* error) {
+                         QString* error, EditRun run) {
     Scene after = scene_;
     change(after);
     if (after == scene_) return true;
@@ -149,7 +180,8 @@ bool SceneDocument::edit(const QString& text, const std::function<void(Scene&)>&
         if (error) *error = editProblemText(*problem, after);
         return false;
     }
-    undo_.push(new SceneEditCommand(this, scene_, after, text));
+    undo_.push(new SceneEditCommand(this, scene_, after, text, run));
+    runOpen_ = run == EditRun::Join;
     return true;
 }
 

@@ -19,6 +19,10 @@ namespace whitted::ui {
 // What a list or property panel shows.
 enum class ItemKind { Sphere, Light, Material };
 
+// Whether an edit may join the step before it: camera moves made in a run
+// (arrow keys held or tapped, wheel ticks) are one undo step, not dozens.
+enum class EditRun { Separate, Join };
+
 struct SceneDelta;
 
 class SceneDocument : public QObject {
@@ -45,9 +49,13 @@ class SceneDocument : public QObject {
     // Applies `change` to a copy of the scene as one undoable step named `text`.
     // A change that leaves the scene invalid (validateScene) is refused: returns
     // false with the reason in `error`, and nothing happens. A change that
-    // changes nothing records nothing.
+    // changes nothing records nothing. An EditRun::Join edit that changes
+    // neither spheres, lights nor materials joins the step before it when that
+    // was one too, made less than kRunGapMs earlier and not undone since
+    // (the step keeps its name, or becomes "Move camera" if the names differ).
     bool edit(const QString& text, const std::function<void(Scene&)>& change,
-              QString* error = nullptr);
+              QString* error = nullptr, EditRun run = EditRun::Separate);
+    static constexpr int kRunGapMs = 500;
 
     // Everything edited between these two calls is a single undo step (a slider drag).
     void beginGesture(const QString& text);
@@ -73,6 +81,7 @@ class SceneDocument : public QObject {
     QString filePath_;
     QUndoStack undo_;
     int gestureDepth_ = 0;
+    bool runOpen_ = false;  // the top step is a camera run that the next Join edit may extend
 };
 
 // The number of items of a kind in a scene, and the name of item `index`.

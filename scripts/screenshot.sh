@@ -126,9 +126,9 @@ if [[ -n "$tradeoff_view" ]]; then
   sleep 2
   keys ctrl+2
   sleep 2
-  click 1436 51 # the Render tab
+  click 1371 90 # the Render tab
   for spp in 16 32; do
-    click 1480 253 # the samples field
+    click 1440 320 # the samples field
     keys ctrl+a
     DISPLAY=$display xdotool type --delay 50 "$spp"
     keys Return

@@ -17,6 +17,9 @@ inline int runGuiTests(int argc, char** argv, const char* name, bool clearSettin
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
     QStandardPaths::setTestModeEnabled(true);
     QApplication app(argc, argv);
+    // A test that closes its last window (Ctrl+Q) must not end the application
+    // for the tests after it: a quitting application's dialogs never answered.
+    QApplication::setQuitOnLastWindowClosed(false);
     QApplication::setOrganizationName("WhittedTests");
     QApplication::setApplicationName(QString::fromLatin1(name));
     if (clearSettings) QSettings().clear();

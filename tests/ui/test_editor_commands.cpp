@@ -8,6 +8,7 @@
 #include <QComboBox>
 #include <QDialog>
 #include <QFileDialog>
+#include <QFileSystemModel>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
@@ -78,13 +79,28 @@ template <class D>
 void whenModalOpens(std::function<void(D*)> act) {
     auto* poll = new QTimer;
     auto tries = std::make_shared<int>(0);
-    QObject::connect(poll, &QTimer::timeout, [poll, act, tries] {
-        if (auto* d = qobject_cast<D*>(QApplication::activeModalWidget())) {
+    // Any shown modal D, not only the active modal widget: a dialog left from an
+    // earlier test in the same process may still count as that.
+    auto shownModal = []() -> D* {
+        for (QWidget* w : QApplication::topLevelWidgets())
+            if (auto* d = qobject_cast<D*>(w); d && d->isVisible() && d->isModal()) return d;
+        return nullptr;
+    };
+    QObject::connect(poll, &QTimer::timeout, [poll, act, tries, shownModal] {
+        if (auto* d = shownModal()) {
             poll->deleteLater();
             act(d);
-            QTimer::singleShot(10000, d, [d] {
-                ADD_FAILURE() << "the dialog was still open 10 s after the test answered it";
-                d->reject();
+            QTimer::singleShot(10000, d, [] {
+                // Whatever is still open, a question the dialog asked included.
+                for (QWidget* w : QApplication::topLevelWidgets()) {
+                    auto* open = qobject_cast<QDialog*>(w);
+                    if (!open || !open->isVisible()) continue;
+                    auto* box = qobject_cast<QMessageBox*>(open);
+                    ADD_FAILURE() << "still open 10 s after the test answered: "
+                                  << open->windowTitle().toStdString()
+                                  << (box ? " \"" + box->text().toStdString() + "\"" : "");
+                    open->reject();
+                }
             });
         } else if (++*tries > 1500) {
             poll->deleteLater();
@@ -197,9 +213,21 @@ TEST_F(EditorCommandsTest, CtrlZ_WithFocusInEditedField_UndoesTheSceneEdit) {
 // Item 3: a name typed without ".json" is saved as name.json.
 TEST_F(EditorCommandsTest, SaveAs_NameWithoutExtension_WritesDotJson) {
     const QString typed = QString::fromStdString((dir.path() / "my scene").string());
-    whenModalOpens<QFileDialog>([typed](QFileDialog* d) {
-        // What typing the name and pressing Save does (accept() is protected).
-        d->selectFile(typed);
+    const QString folder = QString::fromStdString(dir.path().string());
+    whenModalOpens<QFileDialog>([typed, folder](QFileDialog* d) {
+        // The dialog lists the folder in the background and, once listed,
+        // selects the scene's own file (seed.json) in its name field, which
+        // selectFile() leaves alone once the field has the focus (seen: the
+        // overwrite question for seed.json). So: wait for the listing, then
+        // type into the field as a person does.
+        auto* files = d->findChild<QFileSystemModel*>();
+        auto* name = d->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"));
+        ASSERT_TRUE(files && name);
+        EXPECT_TRUE(
+            QTest::qWaitFor([&] { return files->rowCount(files->index(folder)) > 0; }, 10000));
+        QTest::qWait(50);
+        name->setText(typed);
+        // Then Save (accept() is protected).
         QMetaObject::invokeMethod(d, "accept", Qt::QueuedConnection);
     });
     action(QStringLiteral("Save As"))->trigger();

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtx/rotate_vector.hpp>
 
+#include "camera.h"
 #include "tracer.h"
 
 namespace whitted {
@@ -104,15 +105,53 @@ Camera frameSphere(const Camera& c, const Vec3& centre, double radius) {
     return out;
 }
 
+namespace {
+
+// The scene with only the spheres whose bounds the line through `origin` along
+// unit `dir` comes near, in scene order (so ties resolve as in the whole
+// scene), and each one's index in the whole scene. Preparing every sphere for
+// one ray took 220 ms at 100,000 spheres, too slow for the cursor; the margin
+// is far wider than any rounding, so no sphere the ray hits is left out.
+Scene spheresNearLine(const Scene& scene, const Vec3& origin, const Vec3& dir,
+                      std::vector<int>& index) {
+    Scene near{scene.camera,
+               scene.render,
+               scene.background,
+               scene.ambient,
+               scene.materials,
+               scene.lights,
+               {}};
+    for (std::size_t k = 0; k < scene.spheres.size(); ++k) {
+        const Sphere& sp = scene.spheres[k];
+        const Vec3 toCentre = sp.center - origin;
+        const double along = glm::dot(toCentre, dir);
+        const double offLine = glm::length(toCentre - along * dir);
+        const double margin = 1e-6 * (sp.radius + glm::length(toCentre));
+        if (offLine > sp.radius + margin || along < -sp.radius - margin) continue;
+        near.spheres.push_back(sp);
+        index.push_back(static_cast<int>(k));
+    }
+    return near;
+}
+
+}  // namespace
+
 std::optional<SurfacePick> pickSurface(const Scene& scene, double x, double y) {
-    const PreparedScene<double> s = prepareScene<double>(scene);
     const int i = static_cast<int>(std::floor(x)), j = static_cast<int>(std::floor(y));
+    const CameraBasis<double> view =
+        makeCameraBasis<double>(scene.camera, scene.render.width, scene.render.height);
+    std::vector<int> index;
+    const Scene near = spheresNearLine(scene, scene.camera.position,
+                                       cameraDirection(view, i, j, x - i, y - j), index);
+    if (near.spheres.empty()) return std::nullopt;
+    // The tracer's own intersection and tie rule, on those spheres alone.
+    const PreparedScene<double> s = prepareScene<double>(near);
     const Ray<double> ray{s.camera.origin, cameraDirection(s.camera, i, j, x - i, y - j), -1, false,
                           true};
     const auto hit = closestHit(s, ray);
     if (!hit) return std::nullopt;
     // Prepared positions are relative to frameOrigin: back to scene coordinates.
-    return SurfacePick{hit->sphere, s.frameOrigin + ray.origin + ray.dir * hit->t};
+    return SurfacePick{index[hit->sphere], s.frameOrigin + ray.origin + ray.dir * hit->t};
 }
 
 std::optional<int> pickSphere(const Scene& scene, double x, double y) {

@@ -1,5 +1,6 @@
 // The editor's camera moves (core/camera_control.*) with hand-checked numbers.
 #include <cmath>
+#include <random>
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -7,6 +8,7 @@
 #include "camera.h"
 #include "camera_control.h"
 #include "scene_io.h"
+#include "tracer.h"
 #include "view_projection.h"
 
 namespace whitted {
@@ -177,6 +179,37 @@ TEST(CameraControl, PickSurfaceGivesThePointOnTheNearestSphere) {
     ASSERT_TRUE(pick.has_value());
     EXPECT_EQ(pick->sphere, 1);
     expectNear(pick->point, {0, 0, -1}, 1e-12);
+}
+
+// The pick tests only the spheres near the ray; it must answer exactly as the
+// tracer's intersection over the whole scene does, ties and nested spheres included.
+TEST(CameraControl, PickSurfaceEqualsTheWholeSceneIntersection) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> coord(-3, 3), size(0.05, 1.5);
+    Scene s;
+    s.camera = Camera{{0, 1, -8}, {0, 0, 0}, {0, 1, 0}, 50};
+    s.render.width = 40;
+    s.render.height = 30;
+    s.materials = {Material{"m", {1, 1, 1}, 0, 50, 0, 0, 1.5, std::nullopt}};
+    s.spheres.push_back(Sphere{"floor", {0, -99999.5, 0}, 99999, "m"});
+    for (int k = 0; k < 300; ++k)
+        s.spheres.push_back(Sphere{"s", {coord(rng), coord(rng), coord(rng)}, size(rng), "m"});
+    s.spheres.push_back(s.spheres[5]);  // an exact duplicate: the first one wins the tie
+    const PreparedScene<double> whole = prepareScene<double>(s);
+    int hits = 0;
+    for (int j = 0; j < s.render.height; ++j)
+        for (int i = 0; i < s.render.width; ++i) {
+            const Ray<double> ray{whole.camera.origin,
+                                  cameraDirection(whole.camera, i, j, 0.5, 0.5), -1, false, true};
+            const auto expected = closestHit(whole, ray);
+            const auto pick = pickSurface(s, i + 0.5, j + 0.5);
+            ASSERT_EQ(pick.has_value(), expected.has_value()) << i << ", " << j;
+            if (!pick) continue;
+            ++hits;
+            EXPECT_EQ(pick->sphere, expected->sphere) << i << ", " << j;
+            expectNear(pick->point, whole.frameOrigin + ray.origin + ray.dir * expected->t, 0.0);
+        }
+    EXPECT_GT(hits, 600);
 }
 
 }  // namespace

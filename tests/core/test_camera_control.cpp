@@ -20,6 +20,17 @@ Camera frontCamera() {
     return Camera{{0, 0, -5}, {0, 0, 0}, {0, 1, 0}, 60};
 }
 
+// 100 x 100 pixels through frontCamera(): a unit sphere at the origin and one behind it.
+Scene twoOnTheAxis() {
+    Scene s;
+    s.camera = frontCamera();
+    s.render.width = 100;
+    s.render.height = 100;
+    s.materials = {Material{"m", {1, 1, 1}, 0, 50, 0, 0, 1.5, std::nullopt}};
+    s.spheres = {Sphere{"far", {0, 0, 10}, 1, "m"}, Sphere{"near", {0, 0, 0}, 1, "m"}};
+    return s;
+}
+
 void expectNear(const Vec3& a, const Vec3& b, double tol = 1e-9) {
     EXPECT_NEAR(a.x, b.x, tol);
     EXPECT_NEAR(a.y, b.y, tol);
@@ -71,12 +82,7 @@ TEST(CameraControl, FrameSphereFillsTwoThirdsOfTheHeight) {
 }
 
 TEST(CameraControl, PickFindsTheSphereAtTheImageCentreAndNothingBeside) {
-    Scene s;
-    s.camera = frontCamera();
-    s.render.width = 100;
-    s.render.height = 100;
-    s.materials = {Material{"m", {1, 1, 1}, 0, 50, 0, 0, 1.5, std::nullopt}};
-    s.spheres = {Sphere{"far", {0, 0, 10}, 1, "m"}, Sphere{"near", {0, 0, 0}, 1, "m"}};
+    const Scene s = twoOnTheAxis();
     EXPECT_EQ(pickSphere(s, 50, 50), 1);  // the nearer of the two on the axis
     // tan(30 deg) * 5 = 2.89 half-height at the near sphere: x = 95 is 2.6 units
     // to the right, outside both spheres.
@@ -169,12 +175,7 @@ TEST(CameraControl, SphereOutlineIsTheCircleOfItsAngularRadius) {
 }
 
 TEST(CameraControl, PickSurfaceGivesThePointOnTheNearestSphere) {
-    Scene s;
-    s.camera = frontCamera();
-    s.render.width = 100;
-    s.render.height = 100;
-    s.materials = {Material{"m", {1, 1, 1}, 0, 50, 0, 0, 1.5, std::nullopt}};
-    s.spheres = {Sphere{"far", {0, 0, 10}, 1, "m"}, Sphere{"near", {0, 0, 0}, 1, "m"}};
+    const Scene s = twoOnTheAxis();
     const auto pick = pickSurface(s, 50, 50);
     ASSERT_TRUE(pick.has_value());
     EXPECT_EQ(pick->sphere, 1);

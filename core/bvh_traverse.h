@@ -13,9 +13,10 @@
 //    order), and stops early only at an opaque sphere, where it is 0 either way;
 //  * a box never drops a sphere whose test would report a hit (kBvhSlack below).
 //
-// Lanes go through the tree together, masked as they leave the boxes: camera
-// packets are coherent, and a secondary packet costs no more than its lanes
-// one by one would (docs/performance.md).
+// Lanes go through the tree together, masked as they leave the boxes. Each
+// lane of reflected, refracted and shadow packets alone through the tree took
+// 1.7 to 3 times as long (docs/performance.md): a sphere test costs one
+// vector operation however few lanes it serves.
 #pragma once
 
 #include <cmath>
@@ -119,7 +120,8 @@ inline unsigned boxLanes(const BvhNode<T>& node, const PacketSlabs<T>& s,
 
 // Visits the leaves whose boxes the lanes' rays meet within [0, limit], the
 // nearer child first by the direction of the lowest such lane.
-// leaf(node, lanes) returns the lanes still looking; `limit` may shrink meanwhile.
+// leaf(node, lanes) returns a mask of the lanes still looking; `limit` may
+// shrink meanwhile.
 template <typename T, typename Leaf>
 inline void traverseBvh(const SphereBvh<T>& bvh, const RayPacket<T>& r, const PacketSlabs<T>& slabs,
                         const typename Simd<T>::type& limit, unsigned lanes, Leaf&& leaf) {
@@ -131,7 +133,7 @@ inline void traverseBvh(const SphereBvh<T>& bvh, const RayPacket<T>& r, const Pa
         const unsigned in = boxLanes(node, slabs, limit, lanes);
         if (!in) continue;
         if (node.count > 0) {
-            lanes = leaf(node, in);
+            lanes &= leaf(node, in);
             if (!lanes) return;
             continue;
         }
@@ -194,11 +196,12 @@ inline void bvhClosestHits(const SphereSet<T>& spheres, const SphereBvh<T>& bvh,
     for (const std::int32_t k : bvh.direct) closestUpdate(spheres, k, r, r.active, tBest, kBest);
     if (bvh.nodes.empty()) return;
     // Testing a ray's own sphere again changes nothing: its (t, k) is already kept.
-    traverseBvh(bvh, r, slabs, tBest, r.active, [&](const BvhNode<T>& leaf, unsigned lanes) {
-        for (int i = leaf.first; i < leaf.first + leaf.count; ++i)
+    auto leaf = [&](const BvhNode<T>& node, unsigned lanes) {
+        for (int i = node.first; i < node.first + node.count; ++i)
             closestUpdate(spheres, bvh.spheres[i], r, lanes, tBest, kBest);
-        return r.active;
-    });
+        return ~0u;
+    };
+    traverseBvh(bvh, r, slabs, tBest, r.active, leaf);
 }
 
 // The spheres each lane's shadow ray crosses, to be multiplied in index order.
@@ -277,19 +280,18 @@ inline typename Simd<T>::type bvhTransmittance(const SphereSet<T>& spheres,
         if (const unsigned open = lanes & ~found.opaque)
             shadowUpdate(spheres, transparency, k, r, distance,
                          goingIn ? open & ~lanesInto(r, k, goingIn) : open, found);
+    auto leaf = [&](const BvhNode<T>& node, unsigned in) {
+        for (int i = node.first; i < node.first + node.count && in; ++i) {
+            const int k = bvh.spheres[i];
+            // Its own sphere was counted above; once is all.
+            const unsigned test = goingIn ? in & ~lanesInto(r, k, goingIn) : in;
+            if (test) shadowUpdate(spheres, transparency, k, r, distance, test, found);
+            in &= ~found.opaque;
+        }
+        return ~found.opaque;
+    };
     if (!bvh.nodes.empty() && (lanes & ~found.opaque)) {
-        traverseBvh(bvh, r, slabs, distance, lanes & ~found.opaque,
-                    [&](const BvhNode<T>& leaf, unsigned in) {
-                        for (int i = leaf.first; i < leaf.first + leaf.count && in; ++i) {
-                            const int k = bvh.spheres[i];
-                            // Its own sphere was counted above; once is all.
-                            const unsigned test = goingIn ? in & ~lanesInto(r, k, goingIn) : in;
-                            if (test)
-                                shadowUpdate(spheres, transparency, k, r, distance, test, found);
-                            in &= ~found.opaque;
-                        }
-                        return lanes & ~found.opaque;
-                    });
+        traverseBvh(bvh, r, slabs, distance, lanes & ~found.opaque, leaf);
     }
     V s = V{} + T(1);
     for (unsigned open = lanes & ~found.opaque & ~found.overflow; open; open &= open - 1) {

@@ -15,6 +15,7 @@
 
 #include "bvh.h"
 #include "bvh_traverse.h"
+#include "kernel_dispatch.h"
 #include "renderer.h"
 #include "tracer.h"
 
@@ -192,6 +193,20 @@ TEST(BvhRendersLikeBruteForceImage, RendererImagesEqual) {
         scene.render.precision = p;
         expectSameImage(scene, std::string("300 nested, ") + std::string(precisionName(p)));
     }
+}
+
+// Every kernel (baseline SSE2 to AVX-512: packets of 2 to 16 lanes) traverses
+// the tree to the brute-force image.
+TEST(BvhRendersLikeBruteForceImage, EveryKernel) {
+    const std::uint32_t seed = testSeed(2024);
+    std::printf("seed %u\n", seed);
+    const Scene scene = randomScene(400, Layout::Overlapping, seed, true);
+    for (const std::string& kernel : supportedKernelNames()) {
+        useKernel(kernel);
+        expectSameSamples<float>(scene, "kernel " + kernel + ", float");
+        expectSameSamples<double>(scene, "kernel " + kernel + ", double");
+    }
+    useKernel("");
 }
 
 // Build checks on the tree's own invariants.

@@ -1,6 +1,6 @@
 // One pixel's Whitted ray tree walked ray by ray, with the tracer's own rules
 // (tracer.cpp's tracePacket in scalar form, expression for expression): closest
-// hit, per-light shadow rays through packetTransmittance, refraction before
+// hit, per-light shadow rays through sceneTransmittance, refraction before
 // reflection, total internal reflection sending kt along the reflected ray, the
 // same self-intersection policy and depth limit. A visitor sees the decisions;
 // the walk adds up no radiance. Used for the float/double decision counts
@@ -10,6 +10,7 @@
 #include <cmath>
 #include <optional>
 
+#include "bvh_traverse.h"
 #include "ray_packet.h"
 #include "tracer.h"
 
@@ -94,7 +95,8 @@ class RayTreeWalk {
         RayPacket<T> shadow;
         shadow.set(0, p, l, sphere, glm::dot(l, outward) < T(0));
         const typename Simd<T>::type limit = typename Simd<T>::type{} + distance;
-        const T sj = packetTransmittance(s_.spheres, s_.transparency, shadow, limit, 1u)[0];
+        const T sj = sceneTransmittance(s_.spheres, s_.transparency, s_.useBvh ? &s_.bvh : nullptr,
+                                        shadow, limit, 1u)[0];
         return sj < T(1) ? 1 : 0;
     }
 

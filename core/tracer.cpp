@@ -1,8 +1,12 @@
 #include "tracer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include "kernel_dispatch.h"
 #include "sampling.h"
@@ -27,7 +31,33 @@ Vec<T> boundedInput(const Vec3& v) {
     return {boundedInput<T>(v.x), boundedInput<T>(v.y), boundedInput<T>(v.z)};
 }
 
+std::atomic<Acceleration> forcedAcceleration{Acceleration::automatic};
+
+Acceleration environmentAcceleration() {
+    static const Acceleration choice = [] {
+        const char* v = std::getenv("WHITTED_ACCEL");
+        const std::string name = v ? v : "";
+        if (name.empty() || name == "auto") return Acceleration::automatic;
+        if (name == "brute") return Acceleration::bruteForce;
+        if (name == "bvh") return Acceleration::bvh;
+        throw std::runtime_error("WHITTED_ACCEL: unknown value '" + name +
+                                 "' (auto, brute or bvh)");
+    }();
+    return choice;
+}
+
 }  // namespace
+
+void useAcceleration(Acceleration choice) {
+    forcedAcceleration = choice;
+}
+
+bool bvhChosen(int spheres) {
+    Acceleration choice = forcedAcceleration;
+    if (choice == Acceleration::automatic) choice = environmentAcceleration();
+    if (choice == Acceleration::automatic) return spheres > kBvhCrossover;
+    return choice == Acceleration::bvh;
+}
 
 template <typename T>
 PreparedScene<T> prepareScene(const Scene& scene) {
@@ -84,12 +114,23 @@ PreparedScene<T> prepareScene(const Scene& scene) {
         if (c == Vec3(0.0)) continue;  // a dark light adds nothing: no shadow rays for it
         s.lights.push_back({Vec<T>(l.position - s.frameOrigin), boundedInput<T>(c)});
     }
+    const bool useBvh = bvhChosen(static_cast<int>(scene.spheres.size()));
+    std::vector<Vec3> centres;
+    std::vector<double> radii;
     for (const Sphere& sp : scene.spheres) {
         Vec3 c, cLo;  // the centre in the frame, exactly: c + cLo
         for (int i = 0; i < 3; ++i) exact::twoSum(sp.center[i], -s.frameOrigin[i], c[i], cLo[i]);
         s.spheres.add(c, cLo, sp.radius, s.camera.origin);
         s.material.push_back(findMaterial(scene, sp.material));
         s.transparency.push_back(s.materials[s.material.back()].transparency);
+        if (useBvh) {
+            centres.push_back(c);  // cLo is far inside the traversal's margin
+            radii.push_back(sp.radius);
+        }
+    }
+    if (useBvh) {
+        s.bvh = buildSphereBvh<T>(centres, radii);
+        s.useBvh = true;
     }
     return s;
 }

@@ -17,6 +17,7 @@
 #include <optional>
 #include <vector>
 
+#include "bvh.h"
 #include "camera.h"
 #include "scene.h"
 #include "sphere_intersect.h"
@@ -82,6 +83,10 @@ struct PreparedScene {
     SphereSet<T> spheres;         // geometry, in scene order
     std::vector<int> material;    // per sphere: index into materials
     std::vector<T> transparency;  // per sphere, from its material: the shadow-ray factor
+    // Which spheres a ray is tested against: all of them, or those the tree
+    // finds near it (useBvh). Either way the same image, bit for bit.
+    SphereBvh<T> bvh;
+    bool useBvh = false;
     std::vector<PreparedMaterial<T>> materials;
     std::vector<PreparedLight<T>> lights;
     Vec<T> background, ambient;
@@ -90,8 +95,21 @@ struct PreparedScene {
     int width = 1, height = 1;
 };
 
+// How prepareScene() lets rays find their spheres. Automatic: a BVH above
+// kBvhCrossover spheres, every sphere tested below it (the seed's four).
+enum class Acceleration { automatic, bruteForce, bvh };
+inline constexpr int kBvhCrossover = 16;
+
+// From now on prepare scenes with this choice (tests, benchmarks); automatic
+// goes back to what the environment variable WHITTED_ACCEL says (auto, brute
+// or bvh; read once), or the automatic choice when it is unset.
+void useAcceleration(Acceleration choice);
+// The choice prepareScene() makes for a scene of `spheres` spheres. Throws
+// std::runtime_error when WHITTED_ACCEL holds anything else.
+bool bvhChosen(int spheres);
+
 // The scene must be valid (validateScene); width, height, depth and samples
-// come from scene.render.
+// come from scene.render. Builds the sphere BVH when bvhChosen() says so.
 template <typename T>
 PreparedScene<T> prepareScene(const Scene& scene);
 

@@ -1,0 +1,65 @@
+// A bounding volume hierarchy over the scene's spheres (issue 12), so that a ray
+// tests the few spheres near it instead of every one. Built once per render by
+// code compiled with the project's flags, then read by whichever tracing kernel
+// runs (kernel_dispatch.h); the traversal, compiled per instruction set, is in
+// bvh_traverse.h. Plain values and free functions; no Qt.
+//
+// The tree only decides which spheres a ray is tested against; the test itself
+// is the brute-force one (ray_packet.h), so a render with the tree equals the
+// brute-force render bit for bit (tests/core/test_bvh.cpp). For that, a box
+// must never exclude a sphere whose test would report a hit: the boxes are
+// rounded outward to T here, and the traversal widens them further by a margin
+// that covers the rounding errors of the sphere test (bvh_traverse.h).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace whitted {
+
+// One node of the flattened binary tree: 32 bytes in float, 56 in double.
+template <typename T>
+struct BvhNode {
+    T lo[3], hi[3];  // the box [lo, hi], holding every sphere below, rounded outward to T
+    // Inner node: `first` is the index of its first child, the second child is
+    // first + 1, and count == -1 - axis, the axis the children were split along
+    // (the first child holds the lower centres). Leaf: its spheres are
+    // SphereBvh::spheres[first, first + count), count >= 1.
+    std::int32_t first = 0;
+    std::int32_t count = 0;
+};
+
+template <typename T>
+struct SphereBvh {
+    std::vector<BvhNode<T>> nodes;      // nodes[0] is the root; empty when no sphere is in the tree
+    std::vector<std::int32_t> spheres;  // the leaves' sphere indices, leaf after leaf
+    // Spheres kept out of the tree and tested on every ray: huge ones such as a
+    // floor (their box would swell every node above them, and the margin with
+    // it), and any whose box T cannot hold. In index order.
+    std::vector<std::int32_t> direct;
+    int depth = 0;  // the longest path from the root to a leaf, in edges
+};
+
+struct BvhBuildOptions {
+    int bins = 16;        // SAH candidate planes per axis: bins - 1
+    int maxLeafSize = 4;  // a node with more spheres is always split
+    // A sphere whose diameter is more than hugeRatio times the longest side of
+    // the box of all smaller spheres stays out of the tree (the seed's floor:
+    // 199998 against a few units). At most maxDirect of them: each costs every ray.
+    double hugeRatio = 4.0;
+    int maxDirect = 8;
+};
+
+// The deepest tree buildSphereBvh() makes: past depth 48 it splits at the
+// median, so 2^31 spheres stay below it. Traversal stacks are this deep.
+inline constexpr int kMaxBvhDepth = 96;
+
+// A binned-SAH tree over spheres given by their centres and radii in double
+// (the prepared scene's frame). Sphere i of the tree is sphere i of the scene.
+template <typename T>
+SphereBvh<T> buildSphereBvh(const std::vector<glm::dvec3>& centres,
+                            const std::vector<double>& radii, const BvhBuildOptions& options = {});
+
+}  // namespace whitted

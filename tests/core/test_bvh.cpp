@@ -1,0 +1,436 @@
+// Tests for core/bvh.* and core/bvh_traverse.h: the tree holds every sphere
+// once inside nested boxes, and rays traced through it find exactly what brute
+// force finds, down to the last bit of every pixel, in float and double.
+// Random cases print their seed; WHITTED_TEST_SEED replays one.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "bvh.h"
+#include "bvh_traverse.h"
+#include "kernel_dispatch.h"
+#include "renderer.h"
+#include "tracer.h"
+
+namespace whitted {
+namespace {
+
+static_assert(sizeof(BvhNode<float>) == 32, "a float node is 32 bytes");
+
+std::uint32_t testSeed(std::uint32_t fallback) {
+    const char* s = std::getenv("WHITTED_TEST_SEED");
+    return s ? static_cast<std::uint32_t>(std::strtoul(s, nullptr, 10)) : fallback;
+}
+
+// Kinds of random scene, each an extreme the tree's boxes must survive.
+enum class Layout { Field, Overlapping, Nested, Far, Tiny };
+
+const char* layoutName(Layout l) {
+    switch (l) {
+        case Layout::Field:
+            return "field";
+        case Layout::Overlapping:
+            return "overlapping";
+        case Layout::Nested:
+            return "nested";
+        case Layout::Far:
+            return "far";
+        case Layout::Tiny:
+            return "tiny";
+    }
+    return "?";
+}
+
+// `count` random spheres of the layout, the seed's checker floor among them
+// (a random index), matte, mirror and glass materials, two lights.
+Scene randomScene(int count, Layout layout, std::uint32_t seed, bool floor) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    Scene s;
+    s.render = {64, 48, 4, 2, Precision::Float};
+    s.background = {0.02, 0.03, 0.05};
+    auto material = [](const char* name, Vec3 diffuse, double ks, double n, double kr, double kt,
+                       double ior) { return Material{name, diffuse, ks, n, kr, kt, ior, {}}; };
+    const Material matte = material("matte", {0.7, 0.3, 0.2}, 0.5, 20, 0, 0, 1.5);
+    const Material mirror = material("mirror", {0.1, 0.1, 0.1}, 1, 60, 0.8, 0, 1.5);
+    const Material glass = material("glass", {0, 0, 0}, 1, 200, 0.1, 0.9, 1.5);
+    const Material haze = material("haze", {0.2, 0.5, 0.2}, 0, 50, 0, 0.5, 1.1);
+    Material checker = material("floor", {0.75, 0.75, 0.75}, 1, 50, 0.25, 0, 1.5);
+    checker.checker = Checker{{0, 0, 0}, 0.5};
+    s.materials = {matte, mirror, glass, haze, checker};
+    const char* kinds[] = {"matte", "mirror", "glass", "haze"};
+    double scale = 1.0, extent = 4.0 + std::cbrt(double(count));
+    Vec3 centre{0, 0, 6 + extent};
+    if (layout == Layout::Far) centre = {1e6, 1e6 + 3, 1e6 + 7};
+    if (layout == Layout::Tiny) scale = 1e-3;
+    s.camera.position = layout == Layout::Far ? Vec3{1e6, 1e6 + 3, 1e6 + 7 - 2 * extent - 6}
+                                              : Vec3{0, 1, 0} * scale;
+    s.camera.lookAt = centre * (layout == Layout::Tiny ? scale : 1.0);
+    s.camera.vfovDegrees = 60;
+    s.lights = {{"key", s.camera.position + Vec3{5, 8, -4} * scale, {1, 1, 1}, 0.8},
+                {"fill",
+                 centre * (layout == Layout::Tiny ? scale : 1.0) + Vec3{-6, 3, 0} * scale,
+                 {0.4, 0.5, 1},
+                 0.6}};
+    const int floorAt = floor ? static_cast<int>(u(rng) * count) : -1;
+    for (int i = 0; i < count; ++i) {
+        Sphere sp;
+        sp.name = "s" + std::to_string(i);
+        sp.material = kinds[static_cast<int>(u(rng) * 4) % 4];
+        Vec3 p{(u(rng) - 0.5) * 2 * extent, (u(rng) - 0.5) * extent, (u(rng) - 0.5) * 2 * extent};
+        double r = extent / std::cbrt(double(count)) * (0.1 + 0.5 * u(rng));
+        if (layout == Layout::Overlapping) r *= 3;
+        if (layout == Layout::Nested && i > 0 && u(rng) < 0.7) {
+            const Sphere& outer = s.spheres[static_cast<int>(u(rng) * i)];
+            p = (outer.center - centre * (layout == Layout::Tiny ? scale : 1.0)) / scale;
+            r = outer.radius / scale * (0.3 + 0.65 * u(rng));
+            if (u(rng) < 0.2) r = outer.radius / scale;  // the same sphere twice
+        }
+        if (layout == Layout::Tiny && u(rng) < 0.5) r = 1e-4 / scale * (1 + u(rng));
+        sp.center = (layout == Layout::Tiny ? centre * scale : centre) + p * scale;
+        sp.radius = r * scale;
+        if (layout == Layout::Tiny) sp.radius = std::max(sp.radius, 1e-7);
+        if (i == floorAt) {
+            sp.material = "floor";
+            sp.radius = 99999 * scale;
+            sp.center = Vec3{0, -99999.5 - extent * 0.5, 0} * scale +
+                        (layout == Layout::Far ? centre : Vec3{0.0});
+        }
+        s.spheres.push_back(sp);
+    }
+    return s;
+}
+
+// Every sample of every pixel, traced with and without the tree: the radiance
+// must agree to the bit.
+template <typename T>
+void expectSameSamples(const Scene& scene, const std::string& what) {
+    useAcceleration(Acceleration::bruteForce);
+    const PreparedScene<T> brute = prepareScene<T>(scene);
+    useAcceleration(Acceleration::bvh);
+    const PreparedScene<T> tree = prepareScene<T>(scene);
+    useAcceleration(Acceleration::automatic);
+    ASSERT_FALSE(brute.useBvh);
+    ASSERT_TRUE(tree.useBvh);
+    const int w = scene.render.width;
+    std::vector<Vec<T>> a(w), b(w);
+    int differing = 0, background = 0;
+    for (int n = 0; n < scene.render.samplesPerPixel; ++n) {
+        for (int y = 0; y < scene.render.height; ++y) {
+            RayCounts ca, cb;
+            traceCameraRow(brute, y, 0, w, n, a.data(), ca);
+            traceCameraRow(tree, y, 0, w, n, b.data(), cb);
+            for (int x = 0; x < w; ++x) {
+                background += a[x] == brute.background;
+                if (std::memcmp(&a[x], &b[x], sizeof(Vec<T>)) == 0) continue;
+                if (differing++ < 5)
+                    ADD_FAILURE() << what << ": pixel (" << x << ", " << y << ") sample " << n
+                                  << ": brute (" << a[x].x << ", " << a[x].y << ", " << a[x].z
+                                  << ") tree (" << b[x].x << ", " << b[x].y << ", " << b[x].z
+                                  << ")";
+            }
+            EXPECT_EQ(ca.total(), cb.total()) << what << ": row " << y << " traced other rays";
+        }
+    }
+    EXPECT_EQ(differing, 0) << what;
+    // A test of something: the spheres cover much of the picture.
+    const int samples = w * scene.render.height * scene.render.samplesPerPixel;
+    std::printf("%s: %.0f %% background\n", what.c_str(), 100.0 * background / samples);
+}
+
+// The renderer's image (threads, tiles, sample sums) with and without the tree.
+void expectSameImage(const Scene& scene, const std::string& what) {
+    RenderOptions options;
+    options.threads = 2;
+    options.progressive = false;
+    useAcceleration(Acceleration::bruteForce);
+    const RenderResult brute = render(scene, options);
+    useAcceleration(Acceleration::bvh);
+    const RenderResult tree = render(scene, options);
+    useAcceleration(Acceleration::automatic);
+    ASSERT_EQ(brute.image.rgb.size(), tree.image.rgb.size());
+    EXPECT_EQ(std::memcmp(brute.image.rgb.data(), tree.image.rgb.data(),
+                          brute.image.rgb.size() * sizeof(float)),
+              0)
+        << what;
+}
+
+class BvhRendersLikeBruteForce : public ::testing::TestWithParam<int> {};
+
+TEST_P(BvhRendersLikeBruteForce, EveryPixelEqualInFloatAndDouble) {
+    const int count = GetParam();
+    const std::uint32_t seed = testSeed(1000 + count);
+    std::printf("seed %u (WHITTED_TEST_SEED replays it)\n", seed);
+    int variant = 0;
+    for (Layout layout :
+         {Layout::Field, Layout::Overlapping, Layout::Nested, Layout::Far, Layout::Tiny}) {
+        for (bool floor : {true, false}) {
+            if (count > 500 && layout != Layout::Field && !floor) continue;  // time
+            const std::uint32_t sceneSeed = seed * 31 + variant++;
+            const Scene scene = randomScene(count, layout, sceneSeed, floor);
+            const std::string what = std::to_string(count) + " spheres, " + layoutName(layout) +
+                                     (floor ? ", floor" : "") + ", scene seed " +
+                                     std::to_string(sceneSeed);
+            expectSameSamples<float>(scene, what + ", float");
+            expectSameSamples<double>(scene, what + ", double");
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Counts, BvhRendersLikeBruteForce,
+                         ::testing::Values(1, 2, 7, 50, 500, 5000));
+
+TEST(BvhRendersLikeBruteForceImage, RendererImagesEqual) {
+    for (Precision p : {Precision::Float, Precision::Double}) {
+        Scene scene = randomScene(300, Layout::Nested, testSeed(77), true);
+        scene.render.precision = p;
+        expectSameImage(scene, std::string("300 nested, ") + std::string(precisionName(p)));
+    }
+}
+
+// Every kernel (baseline SSE2 to AVX-512: packets of 2 to 16 lanes) traverses
+// the tree to the brute-force image.
+TEST(BvhRendersLikeBruteForceImage, EveryKernel) {
+    const std::uint32_t seed = testSeed(2024);
+    std::printf("seed %u\n", seed);
+    const Scene scene = randomScene(400, Layout::Overlapping, seed, true);
+    for (const std::string& kernel : supportedKernelNames()) {
+        useKernel(kernel);
+        expectSameSamples<float>(scene, "kernel " + kernel + ", float");
+        expectSameSamples<double>(scene, "kernel " + kernel + ", double");
+    }
+    useKernel("");
+}
+
+// Build checks on the tree's own invariants.
+template <typename T>
+void expectWellFormed(const std::vector<glm::dvec3>& centres, const std::vector<double>& radii,
+                      const SphereBvh<T>& bvh) {
+    const int n = static_cast<int>(radii.size());
+    std::vector<int> seen(n, 0);
+    for (int k : bvh.direct) ++seen[k];
+    for (int k : bvh.spheres) ++seen[k];
+    for (int i = 0; i < n; ++i) ASSERT_EQ(seen[i], 1) << "sphere " << i;
+    EXPECT_LE(bvh.depth, kMaxBvhDepth);
+    int leafSpheres = 0;
+    std::vector<int> parents(bvh.nodes.size(), -1);
+    for (int i = 0; i < static_cast<int>(bvh.nodes.size()); ++i) {
+        const BvhNode<T>& node = bvh.nodes[i];
+        for (int a = 0; a < 3; ++a) ASSERT_LE(node.lo[a], node.hi[a]) << "node " << i;
+        if (node.count > 0) {
+            leafSpheres += node.count;
+            for (int j = node.first; j < node.first + node.count; ++j) {
+                const int k = bvh.spheres[j];
+                for (int a = 0; a < 3; ++a) {
+                    EXPECT_LE(double(node.lo[a]), centres[k][a] - radii[k]) << "sphere " << k;
+                    EXPECT_GE(double(node.hi[a]), centres[k][a] + radii[k]) << "sphere " << k;
+                }
+            }
+            continue;
+        }
+        ASSERT_GE(node.count, -3);
+        for (int c = node.first; c < node.first + 2; ++c) {
+            ASSERT_LT(c, static_cast<int>(bvh.nodes.size()));
+            ASSERT_EQ(parents[c], -1) << "node " << c << " has two parents";
+            parents[c] = i;
+            for (int a = 0; a < 3; ++a) {
+                EXPECT_LE(node.lo[a], bvh.nodes[c].lo[a]) << "child " << c << " of " << i;
+                EXPECT_GE(node.hi[a], bvh.nodes[c].hi[a]) << "child " << c << " of " << i;
+            }
+        }
+    }
+    EXPECT_EQ(leafSpheres, static_cast<int>(bvh.spheres.size()));
+}
+
+TEST(BvhBuild, EverySphereInOneLeafInsideNestedBoxes) {
+    const std::uint32_t seed = testSeed(4242);
+    std::printf("seed %u\n", seed);
+    for (int count : {1, 2, 7, 50, 500, 5000, 20000}) {
+        for (Layout layout :
+             {Layout::Field, Layout::Overlapping, Layout::Nested, Layout::Far, Layout::Tiny}) {
+            const Scene scene = randomScene(count, layout, seed + count, true);
+            std::vector<glm::dvec3> centres;
+            std::vector<double> radii;
+            for (const Sphere& sp : scene.spheres) {
+                centres.push_back(sp.center);
+                radii.push_back(sp.radius);
+            }
+            SCOPED_TRACE(std::to_string(count) + " " + layoutName(layout));
+            expectWellFormed(centres, radii, buildSphereBvh<float>(centres, radii));
+            expectWellFormed(centres, radii, buildSphereBvh<double>(centres, radii));
+        }
+    }
+}
+
+TEST(BvhBuild, HugeFloorStaysOutOfTheTree) {
+    std::vector<glm::dvec3> centres = {
+        {1, 0.2, 2}, {-0.95, 0.31, 1.25}, {-0.175, 0.51, 7.5}, {0, -99999.5, 0}};
+    std::vector<double> radii = {0.6, 0.6, 0.6, 99999};
+    const SphereBvh<float> bvh = buildSphereBvh<float>(centres, radii);
+    EXPECT_EQ(bvh.direct, std::vector<std::int32_t>{3});
+    EXPECT_EQ(bvh.spheres.size(), 3u);
+}
+
+TEST(BvhBuild, CoincidentSpheresMakeABoundedTree) {
+    std::vector<glm::dvec3> centres(1000, glm::dvec3(1, 2, 3));
+    std::vector<double> radii(1000, 0.5);
+    const SphereBvh<float> bvh = buildSphereBvh<float>(centres, radii);
+    expectWellFormed(centres, radii, bvh);
+    EXPECT_LE(bvh.depth, 12);
+}
+
+TEST(BvhBuild, SeedSceneStaysOnBruteForce) {
+    useAcceleration(Acceleration::automatic);
+    EXPECT_FALSE(bvhChosen(4));
+    EXPECT_TRUE(bvhChosen(kBvhCrossover + 1));
+    useAcceleration(Acceleration::bvh);
+    EXPECT_TRUE(bvhChosen(1));
+    useAcceleration(Acceleration::bruteForce);
+    EXPECT_FALSE(bvhChosen(100000));
+    useAcceleration(Acceleration::automatic);
+}
+
+// Packets of rays of every kind (from the camera, leaving a sphere outwards,
+// going into their own sphere, grazing), random subsets of lanes active: the
+// tree's nearest hits and transmittances equal brute force's lane for lane.
+template <typename T>
+void expectSamePackets(const Scene& scene, std::uint32_t seed, const std::string& what) {
+    using V = typename Simd<T>::type;
+    constexpr int W = RayPacket<T>::kWidth;
+    useAcceleration(Acceleration::bvh);
+    const PreparedScene<T> s = prepareScene<T>(scene);
+    useAcceleration(Acceleration::automatic);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    auto randomDir = [&] {
+        Vec<T> d;
+        do d = Vec<T>(T(u(rng) * 2 - 1), T(u(rng) * 2 - 1), T(u(rng) * 2 - 1));
+        while (glm::dot(d, d) < T(0.01) || glm::dot(d, d) > T(1));
+        return glm::normalize(d);
+    };
+    const int n = s.spheres.count();
+    int mismatches = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+        RayPacket<T> r;
+        V distance{};
+        for (int l = 0; l < W; ++l) {
+            const int k = static_cast<int>(u(rng) * n) % n;
+            const Vec<T> c = s.spheres.centre[k];
+            const T radius = s.spheres.radius[k];
+            const Vec<T> outward = randomDir();
+            const Vec<T> p = c + radius * outward;
+            const int kind = static_cast<int>(u(rng) * 4);
+            Vec<T> d = randomDir();
+            if (kind == 0) {  // from near the camera towards a sphere
+                r.set(l, Vec<T>(T(0)), glm::normalize(p), -1, false);
+            } else if (kind == 1) {  // leaving sphere k outwards
+                if (glm::dot(d, outward) < T(0)) d = -d;
+                r.set(l, p, d, k, false);
+            } else if (kind == 2) {  // going into sphere k
+                if (glm::dot(d, outward) > T(0)) d = -d;
+                r.set(l, p, d, k, true);
+            } else {  // grazing sphere k from outside
+                const Vec<T> side = glm::normalize(glm::cross(outward, randomDir()));
+                r.set(l, p - T(3) * radius * side, side, -1, false);
+            }
+            distance[l] = T(u(rng) < 0.5 ? 1e30 : u(rng) * 20 * (1 + radius));
+        }
+        r.active = static_cast<unsigned>(rng()) & ((1u << W) - 1);
+        if (!r.active) r.active = 1;
+        V tb, kb, tt, kt;
+        packetClosestHits(s.spheres, r, tb, kb);
+        bvhClosestHits(s.spheres, s.bvh, r, tt, kt);
+        const V sb = packetTransmittance(s.spheres, s.transparency, r, distance, r.active);
+        const V st = bvhTransmittance(s.spheres, s.transparency, s.bvh, r, distance, r.active);
+        for (unsigned bits = r.active; bits; bits &= bits - 1) {
+            const int l = __builtin_ctz(bits);
+            const bool same = std::memcmp(&tb[l], &tt[l], sizeof(T)) == 0 && kb[l] == kt[l] &&
+                              std::memcmp(&sb[l], &st[l], sizeof(T)) == 0;
+            if (!same && mismatches++ < 5)
+                ADD_FAILURE() << what << ": trial " << trial << " lane " << l << ": brute t "
+                              << tb[l] << " k " << kb[l] << " S " << sb[l] << ", tree t " << tt[l]
+                              << " k " << kt[l] << " S " << st[l];
+        }
+    }
+    EXPECT_EQ(mismatches, 0) << what;
+}
+
+// The margin's premise (bvh_traverse.h, kBvhSlack): a root the sphere test
+// reports puts the exact point o + t d within a few eps (|o|_1 + |c|_1 + r) of
+// the ball, for far, tiny, huge and grazing cases. Prints the worst factor.
+template <typename T>
+double worstExcess(std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    double worst = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        const double scale = std::pow(10.0, u(rng) * 10 - 4);  // radius 1e-4 .. 1e6
+        const double away = std::pow(10.0, u(rng) * 8 - 1);    // origin 0.1 .. 1e7 radii off
+        const glm::dvec3 c = glm::dvec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5) *
+                             std::pow(10.0, u(rng) * 7);  // centre up to 1e7 out
+        SphereSet<T> set;
+        set.add(c, glm::dvec3(0.0), scale, Vec<T>(T(0)));
+        const glm::dvec3 toward =
+            glm::normalize(glm::dvec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5));
+        const glm::dvec3 o = c + toward * (scale * (1 + away));
+        // Aim at a point near the sphere's rim: grazing lines are the hard case.
+        const glm::dvec3 side =
+            glm::normalize(glm::cross(toward, glm::dvec3(u(rng), u(rng), u(rng))));
+        const glm::dvec3 aim = c + side * (scale * (0.9 + 0.2 * u(rng)));
+        RayPacket<T> r;
+        const Vec<T> ot(o), dt = glm::normalize(Vec<T>(aim - glm::dvec3(ot)));
+        r.set(0, ot, dt, -1, false);
+        const PacketRoots<T> roots = intersectPacket(set, 0, r, 1u);
+        if (!(roots.valid & 1u)) continue;
+        for (const T t : {roots.tNear[0], roots.tFar[0]}) {
+            if (!(t > T(0))) continue;
+            long double d2 = 0;
+            for (int i = 0; i < 3; ++i) {
+                const long double p = (long double)ot[i] + (long double)t * (long double)dt[i];
+                d2 += (p - (long double)c[i]) * (p - (long double)c[i]);
+            }
+            const double excess = double(std::sqrt(d2) - (long double)scale);
+            const double unit = std::numeric_limits<T>::epsilon() *
+                                (std::fabs(ot.x) + std::fabs(ot.y) + std::fabs(ot.z) +
+                                 std::fabs(c.x) + std::fabs(c.y) + std::fabs(c.z) + scale);
+            worst = std::max(worst, excess / unit);
+        }
+    }
+    return worst;
+}
+
+TEST(BvhMargin, HitsLieWithinTheMargin) {
+    const std::uint32_t seed = testSeed(7);
+    const double f = worstExcess<float>(seed), d = worstExcess<double>(seed);
+    std::printf("seed %u: worst excess %.3g eps in float, %.3g eps in double (margin %g)\n", seed,
+                f, d, double(kBvhSlack<float> / std::numeric_limits<float>::epsilon()));
+    EXPECT_LT(f, 8.0);
+    EXPECT_LT(d, 8.0);
+}
+
+TEST(BvhPackets, SameHitsAndTransmittanceAsBruteForce) {
+    const std::uint32_t seed = testSeed(99);
+    std::printf("seed %u\n", seed);
+    int variant = 0;
+    for (int count : {2, 7, 50, 500, 3000}) {
+        for (Layout layout :
+             {Layout::Field, Layout::Overlapping, Layout::Nested, Layout::Far, Layout::Tiny}) {
+            const std::uint32_t sceneSeed = seed * 17 + variant++;
+            const Scene scene = randomScene(count, layout, sceneSeed, true);
+            const std::string what = std::to_string(count) + " " + layoutName(layout) +
+                                     ", scene seed " + std::to_string(sceneSeed);
+            expectSamePackets<float>(scene, sceneSeed, what + ", float");
+            expectSamePackets<double>(scene, sceneSeed, what + ", double");
+        }
+    }
+}
+
+}  // namespace
+}  // namespace whitted

@@ -136,7 +136,10 @@ int run(const Options& o) {
     applyOverrides(o, scene.render);
 
     try {
-        activeKernel();  // a WHITTED_KERNEL this CPU cannot run is refused before rendering
+        // A WHITTED_KERNEL this CPU cannot run, or a WHITTED_ACCEL that names
+        // no structure, is refused before rendering, as bad input.
+        activeKernel();
+        bvhChosen(static_cast<int>(scene.spheres.size()));
     } catch (const std::runtime_error& e) {
         std::cerr << "whitted-render: " << e.what() << "\n";
         return kExitBadInput;

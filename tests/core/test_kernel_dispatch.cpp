@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include "image_io.h"
 #include "kernel_dispatch.h"
 #include "renderer.h"
 #include "scene_io.h"
@@ -121,15 +122,15 @@ TEST_F(KernelDispatch, EnvironmentVariableForcesAKernel) {
         << message;
 }
 
-// whitted-render run with WHITTED_KERNEL=kernel: its exit status (-1 for a
-// signal, SIGILL included) and everything it printed.
+// whitted-render run with one environment variable set ("NAME=value"): its
+// exit status (-1 for a signal, SIGILL included) and everything it printed.
 struct ProgramRun {
     int exitCode = -1;
     std::string output;
 };
 
-ProgramRun renderWithKernel(const std::string& kernel, const std::filesystem::path& image) {
-    std::string cmd = "WHITTED_KERNEL=" + kernel + " '" WHITTED_RENDER_EXE "' '";
+ProgramRun renderWith(const std::string& variable, const std::filesystem::path& image) {
+    std::string cmd = variable + " '" WHITTED_RENDER_EXE "' '";
     cmd.append(WHITTED_SCENES_DIR "/seed.json' --quiet --width 16 --height 12 -o '");
     cmd.append(image.string()).append("' 2>&1");
     ProgramRun run;
@@ -148,7 +149,7 @@ TEST_F(KernelDispatch, WhittedRenderRefusesKernelsItCannotRun) {
     for (const std::string& name : builtKernelNames())
         if (!contains(supportedKernelNames(), name)) refused.push_back(name);
     for (const std::string& kernel : refused) {
-        const ProgramRun run = renderWithKernel(kernel, dir.path() / "out.png");
+        const ProgramRun run = renderWith("WHITTED_KERNEL=" + kernel, dir.path() / "out.png");
         std::printf("WHITTED_KERNEL=%s: exit %d, %s", kernel.c_str(), run.exitCode,
                     run.output.c_str());
         EXPECT_EQ(run.exitCode, 2) << run.output;
@@ -156,9 +157,27 @@ TEST_F(KernelDispatch, WhittedRenderRefusesKernelsItCannotRun) {
         EXPECT_NE(run.output.find("\"" + kernel + "\""), std::string::npos) << run.output;
         EXPECT_FALSE(std::filesystem::exists(dir.path() / "out.png"));
     }
-    const ProgramRun baseline = renderWithKernel("baseline", dir.path() / "out.png");
+    const ProgramRun baseline = renderWith("WHITTED_KERNEL=baseline", dir.path() / "out.png");
     EXPECT_EQ(baseline.exitCode, 0) << baseline.output;
     EXPECT_TRUE(std::filesystem::exists(dir.path() / "out.png"));
+}
+
+std::string firstDifference(const Image& a, const Image& b);
+
+// WHITTED_ACCEL is refused like WHITTED_KERNEL when it names no structure; a
+// forced BVH renders the seed to the same file as its own brute force.
+TEST_F(KernelDispatch, WhittedRenderRefusesAnUnknownAcceleration) {
+    test::TempDir dir;
+    const ProgramRun bad = renderWith("WHITTED_ACCEL=octree", dir.path() / "out.png");
+    EXPECT_EQ(bad.exitCode, 2) << bad.output;
+    EXPECT_NE(bad.output.find("WHITTED_ACCEL: unknown value 'octree'"), std::string::npos)
+        << bad.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "out.png"));
+    ASSERT_EQ(renderWith("WHITTED_ACCEL=bvh", dir.path() / "bvh.png").exitCode, 0);
+    ASSERT_EQ(renderWith("WHITTED_ACCEL=brute", dir.path() / "brute.png").exitCode, 0);
+    EXPECT_EQ(
+        firstDifference(readImage(dir.path() / "bvh.png"), readImage(dir.path() / "brute.png")),
+        "");
 }
 
 // Renders of the repository's scenes, one per kernel this CPU runs.

@@ -1,17 +1,28 @@
-// Building the sphere BVH (bvh.h): binned SAH over the spheres' boxes in double,
-// written into a flat array of nodes with boxes rounded outward to T.
+// Building the sphere BVH (bvh.h): binned SAH over the spheres' boxes rounded
+// outward to T (bvh_split.h), in two phases: the top levels on the calling
+// thread, then the ranges below kJobSpheres as independent jobs on all cores,
+// spliced into one flat array of nodes in a fixed order.
 #include "bvh.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <thread>
+
+#include "bvh_split.h"
 
 namespace whitted {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using bvh_build::LaneBox;
+using bvh_build::Lanes;
+using bvh_build::Ref;
+
+template <typename T>
+using RefArray = std::vector<Ref<T>, LargeBufferAllocator<Ref<T>>>;
 
 // Splits are found by SAH up to this depth and at the median below it, which
 // bounds the depth (kMaxBvhDepth) even for spheres piled on one spot.
@@ -20,39 +31,11 @@ constexpr int kSahDepth = 48;
 // box test is about half a sphere test; 1 keeps leaves a little fuller, which
 // measured no slower (docs/performance.md).
 constexpr double kTraversalCost = 1.0;
-
-struct Bounds {
-    glm::dvec3 lo{kInf}, hi{-kInf};
-
-    void grow(const Bounds& b) {
-        for (int i = 0; i < 3; ++i) {
-            lo[i] = std::min(lo[i], b.lo[i]);
-            hi[i] = std::max(hi[i], b.hi[i]);
-        }
-    }
-    void grow(const glm::dvec3& p) { grow(Bounds{p, p}); }
-    bool empty() const { return !(lo.x <= hi.x); }
-    double extent(int axis) const { return empty() ? 0.0 : hi[axis] - lo[axis]; }
-    int longestAxis() const {
-        const int xy = extent(0) >= extent(1) ? 0 : 1;
-        return extent(xy) >= extent(2) ? xy : 2;
-    }
-    // Half the surface area: what the SAH weighs a child's chance of a visit by.
-    double halfArea() const {
-        const double x = extent(0), y = extent(1), z = extent(2);
-        return x * y + y * z + z * x;
-    }
-};
-
-struct Ref {
-    Bounds box;
-    glm::dvec3 centre;
-    std::int32_t sphere;
-};
-
-Bounds sphereBounds(const glm::dvec3& c, double r) {
-    return {c - r, c + r};
-}
+// Ranges with fewer spheres than this are built as one job on one thread; the
+// levels above are split first, each level's ranges in parallel. Small enough to give two
+// cores some dozens of jobs at 100k spheres, large enough that a job's set-up
+// is nothing beside its work. Fixed, so the tree does not depend on the threads.
+constexpr int kJobSpheres = 2048;
 
 // The largest |coordinate| + radius a sphere in the tree may have: the margin
 // argument in bvh_traverse.h needs squares of such numbers to stay finite in T
@@ -75,169 +58,280 @@ T roundedUp(double x) {
 }
 
 template <typename T>
-void setBox(BvhNode<T>& node, const Bounds& b) {
-    for (int i = 0; i < 3; ++i) {
-        node.lo[i] = roundedDown<T>(b.lo[i]);
-        node.hi[i] = roundedUp<T>(b.hi[i]);
+Ref<T> sphereRef(const glm::dvec3& c, double r, std::int32_t sphere) {
+    Lanes<T> lo{}, hi{};
+    for (int a = 0; a < 3; ++a) {
+        lo[a] = roundedDown<T>(c[a] - r);
+        hi[a] = roundedUp<T>(c[a] + r);
     }
+    return {lo, hi, sphere};
+}
+
+LaneBox<double> sphereBox(const glm::dvec3& c, double r) {
+    LaneBox<double> b;
+    b.grow(Lanes<double>{c.x - r, c.y - r, c.z - r, 0},
+           Lanes<double>{c.x + r, c.y + r, c.z + r, 0});
+    return b;
 }
 
 // Which spheres stay out of the tree (bvh.h, SphereBvh::direct): first any a
 // tree in T cannot bound, then, largest first, each one far larger than all
-// the spheres smaller than it together.
+// the spheres smaller than it together. Only the few largest are candidates,
+// so only they are sorted (largest first, ties in index order).
 template <typename T>
-std::vector<bool> keptOut(const std::vector<glm::dvec3>& centres, const std::vector<double>& radii,
+std::vector<char> keptOut(const std::vector<glm::dvec3>& centres, const std::vector<double>& radii,
                           const BvhBuildOptions& options) {
     const int n = static_cast<int>(radii.size());
-    std::vector<bool> out(n, false);
+    std::vector<char> out(n, 0);
     std::vector<int> order;
+    order.reserve(n);
     for (int i = 0; i < n; ++i) {
         const glm::dvec3& c = centres[i];
         const double reach = std::max({std::fabs(c.x), std::fabs(c.y), std::fabs(c.z)}) + radii[i];
         if (reach < kTreeReach<T>)
             order.push_back(i);
         else
-            out[i] = true;
+            out[i] = 1;
     }
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return radii[a] > radii[b]; });
     const int m = static_cast<int>(order.size());
-    std::vector<Bounds> smaller(m + 1);  // smaller[i]: the box of order[i ..]
-    for (int i = m - 1; i >= 0; --i) {
+    const int candidates = std::min(std::max(options.maxDirect, 0) + 1, m);
+    std::partial_sort(order.begin(), order.begin() + candidates, order.end(), [&](int a, int b) {
+        return radii[a] > radii[b] || (radii[a] == radii[b] && a < b);
+    });
+    std::vector<LaneBox<double>> smaller(candidates + 1);  // smaller[i]: the box of order[i ..]
+    for (int i = candidates; i < m; ++i)
+        smaller[candidates].grow(sphereBox(centres[order[i]], radii[order[i]]));
+    for (int i = candidates - 1; i >= 0; --i) {
         smaller[i] = smaller[i + 1];
-        smaller[i].grow(sphereBounds(centres[order[i]], radii[order[i]]));
+        smaller[i].grow(sphereBox(centres[order[i]], radii[order[i]]));
     }
     for (int i = 0; i < std::min(options.maxDirect, m - 1); ++i) {
-        const Bounds& rest = smaller[i + 1];
+        const LaneBox<double>& rest = smaller[i + 1];
         if (!(2.0 * radii[order[i]] > options.hugeRatio * rest.extent(rest.longestAxis()))) break;
-        out[order[i]] = true;
+        out[order[i]] = 1;
     }
     return out;
 }
 
-// A candidate split: refs whose centre falls in bins [0, bin] go to the first child.
-struct Split {
-    int axis = -1;
-    int bin = 0;
-    double cost = kInf;  // sum over both children of half area times spheres
+// A part of the tree built on its own: the whole tree, or one job's range.
+template <typename T>
+struct Subtree {
+    BvhArray<BvhNode<T>> nodes;      // nodes[0] is its root
+    BvhArray<std::int32_t> spheres;  // its leaves' spheres; leaves index into this
+    int depth = 0;                   // its deepest leaf, counted from the whole tree's root
 };
 
-// Bins centres along one axis: the same mapping for costing and partitioning.
-struct Binning {
-    int bins;
-    double lo, scale;
-    Binning(int bins, const Bounds& centres, int axis)
-        : bins(bins), lo(centres.lo[axis]), scale(bins / centres.extent(axis)) {}
-    int operator()(double x) const {
-        return std::clamp(static_cast<int>((x - lo) * scale), 0, bins - 1);
-    }
+// A range of refs and the node that will hold it.
+struct Range {
+    int node, begin, end, depth;
+    int size() const { return end - begin; }
 };
+
+// Runs work(i) for i in [0, count) on up to `threads` threads, in the order
+// given (the caller puts the longest first).
+template <typename Work>
+void parallelFor(const std::vector<int>& order, int threads, const Work& work) {
+    std::atomic<std::size_t> next{0};
+    const auto run = [&] {
+        for (std::size_t k; (k = next++) < order.size();) work(order[k]);
+    };
+    std::vector<std::thread> helpers;
+    for (int i = 1; i < std::min<int>(threads, static_cast<int>(order.size())); ++i)
+        helpers.emplace_back(run);
+    run();
+    for (std::thread& h : helpers) h.join();
+}
+
+// The ranges' indices, largest first (ties in order), for parallelFor.
+std::vector<int> largestFirst(const std::vector<Range>& ranges) {
+    std::vector<int> order(ranges.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return ranges[a].size() > ranges[b].size(); });
+    return order;
+}
 
 template <typename T>
 class Builder {
   public:
-    Builder(std::vector<Ref> refs, const BvhBuildOptions& options, SphereBvh<T>& out)
-        : refs_(std::move(refs)), options_(options), out_(out) {}
+    Builder(RefArray<T>& refs, const BvhBuildOptions& options)
+        : refs_(refs), bins_(std::clamp(options.bins, 2, bvh_build::kMaxBins)), options_(options) {}
 
-    void run() {
-        if (refs_.empty()) return;
-        out_.nodes.emplace_back();
-        out_.spheres.reserve(refs_.size());
-        build(0, 0, static_cast<int>(refs_.size()), 0);
+    // A range's box, and how its refs were divided between two children.
+    struct Division {
+        bvh_build::LaneBox<T> box;
+        int firstCount = 0;  // refs put first, for the first child; 0: the range is a leaf
+        int axis = 0;
+    };
+
+    Division divide(const Range& r) const {
+        Ref<T>* refs = refs_.data() + r.begin;
+        const int n = r.size();
+        const bvh_build::RangeBounds<T> bounds = bvh_build::rangeBounds(refs, n);
+        Division d{bounds.box};
+        if (n == 1) return d;
+        // A few spheres need no more bins than they are: the sweep over empty
+        // bins cost more than the binning in a measured build of 100k.
+        const bvh_build::Binning<T> map(std::min(bins_, std::max(4, n)), bounds.centres);
+        const bvh_build::Split best =
+            r.depth < kSahDepth ? bvh_build::bestSplit(refs, n, map) : bvh_build::Split{};
+        if (best.axis >= 0) {
+            const double splitCost = kTraversalCost + best.cost / double(bounds.box.halfArea());
+            if (n <= options_.maxLeafSize && !(splitCost < n)) return d;
+            d.firstCount = bvh_build::partitionRefs(refs, n, map, best);
+            d.axis = best.axis;
+        } else if (n > options_.maxLeafSize) {
+            // Too deep, or every centre on one spot: halves by count.
+            d.axis = bounds.centres.longestAxis();
+            d.firstCount = bvh_build::medianSplit(refs, n, d.axis);
+        }
+        return d;
+    }
+
+    // Writes a divided range into its node: a leaf, or an inner node whose two
+    // children are appended to `into`. Returns the children's ranges (none for a leaf).
+    std::vector<Range> place(Subtree<T>& into, const Range& r, const Division& d) const {
+        into.depth = std::max(into.depth, r.depth);
+        BvhNode<T>& node = into.nodes[r.node];
+        for (int a = 0; a < 3; ++a) {
+            node.lo[a] = d.box.lo[a];
+            node.hi[a] = d.box.hi[a];
+        }
+        if (d.firstCount == 0) {
+            makeLeaf(into, r);
+            return {};
+        }
+        const int children = static_cast<int>(into.nodes.size());
+        node.first = children;
+        node.count = -1 - d.axis;
+        into.nodes.resize(children + 2);
+        const int mid = r.begin + d.firstCount;
+        return {{children, r.begin, mid, r.depth + 1}, {children + 1, mid, r.end, r.depth + 1}};
+    }
+
+    // The whole subtree of a range, depth first, on this thread.
+    void build(Subtree<T>& into, const Range& r) const {
+        for (const Range& child : place(into, r, divide(r))) build(into, child);
     }
 
   private:
-    void build(int node, int begin, int end, int depth) {
-        out_.depth = std::max(out_.depth, depth);
-        Bounds box, centres;
-        for (int i = begin; i < end; ++i) {
-            box.grow(refs_[i].box);
-            centres.grow(refs_[i].centre);
-        }
-        setBox(out_.nodes[node], box);
-        const int n = end - begin;
-        if (n == 1) return makeLeaf(node, begin, end);
-        int axis = centres.longestAxis();
-        int mid;
-        const Split split = depth < kSahDepth ? bestSplit(begin, end, centres) : Split{};
-        if (split.axis >= 0) {
-            const double leafCost = n;
-            const double splitCost = kTraversalCost + split.cost / box.halfArea();
-            if (n <= options_.maxLeafSize && !(splitCost < leafCost))
-                return makeLeaf(node, begin, end);
-            axis = split.axis;
-            const Binning bin(options_.bins, centres, axis);
-            mid = static_cast<int>(
-                std::partition(refs_.begin() + begin, refs_.begin() + end,
-                               [&](const Ref& r) { return bin(r.centre[axis]) <= split.bin; }) -
-                refs_.begin());
-        } else {
-            // Too deep, or every centre on one spot: halves by count.
-            if (n <= options_.maxLeafSize) return makeLeaf(node, begin, end);
-            mid = begin + n / 2;
-            std::nth_element(
-                refs_.begin() + begin, refs_.begin() + mid, refs_.begin() + end,
-                [axis](const Ref& a, const Ref& b) { return a.centre[axis] < b.centre[axis]; });
-        }
-        const int children = static_cast<int>(out_.nodes.size());
-        out_.nodes.resize(children + 2);
-        out_.nodes[node].first = children;
-        out_.nodes[node].count = -1 - axis;
-        build(children, begin, mid, depth + 1);
-        build(children + 1, mid, end, depth + 1);
-    }
-
-    // The cheapest SAH split over all three axes; axis -1 when the centres
-    // coincide (or the box has no area to weigh children by).
-    Split bestSplit(int begin, int end, const Bounds& centres) const {
-        const int bins = options_.bins;
-        Split best;
-        std::vector<Bounds> binBox(bins), right(bins);
-        std::vector<int> binCount(bins), rightCount(bins);
-        for (int axis = 0; axis < 3; ++axis) {
-            const Binning bin(bins, centres, axis);
-            if (!(centres.extent(axis) > 0.0) || !std::isfinite(bin.scale)) continue;
-            std::fill(binBox.begin(), binBox.end(), Bounds{});
-            std::fill(binCount.begin(), binCount.end(), 0);
-            for (int i = begin; i < end; ++i) {
-                const int b = bin(refs_[i].centre[axis]);
-                binBox[b].grow(refs_[i].box);
-                ++binCount[b];
-            }
-            right[bins - 1] = binBox[bins - 1];
-            rightCount[bins - 1] = binCount[bins - 1];
-            for (int b = bins - 2; b >= 0; --b) {
-                right[b] = right[b + 1];
-                right[b].grow(binBox[b]);
-                rightCount[b] = rightCount[b + 1] + binCount[b];
-            }
-            Bounds left;
-            int leftCount = 0;
-            for (int b = 0; b + 1 < bins; ++b) {
-                left.grow(binBox[b]);
-                leftCount += binCount[b];
-                if (leftCount == 0 || rightCount[b + 1] == 0) continue;
-                const double cost =
-                    left.halfArea() * leftCount + right[b + 1].halfArea() * rightCount[b + 1];
-                if (cost < best.cost) best = {axis, b, cost};
-            }
-        }
-        return best;
-    }
-
     // A leaf lists its spheres in index order: neighbours in the scene file
     // are often neighbours in memory too.
-    void makeLeaf(int node, int begin, int end) {
-        BvhNode<T>& leaf = out_.nodes[node];
-        leaf.first = static_cast<std::int32_t>(out_.spheres.size());
-        leaf.count = end - begin;
-        for (int i = begin; i < end; ++i) out_.spheres.push_back(refs_[i].sphere);
-        std::sort(out_.spheres.begin() + leaf.first, out_.spheres.end());
+    void makeLeaf(Subtree<T>& into, const Range& r) const {
+        BvhNode<T>& leaf = into.nodes[r.node];
+        leaf.first = static_cast<std::int32_t>(into.spheres.size());
+        leaf.count = r.size();
+        for (int i = r.begin; i < r.end; ++i) into.spheres.push_back(refs_[i].sphere());
+        std::sort(into.spheres.begin() + leaf.first, into.spheres.end());
     }
 
-    std::vector<Ref> refs_;
+    RefArray<T>& refs_;
+    const int bins_;
     const BvhBuildOptions& options_;
-    SphereBvh<T>& out_;
 };
+
+// Copies a job's subtree into the tree: its root into the node that waited
+// for it, the rest from nodes[nodeBase + 1] and spheres[sphereBase] on.
+template <typename T>
+void splice(Subtree<T>& tree, int node, const Subtree<T>& part, std::int32_t nodeBase,
+            std::int32_t sphereBase) {
+    const auto moved = [&](BvhNode<T> n) {
+        n.first += n.count > 0 ? sphereBase : nodeBase;
+        return n;
+    };
+    tree.nodes[node] = moved(part.nodes[0]);
+    for (std::size_t i = 1; i < part.nodes.size(); ++i)
+        tree.nodes[nodeBase + i] = moved(part.nodes[i]);
+    std::copy(part.spheres.begin(), part.spheres.end(), tree.spheres.begin() + sphereBase);
+}
+
+// The top of the tree, level by level: the ranges of a level are divided in
+// parallel, then placed in order, so the layout does not depend on the
+// threads. Returns the ranges under kJobSpheres, left for buildJobs().
+template <typename T>
+std::vector<Range> buildTop(const Builder<T>& builder, Subtree<T>& tree, int count, int threads) {
+    std::vector<Range> level = {{0, 0, count, 0}}, jobs;
+    using Division = typename Builder<T>::Division;
+    while (!level.empty()) {
+        std::vector<Division> divisions(level.size());
+        parallelFor(largestFirst(level), threads,
+                    [&](int i) { divisions[i] = builder.divide(level[i]); });
+        std::vector<Range> next;
+        for (std::size_t i = 0; i < level.size(); ++i)
+            for (const Range& child : builder.place(tree, level[i], divisions[i]))
+                (child.size() < kJobSpheres ? jobs : next).push_back(child);
+        level = std::move(next);
+    }
+    return jobs;
+}
+
+// The subtrees of the jobs, in parallel, then copied into the tree in job
+// order, also in parallel (each job's block of the arrays is known once all
+// are built).
+template <typename T>
+void buildJobs(const Builder<T>& builder, Subtree<T>& tree, const std::vector<Range>& jobs,
+               int threads) {
+    std::vector<Subtree<T>> parts(jobs.size());
+    const std::vector<int> order = largestFirst(jobs);
+    parallelFor(order, threads, [&](int k) {
+        parts[k].nodes.resize(1);
+        builder.build(parts[k], {0, jobs[k].begin, jobs[k].end, jobs[k].depth});
+    });
+    std::vector<std::int32_t> nodeBase(jobs.size()), sphereBase(jobs.size());
+    std::size_t nodes = tree.nodes.size(), spheres = tree.spheres.size();
+    for (std::size_t k = 0; k < jobs.size(); ++k) {
+        nodeBase[k] = static_cast<std::int32_t>(nodes) - 1;
+        sphereBase[k] = static_cast<std::int32_t>(spheres);
+        nodes += parts[k].nodes.size() - 1;
+        spheres += parts[k].spheres.size();
+        tree.depth = std::max(tree.depth, parts[k].depth);
+    }
+    tree.nodes.resize(nodes);
+    tree.spheres.resize(spheres);
+    parallelFor(order, threads,
+                [&](int k) { splice(tree, jobs[k].node, parts[k], nodeBase[k], sphereBase[k]); });
+}
+
+template <typename T>
+Subtree<T> buildTree(RefArray<T>& refs, const BvhBuildOptions& options, int threads) {
+    Subtree<T> tree;
+    if (refs.empty()) return tree;
+    tree.nodes.resize(1);
+    const Builder<T> builder(refs, options);
+    const int count = static_cast<int>(refs.size());
+    const std::vector<Range> jobs = count < kJobSpheres ? std::vector<Range>{{0, 0, count, 0}}
+                                                        : buildTop(builder, tree, count, threads);
+    buildJobs(builder, tree, jobs, threads);
+    return tree;
+}
+
+// The refs of the spheres in the tree, in index order, made in parallel by
+// chunks (each chunk's place in the array counted first).
+template <typename T>
+RefArray<T> makeRefs(const std::vector<glm::dvec3>& centres, const std::vector<double>& radii,
+                     const std::vector<char>& out, int threads) {
+    constexpr int kChunk = 1 << 14;
+    const int n = static_cast<int>(radii.size());
+    struct Chunk {
+        int firstRef, begin, end;
+    };
+    std::vector<Chunk> chunks;
+    int kept = 0;
+    for (int begin = 0; begin < n; begin += kChunk) {
+        const int end = std::min(n, begin + kChunk);
+        chunks.push_back({kept, begin, end});
+        kept += static_cast<int>(std::count(out.begin() + begin, out.begin() + end, 0));
+    }
+    RefArray<T> refs(kept);
+    std::vector<int> order(chunks.size());
+    std::iota(order.begin(), order.end(), 0);
+    parallelFor(order, threads, [&](int c) {
+        int next = chunks[c].firstRef;
+        for (int i = chunks[c].begin; i < chunks[c].end; ++i)
+            if (!out[i]) refs[next++] = sphereRef<T>(centres[i], radii[i], i);
+    });
+    return refs;
+}
 
 }  // namespace
 
@@ -245,16 +339,17 @@ template <typename T>
 SphereBvh<T> buildSphereBvh(const std::vector<glm::dvec3>& centres,
                             const std::vector<double>& radii, const BvhBuildOptions& options) {
     SphereBvh<T> bvh;
-    const std::vector<bool> out = keptOut<T>(centres, radii, options);
-    std::vector<Ref> refs;
-    refs.reserve(radii.size());
-    for (int i = 0; i < static_cast<int>(radii.size()); ++i) {
-        if (out[i])
-            bvh.direct.push_back(i);
-        else
-            refs.push_back({sphereBounds(centres[i], radii[i]), centres[i], i});
-    }
-    Builder<T>(std::move(refs), options, bvh).run();
+    const std::vector<char> out = keptOut<T>(centres, radii, options);
+    for (int i = 0; i < static_cast<int>(radii.size()); ++i)
+        if (out[i]) bvh.direct.push_back(i);
+    const int threads = options.threads > 0
+                            ? options.threads
+                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    RefArray<T> refs = makeRefs<T>(centres, radii, out, threads);
+    Subtree<T> tree = buildTree(refs, options, threads);
+    bvh.nodes = std::move(tree.nodes);
+    bvh.spheres = std::move(tree.spheres);
+    bvh.depth = tree.depth;
     return bvh;
 }
 

@@ -17,9 +17,13 @@
 
 #include <glm/vec3.hpp>
 
+#include "large_buffer_allocator.h"
+
 namespace whitted {
 
 // One node of the flattened binary tree: 32 bytes in float, 56 in double.
+// Left uninitialised when made: the build writes every field, and the pages
+// of a large tree are then first touched by the threads that fill them.
 template <typename T>
 struct BvhNode {
     T lo[3], hi[3];  // the box [lo, hi], holding every sphere below, rounded outward to T
@@ -27,14 +31,18 @@ struct BvhNode {
     // first + 1, and count == -1 - axis, the axis the children were split along
     // (the first child holds the lower centres). Leaf: its spheres are
     // SphereBvh::spheres[first, first + count), count >= 1.
-    std::int32_t first = 0;
-    std::int32_t count = 0;
+    std::int32_t first;
+    std::int32_t count;
 };
+
+// The tree's arrays: large ones come from mmap (large_buffer_allocator.h).
+template <typename T>
+using BvhArray = std::vector<T, LargeBufferAllocator<T>>;
 
 template <typename T>
 struct SphereBvh {
-    std::vector<BvhNode<T>> nodes;      // nodes[0] is the root; empty when no sphere is in the tree
-    std::vector<std::int32_t> spheres;  // the leaves' sphere indices, leaf after leaf
+    BvhArray<BvhNode<T>> nodes;      // nodes[0] is the root; empty when no sphere is in the tree
+    BvhArray<std::int32_t> spheres;  // the leaves' sphere indices, leaf after leaf
     // Spheres kept out of the tree and tested on every ray: huge ones such as a
     // floor (their box would swell every node above them, and the margin with
     // it), and any whose box T cannot hold. In index order.
@@ -50,6 +58,9 @@ struct BvhBuildOptions {
     // 199998 against a few units). At most maxDirect of them: each costs every ray.
     double hugeRatio = 4.0;
     int maxDirect = 8;
+    // Threads building the lower levels; 0: one per core. The tree is the same
+    // for any number.
+    int threads = 0;
 };
 
 // The deepest tree buildSphereBvh() makes: past depth 48 it splits at the

@@ -23,6 +23,8 @@ template <typename T>
 struct LargeBufferAllocator {
     using value_type = T;
     static constexpr std::size_t kLarge = std::size_t(1) << 20;
+    // Vector lanes (bvh_split.h) need more than new's 16 bytes; mmap gives pages.
+    static constexpr std::align_val_t kAlign{alignof(T)};
 
     LargeBufferAllocator() = default;
     template <typename U>
@@ -30,7 +32,8 @@ struct LargeBufferAllocator {
 
     T* allocate(std::size_t n) {
         const std::size_t bytes = n * sizeof(T);
-        if (bytes < kLarge) return static_cast<T*>(std::memset(::operator new(bytes), 0, bytes));
+        if (bytes < kLarge)
+            return static_cast<T*>(std::memset(::operator new(bytes, kAlign), 0, bytes));
         void* p =
             ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
         if (p == MAP_FAILED) throw std::bad_alloc();
@@ -39,7 +42,7 @@ struct LargeBufferAllocator {
 
     void deallocate(T* p, std::size_t n) {
         if (n * sizeof(T) < kLarge)
-            ::operator delete(p);
+            ::operator delete(p, kAlign);
         else
             ::munmap(p, n * sizeof(T));
     }

@@ -293,6 +293,35 @@ TEST(BvhBuild, EverySphereInOneLeafInsideNestedBoxes) {
     }
 }
 
+// The build splits its top levels and then its lower ranges on all threads;
+// the tree must not depend on how many there are (so a render's speed does not
+// either), and sphere indices past 65535 (which the build stores in two halves)
+// must come back whole.
+TEST(BvhBuild, SameTreeOnAnyNumberOfThreads) {
+    const Scene scene = randomScene(70000, Layout::Overlapping, testSeed(77), true);
+    std::vector<glm::dvec3> centres;
+    std::vector<double> radii;
+    for (const Sphere& sp : scene.spheres) {
+        centres.push_back(sp.center);
+        radii.push_back(sp.radius);
+    }
+    BvhBuildOptions one;
+    one.threads = 1;
+    const SphereBvh<float> alone = buildSphereBvh<float>(centres, radii, one);
+    expectWellFormed(centres, radii, alone);
+    for (int threads : {2, 3, 8}) {
+        BvhBuildOptions many;
+        many.threads = threads;
+        const SphereBvh<float> tree = buildSphereBvh<float>(centres, radii, many);
+        ASSERT_EQ(tree.nodes.size(), alone.nodes.size()) << threads << " threads";
+        for (std::size_t i = 0; i < tree.nodes.size(); ++i)
+            ASSERT_EQ(std::memcmp(&tree.nodes[i], &alone.nodes[i], sizeof(BvhNode<float>)), 0)
+                << "node " << i << ", " << threads << " threads";
+        EXPECT_EQ(tree.spheres, alone.spheres) << threads << " threads";
+        EXPECT_EQ(tree.direct, alone.direct) << threads << " threads";
+    }
+}
+
 TEST(BvhBuild, HugeFloorStaysOutOfTheTree) {
     std::vector<glm::dvec3> centres = {
         {1, 0.2, 2}, {-0.95, 0.31, 1.25}, {-0.175, 0.51, 7.5}, {0, -99999.5, 0}};

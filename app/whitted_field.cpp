@@ -27,7 +27,9 @@ int main(int argc, char** argv) {
     app.add_option("--half-width", field.halfWidth, "Ball centres have |x| <= this")
         ->capture_default_str()
         ->check(CLI::PositiveNumber);
-    app.add_option("--length", field.depth, "Ball centres have z from 1.5 to 1.5 + this")
+    app.add_option("--near", field.nearZ, "Nearest ball centres' z (the camera is at z = -1)")
+        ->capture_default_str();
+    app.add_option("--length", field.depth, "Ball centres have z from --near to --near + this")
         ->capture_default_str()
         ->check(CLI::PositiveNumber);
     try {

@@ -5,6 +5,7 @@
 // build time, render time and Mrays/s for each; not a test.
 //   build/bin/bench_scaling [--sizes N,N,...] [--width W] [--height H]
 //                           [--max-brute N] [--no-double] [--bvh] [--csv FILE]
+//                           [--images DIR]
 //   build/bin/bench_scaling WIDTH HEIGHT [MAX_BRUTE_N [N,N,...]]   (older form)
 // Defaults: 1280x720, N = 4,100,1000,10000,100000,1000000, brute force only up
 // to 10000 spheres (100k takes minutes). 1 spp, depth 5, 2 threads. Build
@@ -12,7 +13,9 @@
 // preparation and the build, Embree's too. "ours" is the tracer's own choice
 // of structure (brute force below kBvhCrossover spheres, the BVH above); with
 // --bvh, and in the older form, whose crossover figures in docs/performance.md
-// compare the two at every N, it is always the BVH.
+// compare the two at every N, it is always the BVH. --images writes our float
+// render and Embree's as DIR/field-N-ours.png and DIR/field-N-embree.png, to
+// look at what the PSNR column summarises.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -23,6 +26,7 @@
 
 #include "bvh.h"
 #include "image_error.h"
+#include "image_io.h"
 #include "kernel_dispatch.h"
 #include "renderer.h"
 #include "sphere_field.h"
@@ -45,6 +49,7 @@ struct Options {
     bool doubles = true;
     Acceleration ours = Acceleration::automatic;
     std::string csv;
+    std::string images;
 };
 
 std::vector<int> parseSizes(const char* p) {
@@ -86,6 +91,8 @@ Options parseOptions(int argc, char** argv) {
             o.height = std::atoi(value);
         else if (flag == "--max-brute")
             o.maxBrute = std::atoi(value);
+        else if (flag == "--images")
+            o.images = value;
         else if (flag == "--csv")
             o.csv = value;
         else {
@@ -151,6 +158,7 @@ struct Peer {
     double buildHighMs = -1, buildMediumMs = -1;
     Run run;
     double psnr = 0;  // of the peer's 8-bit sRGB image against ours, dB
+    Image image;
 };
 
 Peer embreeRun([[maybe_unused]] const Scene& scene, [[maybe_unused]] const Image& ours) {
@@ -162,6 +170,7 @@ Peer embreeRun([[maybe_unused]] const Scene& scene, [[maybe_unused]] const Image
     peer.run.ms = e.renderMs;
     peer.run.mrays = double(e.rays.total()) / e.renderMs / 1e3;
     peer.psnr = measureError(e.image, ours).psnrSrgb8;
+    peer.image = std::move(e.image);
 #endif
     return peer;
 }
@@ -211,6 +220,14 @@ void writeCsv(std::FILE* f, const Row& r) {
     std::fflush(f);
 }
 
+void saveImages(const std::string& dir, const Scene& scene, const Row& row) {
+    const std::string stem = dir + "/field-" + std::to_string(row.n);
+    const ImageMetadata metadata =
+        makeImageMetadata(scene.render, row.ours.ms / 1e3, "bench_scaling");
+    writeImage(row.ours.image, stem + "-ours.png", metadata);
+    if (row.embree.run.ms >= 0) writeImage(row.embree.image, stem + "-embree.png", metadata);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -250,6 +267,7 @@ int main(int argc, char** argv) {
         row.embree = embreeRun(scene, row.ours.image);
         printRow(row);
         if (csv) writeCsv(csv, row);
+        if (!o.images.empty()) saveImages(o.images, scene, row);
     }
     if (csv) std::fclose(csv);
     return 0;

@@ -196,29 +196,33 @@ class Tracer {
         return hit;
     }
 
-    float transmittance(const vec3& p, const vec3& l, float distance, int origin, bool into) {
+    // The huge spheres' share of a shadow ray's transmittance, by our rules:
+    // each sphere crossed within (0, distance) once; the ray's own sphere only
+    // when it goes into it, by its far side.
+    float bigTransmittance(const vec3& p, const vec3& l, float distance, int origin,
+                           bool into) const {
+        float s = 1.0f;
         for (const Big& b : s_.big) {
-            if (b.sphere == origin && !into) continue;
+            const bool own = b.sphere == origin;
+            if (own && !into) continue;
             const auto roots = bigRoots(b, glm::dvec3(p), glm::dvec3(l));
             if (!roots) continue;
-            const bool crosses = (roots->first > 0 && roots->first < distance) ||
-                                 (roots->second > 0 && roots->second < distance);
-            if (crosses && (s_.transparency[b.sphere] == 0.0f)) return 0.0f;
+            const auto within = [distance](double t) { return t > 0 && t < distance; };
+            if (own ? within(roots->second) : within(roots->first) || within(roots->second))
+                s *= s_.transparency[std::size_t(b.sphere)];
         }
+        return s;
+    }
+
+    float transmittance(const vec3& p, const vec3& l, float distance, int origin, bool into) {
+        const float big = bigTransmittance(p, l, distance, origin, into);
+        if (big == 0.0f) return 0.0f;
         seen_.clear();
         ShadowContext c{{}, &s_, origin, into, 1.0f, &seen_};
         rtcInitIntersectContext(&c.context);
         RTCRay ray{p.x, p.y, p.z, kEmbreeRayOffset, l.x, l.y, l.z, 0.0f, distance, ~0u, 0, 0};
         rtcOccluded1(scene_, &c.context, &ray);
-        float s = c.transmittance;
-        for (const Big& b : s_.big) {  // transparent huge spheres: none in a field
-            if (b.sphere == origin && !into) continue;
-            const auto roots = bigRoots(b, glm::dvec3(p), glm::dvec3(l));
-            if (roots && ((roots->first > 0 && roots->first < distance) ||
-                          (roots->second > 0 && roots->second < distance)))
-                s *= s_.transparency[b.sphere];
-        }
-        return s;
+        return c.transmittance * big;
     }
 
     vec3 diffuseAt(const Mat& m, const glm::dvec3& p) const {

@@ -1,53 +1,109 @@
 // Scene size against render time (issue 12): a field of N small matte, mirror
-// and glass spheres on the seed's checker floor, rendered by brute force and
-// through the sphere BVH in one run. Prints build time, render time and
-// Mrays/s for each; not a test.
-//   build/bin/bench_scaling [WIDTH HEIGHT [MAX_BRUTE_N [N,N,...]]]
-// (default 320 180 10000 4,100,1000,10000,100000). Brute force is skipped
-// above MAX_BRUTE_N spheres (100k takes minutes). Build times are the best of
-// three builds alone; render times include scene preparation (and the build).
+// and glass spheres on the seed's checker floor (app/field/sphere_field.h),
+// rendered in one run by our tracer in float and double, by brute force, and,
+// when built with Embree 3, by the Embree tracer of embree_tracer.h. Prints
+// build time, render time and Mrays/s for each; not a test.
+//   build/bin/bench_scaling [--sizes N,N,...] [--width W] [--height H]
+//                           [--max-brute N] [--no-double] [--bvh] [--csv FILE]
+//                           [--images DIR]
+//   build/bin/bench_scaling WIDTH HEIGHT [MAX_BRUTE_N [N,N,...]]   (older form)
+// Defaults: 1280x720, N = 4,100,1000,10000,100000,1000000, brute force only up
+// to 10000 spheres (100k takes minutes). 1 spp, depth 5, 2 threads. Build
+// times are the best of three builds alone; render times include scene
+// preparation and the build, Embree's too. "ours" is the tracer's own choice
+// of structure (brute force below kBvhCrossover spheres, the BVH above); with
+// --bvh, and in the older form, whose crossover figures in docs/performance.md
+// compare the two at every N, it is always the BVH. --images writes our float
+// render and Embree's as DIR/field-N-ours.png and DIR/field-N-embree.png, to
+// look at what the PSNR column summarises.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <random>
+#include <cstring>
 #include <string>
 #include <vector>
 
 #include "bvh.h"
+#include "image_error.h"
+#include "image_io.h"
 #include "kernel_dispatch.h"
 #include "renderer.h"
-#include "scene_io.h"
+#include "sphere_field.h"
+#ifdef WHITTED_HAVE_EMBREE
+#include <embree3/rtcore_config.h>
+
+#include "embree_tracer.h"
+#endif
 
 namespace {
 
 using namespace whitted;
 
-// The seed's camera, light and floor; N balls resting on the floor in front
-// of the camera (fixed seed: every run the same scene).
-Scene field(int count) {
-    Scene s = loadScene(WHITTED_SCENES_DIR "/seed.json");
-    const Sphere floor = s.spheres.back();
-    s.spheres.clear();
-    Material mirror{"mirror", {0.1, 0.1, 0.1}, 1, 60, 0.8, 0, 1.5, {}};
-    Material glass{"glass", {0, 0, 0}, 1, 200, 0.1, 0.9, 1.5, {}};
-    s.materials.push_back(mirror);
-    s.materials.push_back(glass);
-    std::mt19937 rng(1);
-    std::uniform_real_distribution<double> x(-50, 50), z(1.5, 100), r(0.05, 0.3);
-    const char* materials[] = {"blue", "purple", "white", "mirror", "glass"};
-    for (int i = 0; i < count; ++i) {
-        const double radius = r(rng);
-        s.spheres.push_back({"ball " + std::to_string(i),
-                             {x(rng), -0.5 + radius, z(rng)},
-                             radius,
-                             materials[i % 5]});
+constexpr int kThreads = 2;
+
+struct Options {
+    int width = 1280, height = 720;
+    int maxBrute = 10000;
+    std::vector<int> sizes = {4, 100, 1000, 10000, 100000, 1000000};
+    bool doubles = true;
+    Acceleration ours = Acceleration::automatic;
+    std::string csv;
+    std::string images;
+};
+
+std::vector<int> parseSizes(const char* p) {
+    std::vector<int> sizes;
+    while (*p) {
+        char* end;
+        sizes.push_back(static_cast<int>(std::strtol(p, &end, 10)));
+        p = *end ? end + 1 : end;
     }
-    s.spheres.push_back(floor);
-    s.render.maxDepth = 5;
-    s.render.samplesPerPixel = 1;
-    s.render.precision = Precision::Float;
-    return s;
+    return sizes;
+}
+
+Options parseOptions(int argc, char** argv) {
+    Options o;
+    if (argc > 2 && argv[1][0] != '-') {  // WIDTH HEIGHT [MAX_BRUTE_N [N,N,...]]
+        o.width = std::atoi(argv[1]);
+        o.height = std::atoi(argv[2]);
+        if (argc > 3) o.maxBrute = std::atoi(argv[3]);
+        if (argc > 4) o.sizes = parseSizes(argv[4]);
+        o.ours = Acceleration::bvh;
+        return o;
+    }
+    for (int i = 1; i < argc; ++i) {
+        const std::string flag = argv[i];
+        const char* value = i + 1 < argc ? argv[i + 1] : "";
+        if (flag == "--no-double") {
+            o.doubles = false;
+            continue;
+        }
+        if (flag == "--bvh") {
+            o.ours = Acceleration::bvh;
+            continue;
+        }
+        if (flag == "--sizes")
+            o.sizes = parseSizes(value);
+        else if (flag == "--width")
+            o.width = std::atoi(value);
+        else if (flag == "--height")
+            o.height = std::atoi(value);
+        else if (flag == "--max-brute")
+            o.maxBrute = std::atoi(value);
+        else if (flag == "--images")
+            o.images = value;
+        else if (flag == "--csv")
+            o.csv = value;
+        else {
+            std::fprintf(stderr,
+                         "bench_scaling: unknown option %s (see the source's top comment)\n",
+                         argv[i]);
+            std::exit(2);
+        }
+        ++i;
+    }
+    return o;
 }
 
 double msSince(std::chrono::steady_clock::time_point start) {
@@ -56,65 +112,163 @@ double msSince(std::chrono::steady_clock::time_point start) {
 }
 
 struct Run {
-    double ms = 0;
+    double ms = -1;  // -1: not run
     double mrays = 0;
+    Image image;
 };
 
-Run renderWith(const Scene& scene, Acceleration choice) {
+Run renderWith(Scene scene, Acceleration choice, Precision precision) {
+    scene.render.precision = precision;
     useAcceleration(choice);
     RenderOptions options;
-    options.threads = 2;
+    options.threads = kThreads;
     options.progressive = false;
-    const RenderResult result = render(scene, options);
+    RenderResult result = render(scene, options);
     useAcceleration(Acceleration::automatic);
-    return {result.seconds * 1e3, double(result.rays.total()) / result.seconds / 1e6};
+    return {result.seconds * 1e3, double(result.rays.total()) / result.seconds / 1e6,
+            std::move(result.image)};
+}
+
+struct Tree {
+    double buildMs = 1e300;
+    double bytesPerSphere = 0;
+};
+
+// Our float tree alone: the best of three builds, and its nodes and index arrays.
+Tree measureTree(const Scene& scene) {
+    std::vector<glm::dvec3> centres;
+    std::vector<double> radii;
+    for (const Sphere& sp : scene.spheres) {
+        centres.push_back(sp.center - scene.camera.position);
+        radii.push_back(sp.radius);
+    }
+    Tree tree;
+    for (int i = 0; i < 3; ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        const SphereBvh<float> bvh = buildSphereBvh<float>(centres, radii);
+        tree.buildMs = std::min(tree.buildMs, msSince(start));
+        const std::size_t bytes = bvh.nodes.size() * sizeof(BvhNode<float>) +
+                                  (bvh.spheres.size() + bvh.direct.size()) * sizeof(std::int32_t);
+        tree.bytesPerSphere = double(bytes) / double(scene.spheres.size());
+    }
+    return tree;
+}
+
+struct Peer {
+    double buildHighMs = -1, buildMediumMs = -1;
+    Run run;
+    double psnr = 0;  // of the peer's 8-bit sRGB image against ours, dB
+    Image image;
+};
+
+Peer embreeRun([[maybe_unused]] const Scene& scene, [[maybe_unused]] const Image& ours) {
+    Peer peer;
+#ifdef WHITTED_HAVE_EMBREE
+    EmbreeRun e = renderWithEmbree(scene, kThreads);
+    peer.buildHighMs = e.buildHighMs;
+    peer.buildMediumMs = e.buildMediumMs;
+    peer.run.ms = e.renderMs;
+    peer.run.mrays = double(e.rays.total()) / e.renderMs / 1e3;
+    peer.psnr = measureError(e.image, ours).psnrSrgb8;
+    peer.image = std::move(e.image);
+#endif
+    return peer;
+}
+
+// "-" for a figure that was not measured.
+std::string cell(double value, const char* format, bool measured) {
+    if (!measured) return "-";
+    char text[32];
+    std::snprintf(text, sizeof text, format, value);
+    return text;
+}
+
+struct Row {
+    int n;
+    Tree tree;
+    Run ours, doubles, brute;
+    Peer embree;
+};
+
+void printHeader() {
+    std::printf("%8s %9s %7s | %10s %8s %10s %8s %10s | %9s %9s %10s %8s %7s %6s\n", "N",
+                "build ms", "B/sph", "float ms", "Mr/s", "double ms", "dbl/flt", "brute ms",
+                "E high ms", "E med ms", "Embree ms", "E Mr/s", "ours/E", "PSNR");
+}
+
+void printRow(const Row& r) {
+    const bool e = r.embree.run.ms >= 0, d = r.doubles.ms >= 0;
+    std::printf(
+        "%8d %9.2f %7.1f | %10.1f %8.2f %10s %8s %10s | %9s %9s %10s %8s %7s %6s\n", r.n,
+        r.tree.buildMs, r.tree.bytesPerSphere, r.ours.ms, r.ours.mrays,
+        cell(r.doubles.ms, "%.1f", d).c_str(), cell(r.doubles.ms / r.ours.ms, "%.2f", d).c_str(),
+        cell(r.brute.ms, "%.1f", r.brute.ms >= 0).c_str(),
+        cell(r.embree.buildHighMs, "%.2f", e).c_str(),
+        cell(r.embree.buildMediumMs, "%.2f", e).c_str(), cell(r.embree.run.ms, "%.1f", e).c_str(),
+        cell(r.embree.run.mrays, "%.2f", e).c_str(),
+        cell(r.ours.ms / r.embree.run.ms, "%.2f", e).c_str(),
+        cell(r.embree.psnr, "%.1f", e).c_str());
+    std::fflush(stdout);
+}
+
+void writeCsv(std::FILE* f, const Row& r) {
+    std::fprintf(f, "%d,%.3f,%.2f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.2f\n", r.n,
+                 r.tree.buildMs, r.tree.bytesPerSphere, r.ours.ms, r.ours.mrays, r.doubles.ms,
+                 r.brute.ms, r.embree.buildHighMs, r.embree.buildMediumMs, r.embree.run.ms,
+                 r.embree.run.mrays, r.embree.run.ms >= 0 ? r.ours.ms / r.embree.run.ms : -1.0,
+                 r.embree.psnr);
+    std::fflush(f);
+}
+
+void saveImages(const std::string& dir, const Scene& scene, const Row& row) {
+    const std::string stem = dir + "/field-" + std::to_string(row.n);
+    const ImageMetadata metadata =
+        makeImageMetadata(scene.render, row.ours.ms / 1e3, "bench_scaling");
+    writeImage(row.ours.image, stem + "-ours.png", metadata);
+    if (row.embree.run.ms >= 0) writeImage(row.embree.image, stem + "-embree.png", metadata);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    const int width = argc > 2 ? std::atoi(argv[1]) : 320;
-    const int height = argc > 2 ? std::atoi(argv[2]) : 180;
-    const int maxBrute = argc > 3 ? std::atoi(argv[3]) : 10000;
-    std::vector<int> counts = {4, 100, 1000, 10000, 100000};
-    if (argc > 4) {
-        counts.clear();
-        for (const char* p = argv[4]; *p;) {
-            char* end;
-            counts.push_back(static_cast<int>(std::strtol(p, &end, 10)));
-            p = *end ? end + 1 : end;
-        }
+    const Options o = parseOptions(argc, argv);
+    std::FILE* csv = o.csv.empty() ? nullptr : std::fopen(o.csv.c_str(), "w");
+    if (!o.csv.empty() && !csv) {
+        std::perror(o.csv.c_str());
+        return 1;
     }
-    std::printf("field of N spheres + floor, %dx%d, 1 spp, depth 5, float, 2 threads, kernel %s\n",
-                width, height, activeKernelName().c_str());
-    std::printf("%8s %10s %12s %12s %12s %12s %8s\n", "N", "build ms", "brute ms", "brute Mr/s",
-                "bvh ms", "bvh Mr/s", "speedup");
-    for (const int n : counts) {
-        Scene scene = field(n);
-        scene.render.width = width;
-        scene.render.height = height;
-        std::vector<glm::dvec3> centres;
-        std::vector<double> radii;
-        for (const Sphere& sp : scene.spheres) {
-            centres.push_back(sp.center - scene.camera.position);
-            radii.push_back(sp.radius);
-        }
-        double build = 1e300;
-        for (int i = 0; i < 3; ++i) {
-            const auto start = std::chrono::steady_clock::now();
-            const SphereBvh<float> bvh = buildSphereBvh<float>(centres, radii);
-            build = std::min(build, msSince(start));
-        }
-        const Run tree = renderWith(scene, Acceleration::bvh);
-        if (n <= maxBrute) {
-            const Run brute = renderWith(scene, Acceleration::bruteForce);
-            std::printf("%8d %10.2f %12.1f %12.2f %12.1f %12.2f %7.1fx\n", n, build, brute.ms,
-                        brute.mrays, tree.ms, tree.mrays, brute.ms / tree.ms);
-        } else {
-            std::printf("%8d %10.2f %12s %12s %12.1f %12.2f %8s\n", n, build, "-", "-", tree.ms,
-                        tree.mrays, "-");
-        }
-        std::fflush(stdout);
+    if (csv)
+        std::fprintf(csv,
+                     "n,build_ms,bytes_per_sphere,float_ms,float_mrays,double_ms,brute_ms,"
+                     "embree_build_high_ms,embree_build_medium_ms,embree_ms,embree_mrays,"
+                     "ours_over_embree,psnr_db\n");
+    std::printf("field of N spheres + floor, %dx%d, 1 spp, depth 5, %d threads, kernel %s\n",
+                o.width, o.height, kThreads, activeKernelName().c_str());
+#ifdef WHITTED_HAVE_EMBREE
+    std::printf("Embree %s: spheres as sphere points, floor in double; 16-wide camera packets\n",
+                RTC_VERSION_STRING);
+#else
+    std::printf("Embree: not installed (apt-get install libembree-dev, then reconfigure)\n");
+#endif
+    std::printf("ours: %s; render ms include preparation and build; -1 in the CSV: not measured\n",
+                o.ours == Acceleration::bvh ? "always the BVH" : "the tracer's own choice");
+    printHeader();
+    for (const int n : o.sizes) {
+        FieldOptions field;
+        field.count = n;
+        Scene scene = sphereField(field);
+        scene.render.width = o.width;
+        scene.render.height = o.height;
+        Row row{n, measureTree(scene), {}, {}, {}, {}};
+        row.ours = renderWith(scene, o.ours, Precision::Float);
+        if (o.doubles) row.doubles = renderWith(scene, o.ours, Precision::Double);
+        if (n <= o.maxBrute)
+            row.brute = renderWith(scene, Acceleration::bruteForce, Precision::Float);
+        row.embree = embreeRun(scene, row.ours.image);
+        printRow(row);
+        if (csv) writeCsv(csv, row);
+        if (!o.images.empty()) saveImages(o.images, scene, row);
     }
+    if (csv) std::fclose(csv);
     return 0;
 }

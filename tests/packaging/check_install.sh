@@ -18,7 +18,7 @@ expect() {
     missing=1
   fi
 }
-for program in whitted whitted-render whitted-numerics whitted-tradeoff; do
+for program in whitted whitted-render whitted-numerics whitted-tradeoff whitted-field; do
   expect "bin/$program"
 done
 expect "share/applications/$app.desktop"
@@ -30,6 +30,7 @@ for size in 16 32 48 64 128 256; do
 done
 expect share/whitted/scenes/seed.json
 expect share/whitted/scenes/glass.json
+expect share/whitted/scenes/field.json
 expect share/whitted/scenes/extremes/README.md
 ((missing == 0)) || exit 1
 

@@ -7,10 +7,12 @@
 #include <QAction>
 #include <QHBoxLayout>
 #include <QItemSelectionModel>
+#include <QLineEdit>
 #include <QListView>
 #include <QMenu>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QSortFilterProxyModel>
 #include <QTabWidget>
 #include <QVBoxLayout>
 
@@ -96,9 +98,19 @@ void ScenePanel::buildTab(ItemKind kind, const QString& title, const QString& li
     auto* page = new QWidget;
     page->setObjectName(listName + QStringLiteral("Page"));
     t.model = new SceneListModel(doc_, kind, this);
+    t.shown = new QSortFilterProxyModel(this);
+    t.shown->setSourceModel(t.model);
+    t.shown->setFilterCaseSensitivity(Qt::CaseInsensitive);
+    t.filter = new QLineEdit(page);
+    t.filter->setObjectName(listName + QStringLiteral("Filter"));
+    t.filter->setPlaceholderText(tr("Filter by name"));
+    t.filter->setClearButtonEnabled(true);
+    t.filter->setToolTip(tr("Show only the %1s whose names contain this text").arg(kindNoun(kind)));
+    connect(t.filter, &QLineEdit::textChanged, this,
+            [this, kind](const QString& text) { setFilter(kind, text); });
     t.view = new QListView(page);
     t.view->setObjectName(listName);
-    t.view->setModel(t.model);
+    t.view->setModel(t.shown);
     // Uniform sizes let the view lay out 100,000 rows without measuring each one.
     t.view->setUniformItemSizes(true);
     t.view->setSelectionMode(QAbstractItemView::SingleSelection);
@@ -134,6 +146,7 @@ void ScenePanel::buildTab(ItemKind kind, const QString& title, const QString& li
     for (QPushButton* b : {add, t.duplicate, t.remove, t.rename}) buttons->addWidget(b);
     auto* layout = new QVBoxLayout(page);
     layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(t.filter);
     layout->addWidget(t.view);
     layout->addLayout(buttons);
     tabWidget_->addTab(page, title);
@@ -156,23 +169,44 @@ int ScenePanel::currentIndex() const {
 }
 
 int ScenePanel::selectedRow(ItemKind kind) const {
-    const QModelIndexList rows = tab(kind).view->selectionModel()->selectedRows();
-    return rows.isEmpty() ? -1 : rows.first().row();
+    const Tab& t = tab(kind);
+    const QModelIndexList rows = t.view->selectionModel()->selectedRows();
+    return rows.isEmpty() ? -1 : t.shown->mapToSource(rows.first()).row();
 }
 
+// A selected item the filter hides is deselected (the buttons and the Edit
+// menu act only on what the list shows); one it keeps stays selected, in view.
+void ScenePanel::setFilter(ItemKind kind, const QString& text) {
+    Tab& t = tab(kind);
+    const int selected = t.selectedRow;
+    t.shown->setFilterFixedString(text);
+    selectRow(kind, selected);
+}
+
+// The row in the list as shown, or -1 when the filter hides it.
+int ScenePanel::shownRow(ItemKind kind, int row) const {
+    const Tab& t = tab(kind);
+    return row < 0 ? -1 : t.shown->mapFromSource(t.model->index(row)).row();
+}
+
+// What is selected from elsewhere (a click in the picture, a new item) must be
+// seen: a filter that hides it is cleared.
 void ScenePanel::select(ItemKind kind, int index) {
     tabWidget_->setCurrentIndex(static_cast<int>(kind));
+    Tab& t = tab(kind);
+    if (index >= 0 && index < t.model->rowCount() && shownRow(kind, index) < 0) t.filter->clear();
     selectRow(kind, index);
 }
 
 void ScenePanel::selectRow(ItemKind kind, int row) {
     Tab& t = tab(kind);
-    if (row < 0 || row >= t.model->rowCount()) {
+    const int shown = row < t.model->rowCount() ? shownRow(kind, row) : -1;
+    if (shown < 0) {
         t.view->selectionModel()->clear();
         onViewSelectionChanged(kind);  // clear() does not always report an empty selection
         return;
     }
-    const QModelIndex index = t.model->index(row);
+    const QModelIndex index = t.shown->index(shown, 0);
     t.view->selectionModel()->setCurrentIndex(index, QItemSelectionModel::ClearAndSelect);
     t.view->scrollTo(index);
 }
@@ -343,6 +377,7 @@ void ScenePanel::duplicateItem(ItemKind kind) {
 void ScenePanel::deleteItem(ItemKind kind) {
     const int row = selectedRow(kind);
     if (row < 0) return;
+    const int shownBefore = shownRow(kind, row);
     const Scene& scene = doc_->scene();
     const QString name = itemName(scene, kind, row);
     if (kind == ItemKind::Material) {
@@ -386,8 +421,12 @@ void ScenePanel::deleteItem(ItemKind kind) {
         showRefusal(this, error);
         return;
     }
-    // The next item takes the deleted one's place, so repeated Delete walks the list.
-    select(kind, std::min(row, itemCount(doc_->scene(), kind) - 1));
+    // The next item shown takes the deleted one's place, so repeated Delete
+    // walks the list (the filtered list, when there is a filter).
+    Tab& t = tab(kind);
+    const int next = std::min(shownBefore, t.shown->rowCount() - 1);
+    tabWidget_->setCurrentIndex(static_cast<int>(kind));
+    selectRow(kind, next < 0 ? -1 : t.shown->mapToSource(t.shown->index(next, 0)).row());
 }
 
 void ScenePanel::renameItem(ItemKind kind) {
@@ -395,7 +434,7 @@ void ScenePanel::renameItem(ItemKind kind) {
     if (row < 0) return;
     Tab& t = tab(kind);
     tabWidget_->setCurrentIndex(static_cast<int>(kind));
-    const QModelIndex index = t.model->index(row);
+    const QModelIndex index = t.shown->index(shownRow(kind, row), 0);
     t.view->scrollTo(index);
     t.view->setFocus();
     t.view->edit(index);

@@ -9,7 +9,9 @@
 #include "scene_document.h"
 
 class QAction;
+class QLineEdit;
 class QListView;
+class QSortFilterProxyModel;
 class QMenu;
 class QPushButton;
 class QTabWidget;
@@ -46,6 +48,11 @@ class ScenePanel : public QWidget {
   private:
     struct Tab {
         SceneListModel* model = nullptr;
+        // What the view shows: the model's rows whose names contain the
+        // filter's text. Rows in this panel's interface are always the
+        // model's (the scene's indices); only the view sees filtered ones.
+        QSortFilterProxyModel* shown = nullptr;
+        QLineEdit* filter = nullptr;
         QListView* view = nullptr;
         QPushButton* duplicate = nullptr;
         QPushButton* remove = nullptr;
@@ -60,6 +67,8 @@ class ScenePanel : public QWidget {
     int selectedRow(ItemKind kind) const;
     void buildTab(ItemKind kind, const QString& title, const QString& listName);
     void selectRow(ItemKind kind, int row);
+    void setFilter(ItemKind kind, const QString& text);
+    int shownRow(ItemKind kind, int row) const;
     void onViewSelectionChanged(ItemKind kind);
     void restoreSelection(ItemKind kind);
     void updateEnabled();

@@ -162,6 +162,36 @@ TEST_F(PropertyPanelsTest, RenameToTakenName_RefusedInUsersWords_SceneUnchanged)
     box->close();
 }
 
+// Issue 12: the scene panel filters its list by name; what the buttons do
+// applies to the item the filtered list shows, and an item picked elsewhere
+// (the picture) that the filter hides is shown again.
+TEST_F(PropertyPanelsTest, SceneFilter_ShowsMatchingNames_DeleteRemovesTheShownOne) {
+    window->scenePanel()->select(ItemKind::Sphere, kBlueBall);
+    auto* filter = child<QLineEdit>("sphereListFilter");
+    auto* list = child<QListView>("sphereList");
+    ASSERT_TRUE(filter && list);
+    QTest::keyClicks(filter, QStringLiteral("PURP"));
+    ASSERT_EQ(list->model()->rowCount(), 1);
+    EXPECT_EQ(list->model()->index(0, 0).data().toString(), QStringLiteral("purple ball"));
+    EXPECT_EQ(window->scenePanel()->currentIndex(), -1)
+        << "the filter hides the selected blue ball: nothing stays selected";
+    list->selectionModel()->setCurrentIndex(list->model()->index(0, 0),
+                                            QItemSelectionModel::ClearAndSelect);
+    EXPECT_EQ(window->scenePanel()->currentIndex(), kPurpleBall);
+    window->scenePanel()->deleteAction()->trigger();
+    std::vector<std::string> names;
+    for (const Sphere& sp : doc->scene().spheres) names.push_back(sp.name);
+    EXPECT_EQ(names, (std::vector<std::string>{"blue ball", "white ball", "floor"}));
+    EXPECT_EQ(list->model()->rowCount(), 0);
+
+    QTest::keyClicks(filter, QStringLiteral("x"));
+    window->scenePanel()->select(ItemKind::Sphere, 1);  // the white ball, as a click in the view
+    EXPECT_TRUE(filter->text().isEmpty());
+    EXPECT_EQ(list->model()->rowCount(), 3);
+    EXPECT_EQ(window->scenePanel()->currentIndex(), 1);
+    EXPECT_EQ(list->currentIndex().data().toString(), QStringLiteral("white ball"));
+}
+
 // Item 11: every field an edit can break reads as a sentence about a named item.
 TEST(EditMessages, EveryValidationProblem_NamesTheItemAndTheFieldLabel) {
     const Scene seed = loadScene(kSeedScene);

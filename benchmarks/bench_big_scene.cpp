@@ -69,11 +69,14 @@ int main(int argc, char** argv) {
     window.show();
     QElapsedTimer first;
     double preview = -1, fullPass = -1;
+    int completeFrames = 0, previewFrames = 0;
     QObject::connect(&window, &whitted::ui::MainWindow::frameShown,
                      [&](const whitted::ui::RenderFrame& f) {
                          const double ms = double(first.nsecsElapsed()) / 1e6;
                          if (f.preview && preview < 0) preview = ms;
                          if (!f.preview && f.passComplete && fullPass < 0) fullPass = ms;
+                         completeFrames += f.renderComplete;
+                         previewFrames += f.preview;
                      });
     t.restart();
     first.start();
@@ -92,6 +95,25 @@ int main(int argc, char** argv) {
     std::printf("first preview frame:  %7.0f ms after opening (%s)\n", preview,
                 preview < 0 ? "not within 3 s" : "shown");
     std::printf("longest event-loop turn while rendering: %.0f ms\n", worstTurn);
+
+    // An edit as the user makes one, once the last render is complete: from
+    // the edit to its first preview frame on screen.
+    std::vector<double> editToPreview;
+    for (int i = 0; i < 12; ++i) {
+        const int complete = completeFrames;
+        while (completeFrames == complete && spell.elapsed() < 120000)
+            QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+        const int previews = previewFrames;
+        t.restart();
+        window.document()->edit("move",
+                                [i](Scene& s) { s.spheres[7].center.y += i % 2 ? 0.1 : -0.1; });
+        while (previewFrames == previews && spell.elapsed() < 120000)
+            QCoreApplication::processEvents(QEventLoop::AllEvents, 1);
+        editToPreview.push_back(double(t.nsecsElapsed()) / 1e6);
+    }
+    std::printf("edit to its first preview on screen: median %.0f ms, slowest %.0f ms over 12\n",
+                median(editToPreview),
+                *std::max_element(editToPreview.begin(), editToPreview.end()));
 
     const long rssBefore = maxRssKb();
     std::vector<double> edits;

@@ -210,7 +210,7 @@ int resolveThreadCount(int requested) {
 
 RenderResult render(const Scene& scene, const RenderOptions& options, const TileCallback& onTile,
                     const StopPredicate& shouldStop) {
-    if (auto problem = validateScene(scene))
+    if (auto problem = options.sceneValidated ? std::nullopt : validateScene(scene))
         throw std::invalid_argument(problem->jsonPath + ": " + problem->reason);
     // Here, not in a worker: a WHITTED_KERNEL this CPU cannot run throws to the caller.
     activeKernel();

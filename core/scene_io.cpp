@@ -332,6 +332,36 @@ std::optional<SceneProblem> checkMaterial(const Material& m, const std::string& 
     return std::nullopt;
 }
 
+std::optional<SceneProblem> checkLight(const Light& l, size_t i) {
+    const std::string path = indexed("lights", i);
+    if (auto p = checkVec(l.position, path + ".position", false)) return p;
+    if (auto p = checkVec(l.color, path + ".color", true)) return p;
+    return checkAtLeast(l.intensity, 0, path + ".intensity", false);
+}
+
+bool isFinite(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+std::optional<SceneProblem> checkSphere(const Scene& scene, size_t i) {
+    const Sphere& s = scene.spheres[i];
+    const std::string path = indexed("spheres", i);
+    if (auto p = checkVec(s.center, path + ".center", false)) return p;
+    if (auto p = checkAtLeast(s.radius, 0, path + ".radius", true)) return p;
+    if (findMaterial(scene, s.material) < 0)
+        return SceneProblem{path + ".material", "no material named " + quoted(s.material)};
+    return std::nullopt;
+}
+
+// Same length and the same name at every index.
+template <typename T>
+bool sameNames(const std::vector<T>& a, const std::vector<T>& b) {
+    if (a.size() != b.size()) return false;
+    for (size_t i = 0; i < a.size(); ++i)
+        if (a[i].name != b[i].name) return false;
+    return true;
+}
+
 }  // namespace
 
 std::optional<SceneProblem> validateScene(const Scene& scene) {
@@ -343,31 +373,44 @@ std::optional<SceneProblem> validateScene(const Scene& scene) {
     for (size_t i = 0; i < scene.materials.size(); ++i)
         if (auto p = checkMaterial(scene.materials[i], indexed("materials", i))) return p;
     if (auto p = checkNames(scene.lights, "lights")) return p;
-    for (size_t i = 0; i < scene.lights.size(); ++i) {
-        const Light& l = scene.lights[i];
-        const std::string path = indexed("lights", i);
-        if (auto p = checkVec(l.position, path + ".position", false)) return p;
-        if (auto p = checkVec(l.color, path + ".color", true)) return p;
-        if (auto p = checkAtLeast(l.intensity, 0, path + ".intensity", false)) return p;
-    }
+    for (size_t i = 0; i < scene.lights.size(); ++i)
+        if (auto p = checkLight(scene.lights[i], i)) return p;
     if (auto p = checkNames(scene.spheres, "spheres")) return p;
     std::unordered_set<std::string_view> materialNames;
     for (const Material& m : scene.materials) materialNames.insert(m.name);
     for (size_t i = 0; i < scene.spheres.size(); ++i) {
         const Sphere& s = scene.spheres[i];
-        // The common case without building a path string: the editor checks
-        // every sphere of the scene on every edit.
-        const bool finiteCentre =
-            std::isfinite(s.center.x) && std::isfinite(s.center.y) && std::isfinite(s.center.z);
-        if (finiteCentre && std::isfinite(s.radius) && s.radius > 0 &&
+        // The common case without building a path string: a file of a million
+        // spheres checks every one.
+        if (isFinite(s.center) && std::isfinite(s.radius) && s.radius > 0 &&
             materialNames.count(s.material))
             continue;
-        const std::string path = indexed("spheres", i);
-        if (auto p = checkVec(s.center, path + ".center", false)) return p;
-        if (auto p = checkAtLeast(s.radius, 0, path + ".radius", true)) return p;
-        if (findMaterial(scene, s.material) < 0)
-            return SceneProblem{path + ".material", "no material named " + quoted(s.material)};
+        if (auto p = checkSphere(scene, i)) return p;
     }
+    return std::nullopt;
+}
+
+// Names are the only rule between items (a sphere's material is looked up by
+// name among the materials); with every list's names unchanged and `before`
+// valid, a changed value can break only its own item's rules, checked here in
+// validateScene's order, so the first problem is the one it would report.
+std::optional<SceneProblem> validateEdit(const Scene& before, const Scene& after) {
+    if (!sameNames(before.materials, after.materials) || !sameNames(before.lights, after.lights) ||
+        !sameNames(before.spheres, after.spheres))
+        return validateScene(after);
+    if (auto p = checkCamera(after.camera)) return p;
+    if (auto p = checkRender(after.render)) return p;
+    if (auto p = checkVec(after.background, "background", true)) return p;
+    if (auto p = checkVec(after.ambient, "ambient", true)) return p;
+    for (size_t i = 0; i < after.materials.size(); ++i)
+        if (!(before.materials[i] == after.materials[i]))
+            if (auto p = checkMaterial(after.materials[i], indexed("materials", i))) return p;
+    for (size_t i = 0; i < after.lights.size(); ++i)
+        if (!(before.lights[i] == after.lights[i]))
+            if (auto p = checkLight(after.lights[i], i)) return p;
+    for (size_t i = 0; i < after.spheres.size(); ++i)
+        if (!(before.spheres[i] == after.spheres[i]))
+            if (auto p = checkSphere(after, i)) return p;
     return std::nullopt;
 }
 

@@ -147,7 +147,9 @@ void RenderWorker::renderOne(const Scene& requested, quint64 generation) {
             lastSent = Clock::now();
         }
     };
-    RenderResult result = render(scene, RenderOptions{}, onTile, shouldStop);
+    RenderOptions options;
+    options.sceneValidated = true;  // request() asks for a valid scene
+    RenderResult result = render(scene, options, onTile, shouldStop);
     if (!result.completed) return;  // superseded: a newer request is waiting
 
     RenderFrame frame = makeFrame(lastProgress, true);

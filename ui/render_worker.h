@@ -61,7 +61,9 @@ class RenderWorker : public QObject {
     ~RenderWorker() override;  // stops the current render and joins the thread
 
     // Starts rendering `scene` as soon as the current render has stopped;
-    // returns the request's generation. Never blocks on the renderer.
+    // returns the request's generation. Never blocks on the renderer. The
+    // scene must pass validateScene(), as the document's always does; the
+    // render does not check it again.
     quint64 request(const Scene& scene);
     quint64 latestGeneration() const { return generation_.load(); }
 

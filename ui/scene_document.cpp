@@ -139,6 +139,7 @@ void SceneDocument::reset(const Scene& scene, const QString& filePath) {
     gestureDepth_ = 0;
     runOpen_ = false;
     scene_ = scene;
+    resetSceneValid_ = !validateScene(scene_);
     filePath_ = filePath;
     emit filePathChanged(filePath_);
     emit structureChanged();
@@ -176,7 +177,10 @@ bool SceneDocument::edit(const QString& text, const std::function<void(Scene&)>&
     Scene after = scene_;
     change(after);
     if (after == scene_) return true;
-    if (auto problem = validateScene(after)) {
+    // Every state past the first is an edit that passed this check; the first
+    // is whatever reset() was given.
+    const bool valid = undo_.index() > 0 || resetSceneValid_;
+    if (auto problem = valid ? validateEdit(scene_, after) : validateScene(after)) {
         if (error) *error = editProblemText(*problem, after);
         return false;
     }

@@ -82,6 +82,7 @@ class SceneDocument : public QObject {
     QUndoStack undo_;
     int gestureDepth_ = 0;
     bool runOpen_ = false;  // the top step is a camera run that the next Join edit may extend
+    bool resetSceneValid_ = false;  // what reset() was given passed validateScene
 };
 
 // The number of items of a kind in a scene, and the name of item `index`.

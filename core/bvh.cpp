@@ -353,10 +353,86 @@ SphereBvh<T> buildSphereBvh(const std::vector<glm::dvec3>& centres,
     return bvh;
 }
 
+template <typename T>
+bool refitSphereBvh(SphereBvh<T>& bvh, const std::vector<glm::dvec3>& centres,
+                    const std::vector<double>& radii) {
+    for (const std::int32_t k : bvh.spheres) {
+        const glm::dvec3& c = centres[k];
+        const double reach = std::max({std::fabs(c.x), std::fabs(c.y), std::fabs(c.z)}) + radii[k];
+        if (!(reach < kTreeReach<T>)) return false;
+    }
+    // Children always come after their parent (bvh.cpp's build), so one pass
+    // from the end meets every child before its parent.
+    for (std::size_t i = bvh.nodes.size(); i-- > 0;) {
+        BvhNode<T>& node = bvh.nodes[i];
+        LaneBox<T> box;
+        if (node.count > 0) {
+            for (int j = node.first; j < node.first + node.count; ++j) {
+                const std::int32_t k = bvh.spheres[j];
+                const Ref<T> ref = sphereRef<T>(centres[k], radii[k], k);
+                box.grow(ref.lo, ref.hi);
+            }
+        } else {
+            for (const BvhNode<T>& child : {bvh.nodes[node.first], bvh.nodes[node.first + 1]})
+                box.grow(Lanes<T>{child.lo[0], child.lo[1], child.lo[2], 0},
+                         Lanes<T>{child.hi[0], child.hi[1], child.hi[2], 0});
+        }
+        for (int a = 0; a < 3; ++a) {
+            node.lo[a] = box.lo[a];
+            node.hi[a] = box.hi[a];
+        }
+    }
+    return true;
+}
+
+template <typename T>
+double sahCost(const SphereBvh<T>& bvh) {
+    const auto area = [](const BvhNode<T>& n) {
+        const double x = double(n.hi[0]) - n.lo[0], y = double(n.hi[1]) - n.lo[1],
+                     z = double(n.hi[2]) - n.lo[2];
+        return x * y + y * z + z * x;
+    };
+    double cost = 0;
+    for (const BvhNode<T>& n : bvh.nodes) cost += area(n) * (n.count > 0 ? n.count : 1);
+    return cost;
+}
+
+template <typename T>
+std::shared_ptr<const SphereBvh<T>> sphereBvhFor(const std::vector<glm::dvec3>& centres,
+                                                 const std::vector<double>& radii,
+                                                 BvhCache* cache) {
+    if (!cache) return std::make_shared<const SphereBvh<T>>(buildSphereBvh<T>(centres, radii));
+    BvhCache::Entry<T>& kept = cache->entry<T>();
+    // use_count 1: no earlier render still reads the tree being refit.
+    if (kept.tree && kept.tree.use_count() == 1 && kept.spheres == radii.size() &&
+        refitSphereBvh(*kept.tree, centres, radii) &&
+        sahCost(*kept.tree) <= BvhCache::kWornOut * kept.builtCost) {
+        ++cache->refits;
+        return kept.tree;
+    }
+    kept.tree = std::make_shared<SphereBvh<T>>(buildSphereBvh<T>(centres, radii));
+    kept.spheres = radii.size();
+    kept.builtCost = sahCost(*kept.tree);
+    ++cache->builds;
+    return kept.tree;
+}
+
 template SphereBvh<float> buildSphereBvh<float>(const std::vector<glm::dvec3>&,
                                                 const std::vector<double>&, const BvhBuildOptions&);
 template SphereBvh<double> buildSphereBvh<double>(const std::vector<glm::dvec3>&,
                                                   const std::vector<double>&,
                                                   const BvhBuildOptions&);
 
+}  // namespace whitted
+
+namespace whitted {
+#define WHITTED_BVH_REFIT(T)                                                       \
+    template bool refitSphereBvh<T>(SphereBvh<T>&, const std::vector<glm::dvec3>&, \
+                                    const std::vector<double>&);                   \
+    template double sahCost<T>(const SphereBvh<T>&);                               \
+    template std::shared_ptr<const SphereBvh<T>> sphereBvhFor<T>(                  \
+        const std::vector<glm::dvec3>&, const std::vector<double>&, BvhCache*);
+WHITTED_BVH_REFIT(float)
+WHITTED_BVH_REFIT(double)
+#undef WHITTED_BVH_REFIT
 }  // namespace whitted

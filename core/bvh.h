@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -72,5 +73,54 @@ inline constexpr int kMaxBvhDepth = 96;
 template <typename T>
 SphereBvh<T> buildSphereBvh(const std::vector<glm::dvec3>& centres,
                             const std::vector<double>& radii, const BvhBuildOptions& options = {});
+
+// Recomputes every box of `bvh` for its spheres' new centres and radii,
+// keeping the tree's shape: after an edit that moved or resized spheres (or a
+// camera move, which moves every sphere of the camera-centred frame), a pass
+// over the nodes instead of a build. The same spheres must be given (same
+// count, and the direct ones still there). Returns false, and leaves `bvh`
+// as it was, when a sphere of the tree now lies beyond what a tree in T can
+// bound: build anew then.
+template <typename T>
+bool refitSphereBvh(SphereBvh<T>& bvh, const std::vector<glm::dvec3>& centres,
+                    const std::vector<double>& radii);
+
+// The tree's SAH cost, not divided by the root's area (a sphere grown huge
+// also grows the root): the nodes' half areas, a leaf's times its spheres.
+// Compared between refits of one tree: how far they have worn it.
+template <typename T>
+double sahCost(const SphereBvh<T>& bvh);
+
+// The trees a renderer built last, one per precision, so that the next render
+// of an edited scene refits instead of building (the editor's render worker
+// keeps one; a render uses it from one thread). A refit tree whose SAH cost has
+// grown past kWornOut times its build's is built anew.
+struct BvhCache {
+    static constexpr double kWornOut = 1.5;
+    template <typename T>
+    struct Entry {
+        std::shared_ptr<SphereBvh<T>> tree;
+        std::size_t spheres = 0;
+        double builtCost = 0;
+    };
+    Entry<float> floats;
+    Entry<double> doubles;
+    int builds = 0, refits = 0;  // what the renders did, for tests and benchmarks
+
+    template <typename T>
+    Entry<T>& entry() {
+        if constexpr (sizeof(T) == sizeof(float))
+            return floats;
+        else
+            return doubles;
+    }
+};
+
+// The tree for these spheres: refit from `cache` when it holds one for as many
+// spheres that the refit does not wear out, else built (and kept there).
+// Without a cache, built.
+template <typename T>
+std::shared_ptr<const SphereBvh<T>> sphereBvhFor(const std::vector<glm::dvec3>& centres,
+                                                 const std::vector<double>& radii, BvhCache* cache);
 
 }  // namespace whitted

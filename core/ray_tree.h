@@ -95,8 +95,8 @@ class RayTreeWalk {
         RayPacket<T> shadow;
         shadow.set(0, p, l, sphere, glm::dot(l, outward) < T(0));
         const typename Simd<T>::type limit = typename Simd<T>::type{} + distance;
-        const T sj = sceneTransmittance(s_.spheres, s_.transparency, s_.useBvh ? &s_.bvh : nullptr,
-                                        shadow, limit, 1u)[0];
+        const T sj = sceneTransmittance(s_.spheres, s_.transparency,
+                                        s_.useBvh ? s_.bvh.get() : nullptr, shadow, limit, 1u)[0];
         return sj < T(1) ? 1 : 0;
     }
 

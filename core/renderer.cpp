@@ -63,7 +63,7 @@ class TileRenderer {
   public:
     TileRenderer(const Scene& scene, const RenderOptions& options, const TileCallback& onTile,
                  const StopPredicate& shouldStop)
-        : s_(prepareScene<T>(scene)),
+        : s_(prepareScene<T>(scene, options.bvhCache)),
           options_(options),
           onTile_(onTile),
           shouldStop_(shouldStop),

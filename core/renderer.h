@@ -29,6 +29,9 @@ struct RenderOptions {
     // (the editor's document does, on every edit), so render() need not check
     // it again: at 100,000 spheres that second check was a tenth of an edit.
     bool sceneValidated = false;
+    // Trees kept from the previous render, refit when only spheres moved
+    // (bvh.h). The editor's render worker keeps one; one render at a time.
+    BvhCache* bvhCache = nullptr;
 };
 
 enum class PassKind { Preview, Samples };

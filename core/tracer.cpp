@@ -60,7 +60,7 @@ bool bvhChosen(int spheres) {
 }
 
 template <typename T>
-PreparedScene<T> prepareScene(const Scene& scene) {
+PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache) {
     PreparedScene<T> s;
     const RenderSettings& r = scene.render;
     // The frame is centred on the camera: what the picture needs is where things
@@ -129,7 +129,7 @@ PreparedScene<T> prepareScene(const Scene& scene) {
         }
     }
     if (useBvh) {
-        s.bvh = buildSphereBvh<T>(centres, radii);
+        s.bvh = sphereBvhFor<T>(centres, radii, bvhCache);
         s.useBvh = true;
     }
     return s;
@@ -174,7 +174,7 @@ CameraSample<T> pixelSample(const PreparedScene<T>& s, int i, int j, int n) {
 }
 
 #define WHITTED_INSTANTIATE(T)                                                                \
-    template PreparedScene<T> prepareScene<T>(const Scene&);                                  \
+    template PreparedScene<T> prepareScene<T>(const Scene&, BvhCache*);                       \
     template std::optional<Hit<T>> closestHit<T>(const PreparedScene<T>&, const Ray<T>&, T);  \
     template Vec<T> traceRay<T>(const PreparedScene<T>&, const Ray<T>&, int, RayCounts&);     \
     template void traceCameraRow<T>(const PreparedScene<T>&, int, int, int, int, Vec<T>*,     \

@@ -85,7 +85,7 @@ struct PreparedScene {
     std::vector<T> transparency;  // per sphere, from its material: the shadow-ray factor
     // Which spheres a ray is tested against: all of them, or those the tree
     // finds near it (useBvh). Either way the same image, bit for bit.
-    SphereBvh<T> bvh;
+    std::shared_ptr<const SphereBvh<T>> bvh;  // shared with a BvhCache, when one is kept
     bool useBvh = false;
     std::vector<PreparedMaterial<T>> materials;
     std::vector<PreparedLight<T>> lights;
@@ -111,7 +111,7 @@ bool bvhChosen(int spheres);
 // The scene must be valid (validateScene); width, height, depth and samples
 // come from scene.render. Builds the sphere BVH when bvhChosen() says so.
 template <typename T>
-PreparedScene<T> prepareScene(const Scene& scene);
+PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache = nullptr);
 
 template <typename T>
 struct Hit {

@@ -32,7 +32,7 @@ std::optional<Hit<T>> kernelClosestHit(const PreparedScene<T>& s, const Ray<T>& 
     packet.set(0, ray.origin, ray.dir, ray.originSphere, ray.intoOrigin);
     packet.fromCamera = ray.fromCamera;
     typename Simd<T>::type t, k;
-    sceneClosestHits(s.spheres, s.useBvh ? &s.bvh : nullptr, packet, t, k);
+    sceneClosestHits(s.spheres, s.useBvh ? s.bvh.get() : nullptr, packet, t, k);
     if (k[0] < T(0) || !(t[0] < tMax)) return std::nullopt;
     return Hit<T>{t[0], static_cast<int>(k[0])};
 }
@@ -214,7 +214,7 @@ void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth,
                  RayCounts& counts) {
     using V = typename Simd<T>::type;
     V tHit, kHit;
-    sceneClosestHits(s.spheres, s.useBvh ? &s.bvh : nullptr, rays, tHit, kHit);
+    sceneClosestHits(s.spheres, s.useBvh ? s.bvh.get() : nullptr, rays, tHit, kHit);
     radiance = Vec3x<T>::broadcast(s.background);
     const auto hit = (kHit >= T(0)) & maskFromBits<T>(rays.active);
     const unsigned lanes = laneBits(hit);
@@ -247,7 +247,7 @@ void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth,
         // The shadow ray goes into the sphere when it leaves p against the outward normal.
         RayPacket<T> shadow;
         shadow.assign(p, l, kHit, dot(l, outward) < T(0), litLanes);
-        const V sj = sceneTransmittance(s.spheres, s.transparency, s.useBvh ? &s.bvh : nullptr,
+        const V sj = sceneTransmittance(s.spheres, s.transparency, s.useBvh ? s.bvh.get() : nullptr,
                                         shadow, distance, litLanes);
         const auto shaded = lit & (sj != T(0));
         if (!laneBits(shaded)) continue;

@@ -52,6 +52,7 @@ class MainWindow : public QMainWindow {
 
     SceneDocument* document() { return &doc_; }
     RenderView* renderView() { return view_; }
+    const RenderWorker& renderWorker() const { return worker_; }
     ScenePanel* scenePanel() { return scenePanel_; }
     PropertyPanel* propertyPanel() { return propertyPanel_; }
     PrecisionView* precisionView() { return precisionView_; }

@@ -149,7 +149,10 @@ void RenderWorker::renderOne(const Scene& requested, quint64 generation) {
     };
     RenderOptions options;
     options.sceneValidated = true;  // request() asks for a valid scene
+    options.bvhCache = &bvhCache_;
     RenderResult result = render(scene, options, onTile, shouldStop);
+    bvhBuilds_ = bvhCache_.builds;
+    bvhRefits_ = bvhCache_.refits;
     if (!result.completed) return;  // superseded: a newer request is waiting
 
     RenderFrame frame = makeFrame(lastProgress, true);

@@ -70,6 +70,11 @@ class RenderWorker : public QObject {
     // How often frames are sent while a pass is in progress.
     static constexpr int kFrameIntervalMs = 40;
 
+    // How the renders so far got their sphere trees (built or refit). Read it
+    // between renders: the render thread updates it.
+    int bvhBuilds() const { return bvhBuilds_.load(); }
+    int bvhRefits() const { return bvhRefits_.load(); }
+
   signals:
     // In the GUI thread (the thread this object lives in), every frame in order.
     void frameReady(const whitted::ui::RenderFrame& frame);
@@ -95,6 +100,9 @@ class RenderWorker : public QObject {
     bool quit_ = false;             // guarded by mutex_
     std::atomic<quint64> generation_{0};
     std::atomic<bool> quitting_{false};
+    // Only the render thread touches the cache; the counts are copied out.
+    BvhCache bvhCache_;
+    std::atomic<int> bvhBuilds_{0}, bvhRefits_{0};
     std::thread thread_;
 };
 

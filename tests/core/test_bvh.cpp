@@ -322,6 +322,71 @@ TEST(BvhBuild, SameTreeOnAnyNumberOfThreads) {
     }
 }
 
+// Issue 12 item 5: after an edit that moves spheres (or the camera, which
+// moves every sphere of the camera-centred frame), the render refits the kept
+// tree instead of building one, and the picture is still the brute-force one,
+// bit for bit; a refit that wears the tree out (one ball grown huge) builds.
+TEST(BvhRefit, MovedSpheresAndCameraRenderLikeBruteForce) {
+    for (const Precision precision : {Precision::Float, Precision::Double}) {
+        Scene scene = randomScene(600, Layout::Field, testSeed(61), true);
+        scene.render.precision = precision;
+        BvhCache cache;
+        RenderOptions options;
+        options.threads = 2;
+        options.progressive = false;
+        options.bvhCache = &cache;
+        render(scene, options);
+        ASSERT_EQ(cache.builds, 1);
+        std::mt19937 rng(7);
+        std::uniform_real_distribution<double> step(-0.7, 0.7);
+        for (int edit = 0; edit < 3; ++edit) {
+            for (int k = 0; k < 20; ++k) {
+                Sphere& sp = scene.spheres[rng() % (scene.spheres.size() - 1)];
+                sp.center += Vec3{step(rng), step(rng), step(rng)};
+                sp.radius *= 1.0 + 0.2 * step(rng);
+            }
+            scene.camera.position.x += 0.3;
+            const RenderResult refit = render(scene, options);
+            EXPECT_EQ(cache.builds, 1) << "edit " << edit;
+            EXPECT_EQ(cache.refits, edit + 1) << "edit " << edit;
+            useAcceleration(Acceleration::bruteForce);
+            const RenderResult brute = render(scene, RenderOptions{2, 32, false});
+            useAcceleration(Acceleration::automatic);
+            ASSERT_EQ(brute.image.rgb.size(), refit.image.rgb.size());
+            EXPECT_EQ(std::memcmp(brute.image.rgb.data(), refit.image.rgb.data(),
+                                  brute.image.rgb.size() * sizeof(float)),
+                      0)
+                << "edit " << edit;
+        }
+        scene.spheres[5].radius = 40;  // its boxes now cover the field
+        render(scene, options);
+        EXPECT_EQ(cache.builds, 2) << "a worn-out tree is built anew";
+    }
+}
+
+// The refit tree is as well formed as a built one for the moved spheres.
+TEST(BvhRefit, RefitBoxesHoldTheMovedSpheres) {
+    const Scene scene = randomScene(5000, Layout::Overlapping, testSeed(62), true);
+    std::vector<glm::dvec3> centres;
+    std::vector<double> radii;
+    for (const Sphere& sp : scene.spheres) {
+        centres.push_back(sp.center);
+        radii.push_back(sp.radius);
+    }
+    SphereBvh<float> bvh = buildSphereBvh<float>(centres, radii);
+    for (std::size_t i = 0; i < centres.size(); i += 3) {
+        centres[i] = centres[i] * 1.1 + glm::dvec3(0.5, -0.25, 2.0);
+        radii[i] *= 1.5;
+    }
+    ASSERT_TRUE(refitSphereBvh(bvh, centres, radii));
+    expectWellFormed(centres, radii, bvh);
+    centres[bvh.spheres[0]] = glm::dvec3(1e18, 0, 0);  // beyond what float boxes may hold
+    const BvhNode<float> root = bvh.nodes[0];
+    EXPECT_FALSE(refitSphereBvh(bvh, centres, radii));
+    EXPECT_EQ(std::memcmp(&root, &bvh.nodes[0], sizeof root), 0)
+        << "a refused refit changes nothing";
+}
+
 TEST(BvhBuild, HugeFloorStaysOutOfTheTree) {
     std::vector<glm::dvec3> centres = {
         {1, 0.2, 2}, {-0.95, 0.31, 1.25}, {-0.175, 0.51, 7.5}, {0, -99999.5, 0}};
@@ -399,9 +464,9 @@ void expectSamePackets(const Scene& scene, std::uint32_t seed, const std::string
         if (!r.active) r.active = 1;
         V tb, kb, tt, kt;
         packetClosestHits(s.spheres, r, tb, kb);
-        bvhClosestHits(s.spheres, s.bvh, r, tt, kt);
+        bvhClosestHits(s.spheres, *s.bvh, r, tt, kt);
         const V sb = packetTransmittance(s.spheres, s.transparency, r, distance, r.active);
-        const V st = bvhTransmittance(s.spheres, s.transparency, s.bvh, r, distance, r.active);
+        const V st = bvhTransmittance(s.spheres, s.transparency, *s.bvh, r, distance, r.active);
         for (unsigned bits = r.active; bits; bits &= bits - 1) {
             const int l = __builtin_ctz(bits);
             const bool same = std::memcmp(&tb[l], &tt[l], sizeof(T)) == 0 && kb[l] == kt[l] &&

@@ -308,6 +308,36 @@ TEST_F(ViewCameraTest, LightOutsideThePicture_MarkedAtTheEdgeTowardsIt) {
 }
 
 }  // namespace
+// Issue 12 item 5: on a scene of 20,000 balls, moving one ball and orbiting
+// the camera refit the render worker's tree instead of building one (the
+// build is the costly part of an edit at this size), and the view shows
+// exactly the core's own render of the edited scene.
+TEST_F(ViewCameraTest, LargeScene_MoveAndOrbit_RefitTheTreeAndShowTheExactPicture) {
+    ASSERT_TRUE(editAndWait([](Scene& s) {
+        for (int i = 0; i < 20000; ++i)
+            s.spheres.push_back({"grain " + std::to_string(i),
+                                 {-3.0 + 0.03 * (i % 200), -0.45, 1.0 + 0.05 * (i / 200)},
+                                 0.012,
+                                 i % 2 ? "blue" : "purple"});
+    }));
+    const RenderWorker& worker = window->renderWorker();
+    const int builds = worker.bvhBuilds(), refits = worker.bvhRefits();
+    ASSERT_GE(builds, 1);
+
+    ASSERT_TRUE(editAndWait([](Scene& s) { s.spheres[kBlueBall].center.x += 0.2; }));
+    EXPECT_EQ(worker.bvhBuilds(), builds);
+    EXPECT_EQ(worker.bvhRefits(), refits + 1);
+    EXPECT_TRUE(sameImage(view->frame(), coreRender(doc->scene())));
+
+    const int before = log->completed;
+    view->setFocus();
+    QTest::keyClick(view, Qt::Key_Left);
+    ASSERT_TRUE(waitForRender(before));
+    EXPECT_EQ(worker.bvhBuilds(), builds) << "an orbit moves every sphere of the camera's frame";
+    EXPECT_EQ(worker.bvhRefits(), refits + 2);
+    EXPECT_TRUE(sameImage(view->frame(), coreRender(doc->scene())));
+}
+
 }  // namespace whitted::ui
 
 int main(int argc, char** argv) {

@@ -4,10 +4,8 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <array>
 #include <fstream>
-#include <memory>
-#include <streambuf>
+#include <vector>
 
 #include "scene_io.h"
 #include "scene_json.h"
@@ -20,28 +18,26 @@ namespace {
 constexpr std::uintmax_t kMB = std::uintmax_t(1) << 20;
 
 // Hands the parser the file 1 MB at a time and reports each chunk.
-class ChunkedFileBuf : public std::streambuf {
+class FileChunks : public detail::ChunkedText {
   public:
-    ChunkedFileBuf(std::ifstream& in, std::uintmax_t total, const LoadProgress& progress)
-        : in_(in), total_(total), progress_(progress) {}
+    FileChunks(std::ifstream& in, std::uintmax_t total, const LoadProgress& progress)
+        : in_(in), total_(total), progress_(progress), chunk_(kMB) {}
     bool failed() const { return in_.bad(); }
+    std::uintmax_t size() const override { return total_; }
 
-  protected:
-    int_type underflow() override {
+    std::string_view next() override {
         in_.read(chunk_.data(), std::streamsize(chunk_.size()));
         const auto n = std::size_t(in_.gcount());
-        if (n == 0) return traits_type::eof();
         done_ += n;
-        if (progress_) progress_(done_, std::max(done_, total_));
-        setg(chunk_.data(), chunk_.data(), chunk_.data() + n);
-        return traits_type::to_int_type(chunk_[0]);
+        if (n > 0 && progress_) progress_(done_, std::max(done_, total_));
+        return {chunk_.data(), n};
     }
 
   private:
     std::ifstream& in_;
     std::uintmax_t total_, done_ = 0;
     const LoadProgress& progress_;
-    std::array<char, kMB> chunk_;
+    std::vector<char> chunk_;
 };
 
 std::string megabytes(std::uintmax_t bytes) {
@@ -67,13 +63,12 @@ Scene loadScene(const fs::path& file, const LoadProgress& progress, const SceneF
         throw SceneError(file.string(), "",
                          "is " + megabytes(size) + "; scene files larger than " +
                              megabytes(limit.bytes) + " (" + limit.why + ") are refused");
-    auto chunks = std::make_unique<ChunkedFileBuf>(in, noSize ? 0 : size, progress);
-    std::istream text(chunks.get());
+    FileChunks chunks(in, noSize ? 0 : size, progress);
     try {
-        Scene scene = detail::parseScene(text, file.string());
-        if (!chunks->failed()) return scene;
+        Scene scene = detail::parseScene(chunks, file.string());
+        if (!chunks.failed()) return scene;
     } catch (const SceneError&) {
-        if (!chunks->failed()) throw;
+        if (!chunks.failed()) throw;
     }
     throw SceneError(file.string(), "", "cannot read file");
 }

@@ -1,0 +1,62 @@
+#include "scene_loading.h"
+
+#include <QCoreApplication>
+#include <QEventLoop>
+#include <QFileInfo>
+#include <QProgressDialog>
+
+#include <thread>
+
+#include "scene_io.h"
+
+namespace whitted::ui {
+
+namespace {
+
+// QProgressDialog's own default, and about when a wait starts to feel like one.
+constexpr int kShowDialogAfterMs = 300;
+constexpr int kDialogSteps = 1000;
+
+}  // namespace
+
+std::optional<Scene> loadSceneShowingProgress(QWidget* parent, const QString& path, QString* error,
+                                              const LoadProgressShown& onProgress) {
+    QProgressDialog dialog(
+        QCoreApplication::translate("SceneLoading", "Opening %1…").arg(QFileInfo(path).fileName()),
+        QString(), 0, kDialogSteps, parent);
+    dialog.setWindowTitle(QCoreApplication::translate("SceneLoading", "Open Scene"));
+    dialog.setObjectName(QStringLiteral("openProgress"));
+    dialog.setWindowModality(Qt::WindowModal);
+    dialog.setMinimumDuration(kShowDialogAfterMs);
+    dialog.setCancelButton(nullptr);  // core's reading cannot be interrupted
+
+    // Everything the worker sends is queued to `loop`, in order, so the last
+    // progress report arrives before the quit; events still queued when `loop`
+    // goes away are dropped with it.
+    QEventLoop loop;
+    std::optional<Scene> scene;
+    QString message;
+    std::thread worker([&] {
+        const auto report = [&](std::uintmax_t done, std::uintmax_t total) {
+            QMetaObject::invokeMethod(
+                &loop,
+                [&dialog, &onProgress, done = qint64(done), total = qint64(total)] {
+                    dialog.setValue(total > 0 ? int(done * kDialogSteps / total) : 0);
+                    if (onProgress) onProgress(done, total);
+                },
+                Qt::QueuedConnection);
+        };
+        try {
+            scene = loadScene(path.toStdString(), report);
+        } catch (const std::exception& e) {
+            message = QString::fromStdString(e.what());
+        }
+        QMetaObject::invokeMethod(&loop, &QEventLoop::quit, Qt::QueuedConnection);
+    });
+    loop.exec();
+    worker.join();
+    if (!scene && error) *error = message;
+    return scene;
+}
+
+}  // namespace whitted::ui

@@ -5,6 +5,8 @@
 #include <QFileInfo>
 #include <QProgressDialog>
 
+#include <chrono>
+#include <future>
 #include <thread>
 
 #include "scene_io.h"
@@ -16,6 +18,9 @@ namespace {
 // QProgressDialog's own default, and about when a wait starts to feel like one.
 constexpr int kShowDialogAfterMs = 300;
 constexpr int kDialogSteps = 1000;
+// Files read within this (about 3 MB, 20,000 spheres) are read with the GUI
+// thread waiting, too short to notice.
+constexpr std::chrono::milliseconds kEventLoopAfter{100};
 
 }  // namespace
 
@@ -34,6 +39,8 @@ std::optional<Scene> loadSceneShowingProgress(QWidget* parent, const QString& pa
     // progress report arrives before the quit; events still queued when `loop`
     // goes away are dropped with it.
     QEventLoop loop;
+    std::promise<void> finished;
+    std::future<void> finishedSoon = finished.get_future();
     std::optional<Scene> scene;
     QString message;
     std::thread worker([&] {
@@ -41,8 +48,10 @@ std::optional<Scene> loadSceneShowingProgress(QWidget* parent, const QString& pa
             QMetaObject::invokeMethod(
                 &loop,
                 [&dialog, &onProgress, done = qint64(done), total = qint64(total)] {
-                    dialog.setValue(total > 0 ? int(done * kDialogSteps / total) : 0);
+                    // Reported first: a shown modal dialog's setValue() processes
+                    // events, the later reports among them.
                     if (onProgress) onProgress(done, total);
+                    dialog.setValue(total > 0 ? int(done * kDialogSteps / total) : 0);
                 },
                 Qt::QueuedConnection);
         };
@@ -52,8 +61,12 @@ std::optional<Scene> loadSceneShowingProgress(QWidget* parent, const QString& pa
             message = QString::fromStdString(e.what());
         }
         QMetaObject::invokeMethod(&loop, &QEventLoop::quit, Qt::QueuedConnection);
+        finished.set_value();
     });
-    loop.exec();
+    // A small file is read before the event loop would have turned: the
+    // caller then sees no events at all during the open, as before files were
+    // read on a thread (a frame of the old scene arriving mid-open, say).
+    if (finishedSoon.wait_for(kEventLoopAfter) != std::future_status::ready) loop.exec();
     worker.join();
     if (!scene && error) *error = message;
     return scene;

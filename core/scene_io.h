@@ -33,7 +33,7 @@ Scene parseScene(const std::string& text, const std::string& sourceName);
 
 // The largest scene file loadScene() reads, and why, for the refusal's message.
 // A loaded scene takes about as much memory as its file (a 1M-sphere file of
-// 144 MB loads into about 200 MB), so a quarter of the machine's memory opens
+// 144 MB peaks at 150 MB while loading), so a quarter of the machine's memory opens
 // any scene the machine can work with, while a mistaken multi-gigabyte file is
 // refused before it is read. Never less than kMinSceneFileLimit.
 struct SceneFileLimit {
@@ -44,7 +44,7 @@ inline constexpr std::uintmax_t kMinSceneFileLimit = std::uintmax_t(64) << 20;
 SceneFileLimit sceneFileLimit();
 
 // Told, from the loading thread, how many bytes of the file are read so far
-// and its size; the last call has done == total.
+// and its size (called once a MB; after a whole read, last with done == total).
 using LoadProgress = std::function<void(std::uintmax_t done, std::uintmax_t total)>;
 
 // Reads and parses a file as it goes, never holding its whole text. Throws

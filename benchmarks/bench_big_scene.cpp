@@ -11,9 +11,9 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <random>
 #include <vector>
 
+#include "big_scene.h"
 #include "main_window.h"
 #include "scene_io.h"
 
@@ -32,22 +32,6 @@ double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
-// The seed's materials, light, camera and floor with `count` small balls
-// scattered in front of the camera (fixed seed: every run the same file).
-Scene bigScene(int count) {
-    Scene s = whitted::loadScene(WHITTED_SCENES_DIR "/seed.json");
-    const whitted::Sphere floor = s.spheres.back();
-    s.spheres.clear();
-    std::mt19937 rng(1);
-    std::uniform_real_distribution<double> x(-50, 50), y(0, 5), z(2, 100), r(0.05, 0.3);
-    const char* materials[] = {"blue", "purple", "white"};
-    for (int i = 0; i < count; ++i)
-        s.spheres.push_back(
-            {"ball " + std::to_string(i), {x(rng), y(rng), z(rng)}, r(rng), materials[i % 3]});
-    s.spheres.push_back(floor);
-    return s;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -56,7 +40,7 @@ int main(int argc, char** argv) {
     const int count = argc > 1 ? std::atoi(argv[1]) : 100000;
     QTemporaryDir dir;
     const QString file = dir.filePath("big.json");
-    whitted::saveScene(bigScene(count), file.toStdString());
+    whitted::saveScene(whitted::bench::bigScene(count), file.toStdString());
     std::printf("scene: %d spheres, %.1f MB\n", count + 1,
                 double(QFileInfo(file).size()) / (1 << 20));
 

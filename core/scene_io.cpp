@@ -1,12 +1,9 @@
-// Loading walks the JSON once, checking structure (keys, types, finiteness) with
-// the JSON path at hand, then applies validateScene() for the semantic rules, so
-// the editor and the loader refuse exactly the same scenes.
+// The semantic rules of SPEC §6 (validateScene, which the reader in
+// scene_json_read.cpp applies too, so the editor and the loader refuse exactly
+// the same scenes) and the canonical writer.
 #include "scene_io.h"
 
 #include <cmath>
-#include <fstream>
-#include <initializer_list>
-#include <map>
 #include <sstream>
 #include <string_view>
 #include <system_error>
@@ -16,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "atomic_file.h"
+#include "scene_json.h"
 
 namespace whitted {
 namespace fs = std::filesystem;
@@ -27,215 +25,13 @@ SceneError::SceneError(std::string file, std::string jsonPath, std::string reaso
       path_(std::move(jsonPath)),
       reason_(std::move(reason)) {}
 
-namespace {
-
-std::string typeName(const json& j) {
-    if (j.is_number()) return "a number";
-    if (j.is_string()) return "a string";
-    if (j.is_boolean()) return "a boolean";
-    if (j.is_array()) return "an array";
-    if (j.is_object()) return "an object";
-    return "null";
-}
-
-std::string quoted(const std::string& s) {
+std::string detail::quoted(const std::string& s) {
     return json(s).dump();
 }
 
-std::string joinKey(const std::string& parent, const std::string& key) {
-    return parent.empty() ? key : parent + "." + key;
-}
+namespace {
 
-// Reads one JSON document into a Scene; every failure names the JSON path.
-class Reader {
-  public:
-    explicit Reader(std::string file) : file_(std::move(file)) {}
-
-    [[noreturn]] void fail(const std::string& path, const std::string& reason) const {
-        throw SceneError(file_, path, reason);
-    }
-
-    void expectObject(const json& j, const std::string& path) const {
-        if (!j.is_object()) fail(path, "expected an object, found " + typeName(j));
-    }
-
-    void expectArray(const json& j, const std::string& path) const {
-        if (!j.is_array()) fail(path, "expected an array, found " + typeName(j));
-    }
-
-    void checkKeys(const json& obj, const std::string& path,
-                   std::initializer_list<std::string_view> allowed) const {
-        for (auto it = obj.begin(); it != obj.end(); ++it) {
-            bool known = false;
-            for (auto a : allowed) known = known || it.key() == a;
-            if (!known) fail(joinKey(path, it.key()), "unknown key");
-        }
-    }
-
-    const json* find(const json& obj, const std::string& path, const char* key,
-                     bool required) const {
-        auto it = obj.find(key);
-        if (it == obj.end()) {
-            if (required) fail(joinKey(path, key), "missing");
-            return nullptr;
-        }
-        return &*it;
-    }
-
-    double number(const json& j, const std::string& path) const {
-        if (!j.is_number()) fail(path, "expected a number, found " + typeName(j));
-        const double v = j.get<double>();
-        if (!std::isfinite(v)) fail(path, "must be a finite number");
-        return v;
-    }
-
-    int integer(const json& j, const std::string& path) const {
-        const double v = number(j, path);
-        if (v != std::floor(v) || std::fabs(v) > 2e9) fail(path, "must be an integer");
-        return static_cast<int>(v);
-    }
-
-    std::string string(const json& j, const std::string& path) const {
-        if (!j.is_string()) fail(path, "expected a string, found " + typeName(j));
-        return j.get<std::string>();
-    }
-
-    Vec3 vec3(const json& j, const std::string& path) const {
-        if (!j.is_array() || j.size() != 3)
-            fail(path,
-                 "expected an array of 3 numbers, found " +
-                     (j.is_array() ? "an array of " + std::to_string(j.size()) : typeName(j)));
-        Vec3 v;
-        for (int i = 0; i < 3; ++i) v[i] = number(j[i], path + "[" + std::to_string(i) + "]");
-        return v;
-    }
-
-    // Optional fields keep `out` as it is (the default) when absent.
-    void opt(const json& obj, const std::string& path, const char* key, double& out) const {
-        if (auto* j = find(obj, path, key, false)) out = number(*j, joinKey(path, key));
-    }
-    void opt(const json& obj, const std::string& path, const char* key, int& out) const {
-        if (auto* j = find(obj, path, key, false)) out = integer(*j, joinKey(path, key));
-    }
-    void opt(const json& obj, const std::string& path, const char* key, Vec3& out) const {
-        if (auto* j = find(obj, path, key, false)) out = vec3(*j, joinKey(path, key));
-    }
-    template <typename T>
-    void req(const json& obj, const std::string& path, const char* key, T& out) const {
-        find(obj, path, key, true);
-        opt(obj, path, key, out);
-    }
-    void reqName(const json& obj, const std::string& path, std::string& out) const {
-        out = string(*find(obj, path, "name", true), joinKey(path, "name"));
-    }
-
-    Scene read(const json& root) const {
-        expectObject(root, "");
-        checkKeys(root, "",
-                  {"format", "version", "camera", "render", "background", "ambient", "materials",
-                   "lights", "spheres"});
-        const json* format = find(root, "", "format", true);
-        if (!format->is_string() || format->get<std::string>() != "whitted-scene")
-            fail("format", "expected \"whitted-scene\", found " + format->dump());
-        const int version = integer(*find(root, "", "version", true), "version");
-        if (version > kSceneFormatVersion)
-            fail("version", std::to_string(version) + " is newer than this program reads (" +
-                                std::to_string(kSceneFormatVersion) + ")");
-        if (version < 1) fail("version", "must be at least 1");
-
-        Scene scene;
-        readCamera(*find(root, "", "camera", true), scene.camera);
-        if (auto* r = find(root, "", "render", false)) readRender(*r, scene.render);
-        opt(root, "", "background", scene.background);
-        opt(root, "", "ambient", scene.ambient);
-        readList(root, "materials", scene.materials, &Reader::readMaterial);
-        readList(root, "lights", scene.lights, &Reader::readLight);
-        readList(root, "spheres", scene.spheres, &Reader::readSphere);
-        return scene;
-    }
-
-  private:
-    template <typename T>
-    void readList(const json& root, const char* key, std::vector<T>& out,
-                  void (Reader::*readOne)(const json&, const std::string&, T&) const) const {
-        const json* list = find(root, "", key, false);
-        if (!list) return;
-        expectArray(*list, key);
-        out.resize(list->size());
-        for (size_t i = 0; i < list->size(); ++i)
-            (this->*readOne)((*list)[i], std::string(key) + "[" + std::to_string(i) + "]", out[i]);
-    }
-
-    void readCamera(const json& j, Camera& c) const {
-        const std::string p = "camera";
-        expectObject(j, p);
-        checkKeys(j, p, {"position", "look_at", "up", "vfov_degrees"});
-        req(j, p, "position", c.position);
-        req(j, p, "look_at", c.lookAt);
-        opt(j, p, "up", c.up);
-        opt(j, p, "vfov_degrees", c.vfovDegrees);
-    }
-
-    void readRender(const json& j, RenderSettings& r) const {
-        const std::string p = "render";
-        expectObject(j, p);
-        checkKeys(j, p, {"width", "height", "max_depth", "samples_per_pixel", "precision"});
-        opt(j, p, "width", r.width);
-        opt(j, p, "height", r.height);
-        opt(j, p, "max_depth", r.maxDepth);
-        opt(j, p, "samples_per_pixel", r.samplesPerPixel);
-        if (auto* pr = find(j, p, "precision", false)) {
-            const std::string name = string(*pr, "render.precision");
-            auto parsed = parsePrecision(name);
-            if (!parsed)
-                fail("render.precision", "expected \"float\" or \"double\", found " + quoted(name));
-            r.precision = *parsed;
-        }
-    }
-
-    void readMaterial(const json& j, const std::string& p, Material& m) const {
-        expectObject(j, p);
-        checkKeys(j, p,
-                  {"name", "diffuse", "specular", "shininess", "reflectivity", "transparency",
-                   "ior", "checker"});
-        reqName(j, p, m.name);
-        opt(j, p, "diffuse", m.diffuse);
-        opt(j, p, "specular", m.specular);
-        opt(j, p, "shininess", m.shininess);
-        opt(j, p, "reflectivity", m.reflectivity);
-        opt(j, p, "transparency", m.transparency);
-        opt(j, p, "ior", m.ior);
-        if (auto* c = find(j, p, "checker", false)) {
-            const std::string cp = p + ".checker";
-            expectObject(*c, cp);
-            checkKeys(*c, cp, {"color", "size"});
-            Checker checker;
-            req(*c, cp, "color", checker.color);
-            req(*c, cp, "size", checker.size);
-            m.checker = checker;
-        }
-    }
-
-    void readLight(const json& j, const std::string& p, Light& l) const {
-        expectObject(j, p);
-        checkKeys(j, p, {"name", "position", "color", "intensity"});
-        reqName(j, p, l.name);
-        req(j, p, "position", l.position);
-        opt(j, p, "color", l.color);
-        opt(j, p, "intensity", l.intensity);
-    }
-
-    void readSphere(const json& j, const std::string& p, Sphere& s) const {
-        expectObject(j, p);
-        checkKeys(j, p, {"name", "center", "radius", "material"});
-        reqName(j, p, s.name);
-        req(j, p, "center", s.center);
-        req(j, p, "radius", s.radius);
-        s.material = string(*find(j, p, "material", true), p + ".material");
-    }
-
-    std::string file_;
-};
+using detail::quoted;
 
 // ---- semantic validation -------------------------------------------------
 
@@ -412,115 +208,6 @@ std::optional<SceneProblem> validateEdit(const Scene& before, const Scene& after
         if (!(before.spheres[i] == after.spheres[i]))
             if (auto p = checkSphere(after, i)) return p;
     return std::nullopt;
-}
-
-namespace {
-
-// Builds the DOM like json::parse, but remembers where in the document it is,
-// so that a number too large for a double (1e999, the only way JSON can spell
-// infinity) is refused with its JSON path like every other bad value.
-class PathTrackingSax {
-  public:
-    PathTrackingSax(json& result, const std::string& file) : dom_(result, true), file_(file) {}
-
-    bool null() { return value(), dom_.null(); }
-    bool boolean(bool v) { return value(), dom_.boolean(v); }
-    bool number_integer(json::number_integer_t v) { return value(), dom_.number_integer(v); }
-    bool number_unsigned(json::number_unsigned_t v) { return value(), dom_.number_unsigned(v); }
-    bool number_float(json::number_float_t v, const json::string_t& s) {
-        return value(), dom_.number_float(v, s);
-    }
-    bool string(json::string_t& v) { return value(), dom_.string(v); }
-    bool binary(json::binary_t& v) { return value(), dom_.binary(v); }
-    bool start_object(std::size_t n) {
-        value();
-        frames_.push_back({false, {}, -1});
-        return dom_.start_object(n);
-    }
-    bool key(json::string_t& k) {
-        frames_.back().key = k;
-        return dom_.key(k);
-    }
-    bool end_object() {
-        frames_.pop_back();
-        return dom_.end_object();
-    }
-    bool start_array(std::size_t n) {
-        value();
-        frames_.push_back({true, {}, -1});
-        return dom_.start_array(n);
-    }
-    bool end_array() {
-        frames_.pop_back();
-        return dom_.end_array();
-    }
-    bool parse_error(std::size_t, const std::string&, const nlohmann::json::exception& e) {
-        std::string what = e.what();  // "[json.exception.parse_error.101] parse error at ..."
-        const auto pos = what.find("] ");
-        if (pos != std::string::npos) what = what.substr(pos + 2);
-        if (e.id == 406) {  // number overflow: the value that failed is the next one here
-            if (!frames_.empty() && frames_.back().isArray) ++frames_.back().index;
-            throw SceneError(file_, path(), "must be a finite number (" + what + ")");
-        }
-        throw SceneError(file_, "", "invalid JSON: " + what);
-    }
-
-  private:
-    struct Frame {
-        bool isArray;
-        std::string key;
-        long index;
-    };
-
-    void value() {
-        if (!frames_.empty() && frames_.back().isArray) ++frames_.back().index;
-    }
-
-    std::string path() const {
-        std::string p;
-        for (const Frame& f : frames_) {
-            if (f.isArray) {
-                p += "[" + std::to_string(f.index) + "]";
-            } else {
-                if (!p.empty()) p += ".";
-                p += f.key;
-            }
-        }
-        return p;
-    }
-
-    nlohmann::detail::json_sax_dom_parser<json> dom_;
-    const std::string& file_;
-    std::vector<Frame> frames_;
-};
-
-}  // namespace
-
-Scene parseScene(const std::string& text, const std::string& sourceName) {
-    json root;
-    PathTrackingSax sax(root, sourceName);
-    json::sax_parse(text, &sax);
-    Scene scene = Reader(sourceName).read(root);
-    if (auto problem = validateScene(scene))
-        throw SceneError(sourceName, problem->jsonPath, problem->reason);
-    return scene;
-}
-
-Scene loadScene(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw SceneError(file.string(), "", "cannot open file");
-    std::error_code noSize;
-    const std::uintmax_t size = fs::file_size(file, noSize);
-    if (!noSize && size > kMaxSceneFileBytes) {
-        std::ostringstream reason;
-        reason << "is " << (size + (1u << 20) - 1) / (1u << 20) << " MB; scene files larger than "
-               << kMaxSceneFileBytes / (1u << 20) << " MB are refused";
-        throw SceneError(file.string(), "", reason.str());
-    }
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) throw SceneError(file.string(), "", "cannot read file");
-    return parseScene(text.str(), file.string());
 }
 
 // ---- canonical writer ------------------------------------------------------

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -13,11 +14,6 @@
 namespace whitted {
 
 inline constexpr int kSceneFormatVersion = 1;
-
-// Files above this are refused before they are read: 64 MB hold about 600,000
-// spheres, six times the largest scene the editor is tested with, while a
-// mistaken multi-gigabyte file would otherwise be read whole into memory.
-inline constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t(64) << 20;
 
 // A refused scene. what() is the whole user-facing message:
 // "<file>: <json path>: <reason>", e.g. "a.json: spheres[2].radius: must be > 0".
@@ -35,9 +31,26 @@ class SceneError : public std::runtime_error {
 // Parses scene text; `sourceName` names the file in error messages. Throws SceneError.
 Scene parseScene(const std::string& text, const std::string& sourceName);
 
-// Reads and parses a file. Throws SceneError (unreadable files and files over
-// kMaxSceneFileBytes included).
-Scene loadScene(const std::filesystem::path& file);
+// The largest scene file loadScene() reads, and why, for the refusal's message.
+// A loaded scene takes about as much memory as its file (a 1M-sphere file of
+// 144 MB peaks at 150 MB while loading), so a quarter of the machine's memory opens
+// any scene the machine can work with, while a mistaken multi-gigabyte file is
+// refused before it is read. Never less than kMinSceneFileLimit.
+struct SceneFileLimit {
+    std::uintmax_t bytes;
+    std::string why;  // e.g. "a quarter of this machine's memory"
+};
+inline constexpr std::uintmax_t kMinSceneFileLimit = std::uintmax_t(64) << 20;
+SceneFileLimit sceneFileLimit();
+
+// Told, from the loading thread, how many bytes of the file are read so far
+// and its size (called once a MB; after a whole read, last with done == total).
+using LoadProgress = std::function<void(std::uintmax_t done, std::uintmax_t total)>;
+
+// Reads and parses a file as it goes, never holding its whole text. Throws
+// SceneError (unreadable files and files over the limit, refused unread, included).
+Scene loadScene(const std::filesystem::path& file, const LoadProgress& progress = {},
+                const SceneFileLimit& limit = sceneFileLimit());
 
 // The semantic rules of SPEC §6 for a scene built in memory (the editor's), as
 // "<json path>: <reason>", or nothing when the scene is valid.

@@ -10,6 +10,7 @@
 #include <QMimeData>
 #include <QProgressDialog>
 #include <QPushButton>
+#include <QScopedValueRollback>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTabWidget>
@@ -22,6 +23,7 @@
 #include "preset_controls.h"
 #include "property_panels.h"
 #include "render_view.h"
+#include "scene_loading.h"
 #include "scene_panel.h"
 #include "tradeoff_view.h"
 
@@ -201,11 +203,22 @@ void MainWindow::onFrame(const RenderFrame& frame) {
 }
 
 bool MainWindow::openFile(const QString& path) {
+    // The event loop runs while a file is read: a second open (a shortcut
+    // pressed before the progress dialog blocks the window) is refused.
+    if (opening_) return false;
     QString error;
-    if (!doc_.load(path, &error)) {
+    std::optional<Scene> scene;
+    {
+        const QScopedValueRollback<bool> opening(opening_, true);
+        scene = loadSceneShowingProgress(this, path, &error, [this](qint64 done, qint64 total) {
+            emit openProgress(done, total);
+        });
+    }
+    if (!scene) {
         showError(tr("Cannot open scene"), error);
         return false;
     }
+    doc_.reset(*scene, path);
     sceneReplaced();
     addRecentFile(path);
     rememberDirectory(path);

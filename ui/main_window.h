@@ -46,6 +46,8 @@ class MainWindow : public QMainWindow {
 
     // Opens a scene file without asking about unsaved changes; on failure shows
     // core's message and keeps the current scene. Returns whether it opened.
+    // The file is read on a worker thread with a progress dialog (scene_loading.h);
+    // the event loop runs meanwhile, and returns when the file is read.
     bool openFile(const QString& path);
     // Starts exporting with these settings (what the Export dialog does after OK).
     void startExport(const ExportSettings& settings);
@@ -75,6 +77,8 @@ class MainWindow : public QMainWindow {
     // A frame reached the view (stale frames never do).
     void frameShown(const whitted::ui::RenderFrame& frame);
     void exportFinished(bool ok, const QString& message);
+    // While openFile() reads a file: bytes read so far and the file's size.
+    void openProgress(qint64 done, qint64 total);
 
   protected:
     void closeEvent(QCloseEvent* e) override;
@@ -132,6 +136,7 @@ class MainWindow : public QMainWindow {
     QLabel* timeLabel_ = nullptr;
     QLabel* speedLabel_ = nullptr;
     QString lastError_;
+    bool opening_ = false;  // openFile() is reading a file
     void restore(const Recovery& recovery);
 
     std::unique_ptr<ExportJob> export_;

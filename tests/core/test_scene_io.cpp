@@ -4,11 +4,14 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <random>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -601,28 +604,67 @@ TEST(SceneIo, SaveToFullDisk_ThrowsNoSpaceNamingTheFile) {
     EXPECT_TRUE(fs::is_empty(dir.path()));
 }
 
-// A file over the size limit is refused before it is read, by name and size.
-TEST(SceneIo, FileOverSizeLimit_RefusedWithItsSize) {
+// Bytes this process has read through read() and its kind so far (Linux).
+long long bytesReadByThisProcess() {
+    std::ifstream io("/proc/self/io");
+    std::string field;
+    long long value = -1;
+    while (io >> field >> value)
+        if (field == "rchar:") return value;
+    return -1;
+}
+
+// A file over the size limit is refused before it is read, by name, size and limit.
+TEST(SceneIo, FileOverSizeLimit_RefusedWithItsSizeAndTheLimit) {
     TempDir dir;
     const fs::path file = dir / "huge.json";
-    {
-        std::ofstream out(file, std::ios::binary);
-        out << "{";
-    }
-    fs::resize_file(file, kMaxSceneFileBytes + 1);  // sparse: costs no disk
+    test::writeFile(file, "{");
+    const SceneFileLimit limit{std::uintmax_t(64) << 20, "a test's limit"};
+    fs::resize_file(file, limit.bytes + 1);  // sparse: costs no disk
     try {
-        loadScene(file);
+        loadScene(file, {}, limit);
         ADD_FAILURE() << "loaded";
     } catch (const SceneError& e) {
         EXPECT_EQ(std::string(e.what()),
-                  file.string() + ": is 65 MB; scene files larger than 64 MB are refused");
+                  file.string() +
+                      ": is 65 MB; scene files larger than 64 MB (a test's limit) are refused");
     }
-    fs::resize_file(file, kMaxSceneFileBytes);  // at the limit: read, then refused as JSON
+    fs::resize_file(file, limit.bytes);  // at the limit: read, then refused as JSON
+    try {
+        loadScene(file, {}, limit);
+        ADD_FAILURE() << "loaded";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()).find("refused"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("invalid JSON"), std::string::npos) << e.what();
+    }
+}
+
+// The machine's own limit: a quarter of its memory, never below 64 MB; a
+// mistaken file of several times the machine's memory is refused unread.
+TEST(SceneIo, FileLargerThanTheMachineCanHold_RefusedWithoutReadingIt) {
+    const SceneFileLimit limit = sceneFileLimit();
+    const std::uintmax_t memory = std::uintmax_t(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
+    EXPECT_GE(limit.bytes, kMinSceneFileLimit);
+    if (memory / 4 >= kMinSceneFileLimit) {
+        EXPECT_EQ(limit.bytes, memory / 4);
+        EXPECT_EQ(limit.why, "a quarter of this machine's memory");
+    }
+    TempDir dir;
+    const fs::path file = dir / "mistake.json";
+    test::writeFile(file, "{\"format\": \"whitted-scene\"");
+    fs::resize_file(file, 4 * memory);  // sparse: costs no disk
+    const long long readBefore = bytesReadByThisProcess();
     try {
         loadScene(file);
         ADD_FAILURE() << "loaded";
     } catch (const SceneError& e) {
-        EXPECT_EQ(std::string(e.what()).find("refused"), std::string::npos) << e.what();
+        const std::string what = e.what();
+        EXPECT_EQ(what.rfind(file.string() + ": is ", 0), 0u) << what;
+        EXPECT_NE(what.find("(a quarter of this machine's memory) are refused"), std::string::npos)
+            << what;
+    }
+    if (readBefore >= 0) {
+        EXPECT_LT(bytesReadByThisProcess() - readBefore, 1 << 20);
     }
 }
 

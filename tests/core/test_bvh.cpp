@@ -10,6 +10,7 @@
 #include <random>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -233,6 +234,17 @@ TEST(BvhRendersLikeBruteForceImage, EveryKernel) {
     useKernel("");
 }
 
+// The spheres' centres and radii, as the build takes them.
+std::pair<std::vector<glm::dvec3>, std::vector<double>> geometryOf(const Scene& scene) {
+    std::vector<glm::dvec3> centres;
+    std::vector<double> radii;
+    for (const Sphere& sp : scene.spheres) {
+        centres.push_back(sp.center);
+        radii.push_back(sp.radius);
+    }
+    return {centres, radii};
+}
+
 // Build checks on the tree's own invariants.
 template <typename T>
 void expectWellFormed(const std::vector<glm::dvec3>& centres, const std::vector<double>& radii,
@@ -280,12 +292,7 @@ TEST(BvhBuild, EverySphereInOneLeafInsideNestedBoxes) {
         for (Layout layout :
              {Layout::Field, Layout::Overlapping, Layout::Nested, Layout::Far, Layout::Tiny}) {
             const Scene scene = randomScene(count, layout, seed + count, true);
-            std::vector<glm::dvec3> centres;
-            std::vector<double> radii;
-            for (const Sphere& sp : scene.spheres) {
-                centres.push_back(sp.center);
-                radii.push_back(sp.radius);
-            }
+            const auto [centres, radii] = geometryOf(scene);
             SCOPED_TRACE(std::to_string(count) + " " + layoutName(layout));
             expectWellFormed(centres, radii, buildSphereBvh<float>(centres, radii));
             expectWellFormed(centres, radii, buildSphereBvh<double>(centres, radii));
@@ -299,12 +306,7 @@ TEST(BvhBuild, EverySphereInOneLeafInsideNestedBoxes) {
 // must come back whole.
 TEST(BvhBuild, SameTreeOnAnyNumberOfThreads) {
     const Scene scene = randomScene(70000, Layout::Overlapping, testSeed(77), true);
-    std::vector<glm::dvec3> centres;
-    std::vector<double> radii;
-    for (const Sphere& sp : scene.spheres) {
-        centres.push_back(sp.center);
-        radii.push_back(sp.radius);
-    }
+    auto [centres, radii] = geometryOf(scene);
     BvhBuildOptions one;
     one.threads = 1;
     const SphereBvh<float> alone = buildSphereBvh<float>(centres, radii, one);
@@ -367,12 +369,7 @@ TEST(BvhRefit, MovedSpheresAndCameraRenderLikeBruteForce) {
 // The refit tree is as well formed as a built one for the moved spheres.
 TEST(BvhRefit, RefitBoxesHoldTheMovedSpheres) {
     const Scene scene = randomScene(5000, Layout::Overlapping, testSeed(62), true);
-    std::vector<glm::dvec3> centres;
-    std::vector<double> radii;
-    for (const Sphere& sp : scene.spheres) {
-        centres.push_back(sp.center);
-        radii.push_back(sp.radius);
-    }
+    auto [centres, radii] = geometryOf(scene);
     SphereBvh<float> bvh = buildSphereBvh<float>(centres, radii);
     for (std::size_t i = 0; i < centres.size(); i += 3) {
         centres[i] = centres[i] * 1.1 + glm::dvec3(0.5, -0.25, 2.0);

@@ -28,9 +28,10 @@ struct KeptBuffers {
     std::size_t bytes = 0;
 };
 
+// Never destroyed: a static buffer may be freed after this would have been.
 KeptBuffers& kept() {
-    static KeptBuffers k;
-    return k;
+    static KeptBuffers* k = new KeptBuffers;
+    return *k;
 }
 
 void* takeKept(std::size_t bytes) {

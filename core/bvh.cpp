@@ -1,7 +1,8 @@
 // Building the sphere BVH (bvh.h): binned SAH over the spheres' boxes rounded
-// outward to T (bvh_split.h), in two phases: the top levels on the calling
-// thread, then the ranges below kJobSpheres as independent jobs on all cores,
-// spliced into one flat array of nodes in a fixed order.
+// outward to T (bvh_split.h), in two phases: the top levels level by level,
+// each level's ranges on all cores, then the ranges below kJobSpheres as
+// independent jobs on all cores, spliced into one flat array of nodes in a
+// fixed order. Also the refit of a built tree and the cache that keeps one.
 #include "bvh.h"
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <thread>
 
 #include "bvh_split.h"
+#include "renderer.h"
 
 namespace whitted {
 
@@ -42,6 +44,19 @@ constexpr int kJobSpheres = 2048;
 // (1e34 in float, 1e300 in double). Beyond it a sphere is tested directly.
 template <typename T>
 constexpr double kTreeReach = sizeof(T) == sizeof(float) ? 1e17 : 1e150;
+
+template <typename T>
+bool inReach(const glm::dvec3& c, double r) {
+    return std::max({std::fabs(c.x), std::fabs(c.y), std::fabs(c.z)}) + r < kTreeReach<T>;
+}
+
+template <typename T>
+void storeBox(BvhNode<T>& node, const LaneBox<T>& box) {
+    for (int a = 0; a < 3; ++a) {
+        node.lo[a] = box.lo[a];
+        node.hi[a] = box.hi[a];
+    }
+}
 
 // x rounded to T towards -infinity / +infinity. The rounded value goes through
 // a volatile, as in SphereSet::split: GCC's SLP vectoriser has been seen
@@ -86,9 +101,7 @@ std::vector<char> keptOut(const std::vector<glm::dvec3>& centres, const std::vec
     std::vector<int> order;
     order.reserve(n);
     for (int i = 0; i < n; ++i) {
-        const glm::dvec3& c = centres[i];
-        const double reach = std::max({std::fabs(c.x), std::fabs(c.y), std::fabs(c.z)}) + radii[i];
-        if (reach < kTreeReach<T>)
+        if (inReach<T>(centres[i], radii[i]))
             order.push_back(i);
         else
             out[i] = 1;
@@ -193,10 +206,7 @@ class Builder {
     std::vector<Range> place(Subtree<T>& into, const Range& r, const Division& d) const {
         into.depth = std::max(into.depth, r.depth);
         BvhNode<T>& node = into.nodes[r.node];
-        for (int a = 0; a < 3; ++a) {
-            node.lo[a] = d.box.lo[a];
-            node.hi[a] = d.box.hi[a];
-        }
+        storeBox(node, d.box);
         if (d.firstCount == 0) {
             makeLeaf(into, r);
             return {};
@@ -342,9 +352,7 @@ SphereBvh<T> buildSphereBvh(const std::vector<glm::dvec3>& centres,
     const std::vector<char> out = keptOut<T>(centres, radii, options);
     for (int i = 0; i < static_cast<int>(radii.size()); ++i)
         if (out[i]) bvh.direct.push_back(i);
-    const int threads = options.threads > 0
-                            ? options.threads
-                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    const int threads = resolveThreadCount(options.threads);
     RefArray<T> refs = makeRefs<T>(centres, radii, out, threads);
     Subtree<T> tree = buildTree(refs, options, threads);
     bvh.nodes = std::move(tree.nodes);
@@ -356,11 +364,8 @@ SphereBvh<T> buildSphereBvh(const std::vector<glm::dvec3>& centres,
 template <typename T>
 bool refitSphereBvh(SphereBvh<T>& bvh, const std::vector<glm::dvec3>& centres,
                     const std::vector<double>& radii) {
-    for (const std::int32_t k : bvh.spheres) {
-        const glm::dvec3& c = centres[k];
-        const double reach = std::max({std::fabs(c.x), std::fabs(c.y), std::fabs(c.z)}) + radii[k];
-        if (!(reach < kTreeReach<T>)) return false;
-    }
+    for (const std::int32_t k : bvh.spheres)
+        if (!inReach<T>(centres[k], radii[k])) return false;
     // Children always come after their parent (bvh.cpp's build), so one pass
     // from the end meets every child before its parent.
     for (std::size_t i = bvh.nodes.size(); i-- > 0;) {
@@ -377,10 +382,7 @@ bool refitSphereBvh(SphereBvh<T>& bvh, const std::vector<glm::dvec3>& centres,
                 box.grow(Lanes<T>{child.lo[0], child.lo[1], child.lo[2], 0},
                          Lanes<T>{child.hi[0], child.hi[1], child.hi[2], 0});
         }
-        for (int a = 0; a < 3; ++a) {
-            node.lo[a] = box.lo[a];
-            node.hi[a] = box.hi[a];
-        }
+        storeBox(node, box);
     }
     return true;
 }
@@ -417,22 +419,16 @@ std::shared_ptr<const SphereBvh<T>> sphereBvhFor(const std::vector<glm::dvec3>& 
     return kept.tree;
 }
 
-template SphereBvh<float> buildSphereBvh<float>(const std::vector<glm::dvec3>&,
-                                                const std::vector<double>&, const BvhBuildOptions&);
-template SphereBvh<double> buildSphereBvh<double>(const std::vector<glm::dvec3>&,
-                                                  const std::vector<double>&,
-                                                  const BvhBuildOptions&);
-
-}  // namespace whitted
-
-namespace whitted {
-#define WHITTED_BVH_REFIT(T)                                                       \
-    template bool refitSphereBvh<T>(SphereBvh<T>&, const std::vector<glm::dvec3>&, \
-                                    const std::vector<double>&);                   \
-    template double sahCost<T>(const SphereBvh<T>&);                               \
-    template std::shared_ptr<const SphereBvh<T>> sphereBvhFor<T>(                  \
+#define WHITTED_BVH(T)                                                                           \
+    template SphereBvh<T> buildSphereBvh<T>(const std::vector<glm::dvec3>&,                      \
+                                            const std::vector<double>&, const BvhBuildOptions&); \
+    template bool refitSphereBvh<T>(SphereBvh<T>&, const std::vector<glm::dvec3>&,               \
+                                    const std::vector<double>&);                                 \
+    template double sahCost<T>(const SphereBvh<T>&);                                             \
+    template std::shared_ptr<const SphereBvh<T>> sphereBvhFor<T>(                                \
         const std::vector<glm::dvec3>&, const std::vector<double>&, BvhCache*);
-WHITTED_BVH_REFIT(float)
-WHITTED_BVH_REFIT(double)
-#undef WHITTED_BVH_REFIT
+WHITTED_BVH(float)
+WHITTED_BVH(double)
+#undef WHITTED_BVH
+
 }  // namespace whitted

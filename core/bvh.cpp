@@ -51,6 +51,14 @@ bool inReach(const glm::dvec3& c, double r) {
 }
 
 template <typename T>
+LaneBox<T> boxOf(const BvhNode<T>& node) {
+    LaneBox<T> box;
+    box.grow(Lanes<T>{node.lo[0], node.lo[1], node.lo[2], 0},
+             Lanes<T>{node.hi[0], node.hi[1], node.hi[2], 0});
+    return box;
+}
+
+template <typename T>
 void storeBox(BvhNode<T>& node, const LaneBox<T>& box) {
     for (int a = 0; a < 3; ++a) {
         node.lo[a] = box.lo[a];
@@ -378,9 +386,8 @@ bool refitSphereBvh(SphereBvh<T>& bvh, const std::vector<glm::dvec3>& centres,
                 box.grow(ref.lo, ref.hi);
             }
         } else {
-            for (const BvhNode<T>& child : {bvh.nodes[node.first], bvh.nodes[node.first + 1]})
-                box.grow(Lanes<T>{child.lo[0], child.lo[1], child.lo[2], 0},
-                         Lanes<T>{child.hi[0], child.hi[1], child.hi[2], 0});
+            box.grow(boxOf(bvh.nodes[node.first]));
+            box.grow(boxOf(bvh.nodes[node.first + 1]));
         }
         storeBox(node, box);
     }
@@ -389,13 +396,9 @@ bool refitSphereBvh(SphereBvh<T>& bvh, const std::vector<glm::dvec3>& centres,
 
 template <typename T>
 double sahCost(const SphereBvh<T>& bvh) {
-    const auto area = [](const BvhNode<T>& n) {
-        const double x = double(n.hi[0]) - n.lo[0], y = double(n.hi[1]) - n.lo[1],
-                     z = double(n.hi[2]) - n.lo[2];
-        return x * y + y * z + z * x;
-    };
     double cost = 0;
-    for (const BvhNode<T>& n : bvh.nodes) cost += area(n) * (n.count > 0 ? n.count : 1);
+    for (const BvhNode<T>& n : bvh.nodes)
+        cost += double(boxOf(n).halfArea()) * (n.count > 0 ? n.count : 1);
     return cost;
 }
 

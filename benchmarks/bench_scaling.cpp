@@ -131,10 +131,19 @@ Run renderWith(Scene scene, Acceleration choice, Precision precision) {
 
 struct Tree {
     double buildMs = 1e300;
-    double bytesPerSphere = 0;
+    double bytesPerSphere = 0, doubleBytesPerSphere = 0;  // the float and the double tree
 };
 
-// Our float tree alone: the best of three builds, and its nodes and index arrays.
+template <typename T>
+double bytesPerSphere(const SphereBvh<T>& bvh, std::size_t spheres) {
+    const std::size_t bytes = bvh.nodes.size() * sizeof(BvhNode) +
+                              bvh.leafSpheres.size() * sizeof(LeafSphere<T>) +
+                              bvh.direct.size() * sizeof(std::int32_t);
+    return double(bytes) / double(spheres);
+}
+
+// Our float tree alone: the best of three builds; and the bytes of its nodes
+// and leaf arrays, and of the double tree's.
 Tree measureTree(const Scene& scene) {
     std::vector<glm::dvec3> centres;
     std::vector<double> radii;
@@ -147,10 +156,10 @@ Tree measureTree(const Scene& scene) {
         const auto start = std::chrono::steady_clock::now();
         const SphereBvh<float> bvh = buildSphereBvh<float>(centres, radii);
         tree.buildMs = std::min(tree.buildMs, msSince(start));
-        const std::size_t bytes = bvh.nodes.size() * sizeof(BvhNode<float>) +
-                                  (bvh.spheres.size() + bvh.direct.size()) * sizeof(std::int32_t);
-        tree.bytesPerSphere = double(bytes) / double(scene.spheres.size());
+        tree.bytesPerSphere = bytesPerSphere(bvh, scene.spheres.size());
     }
+    tree.doubleBytesPerSphere =
+        bytesPerSphere(buildSphereBvh<double>(centres, radii), scene.spheres.size());
     return tree;
 }
 
@@ -191,16 +200,16 @@ struct Row {
 };
 
 void printHeader() {
-    std::printf("%8s %9s %7s | %10s %8s %10s %8s %10s | %9s %9s %10s %8s %7s %6s\n", "N",
-                "build ms", "B/sph", "float ms", "Mr/s", "double ms", "dbl/flt", "brute ms",
-                "E high ms", "E med ms", "Embree ms", "E Mr/s", "ours/E", "PSNR");
+    std::printf("%8s %9s %7s %7s | %10s %8s %10s %8s %10s | %9s %9s %10s %8s %7s %6s\n", "N",
+                "build ms", "B/sph", "B/sph d", "float ms", "Mr/s", "double ms", "dbl/flt",
+                "brute ms", "E high ms", "E med ms", "Embree ms", "E Mr/s", "ours/E", "PSNR");
 }
 
 void printRow(const Row& r) {
     const bool e = r.embree.run.ms >= 0, d = r.doubles.ms >= 0;
     std::printf(
-        "%8d %9.2f %7.1f | %10.1f %8.2f %10s %8s %10s | %9s %9s %10s %8s %7s %6s\n", r.n,
-        r.tree.buildMs, r.tree.bytesPerSphere, r.ours.ms, r.ours.mrays,
+        "%8d %9.2f %7.1f %7.1f | %10.1f %8.2f %10s %8s %10s | %9s %9s %10s %8s %7s %6s\n", r.n,
+        r.tree.buildMs, r.tree.bytesPerSphere, r.tree.doubleBytesPerSphere, r.ours.ms, r.ours.mrays,
         cell(r.doubles.ms, "%.1f", d).c_str(), cell(r.doubles.ms / r.ours.ms, "%.2f", d).c_str(),
         cell(r.brute.ms, "%.1f", r.brute.ms >= 0).c_str(),
         cell(r.embree.buildHighMs, "%.2f", e).c_str(),
@@ -212,11 +221,11 @@ void printRow(const Row& r) {
 }
 
 void writeCsv(std::FILE* f, const Row& r) {
-    std::fprintf(f, "%d,%.3f,%.2f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.2f\n", r.n,
+    std::fprintf(f, "%d,%.3f,%.2f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.2f,%.2f\n", r.n,
                  r.tree.buildMs, r.tree.bytesPerSphere, r.ours.ms, r.ours.mrays, r.doubles.ms,
                  r.brute.ms, r.embree.buildHighMs, r.embree.buildMediumMs, r.embree.run.ms,
                  r.embree.run.mrays, r.embree.run.ms >= 0 ? r.ours.ms / r.embree.run.ms : -1.0,
-                 r.embree.psnr);
+                 r.embree.psnr, r.tree.doubleBytesPerSphere);
     std::fflush(f);
 }
 
@@ -241,7 +250,7 @@ int main(int argc, char** argv) {
         std::fprintf(csv,
                      "n,build_ms,bytes_per_sphere,float_ms,float_mrays,double_ms,brute_ms,"
                      "embree_build_high_ms,embree_build_medium_ms,embree_ms,embree_mrays,"
-                     "ours_over_embree,psnr_db\n");
+                     "ours_over_embree,psnr_db,bytes_per_sphere_double\n");
     std::printf("field of N spheres + floor, %dx%d, 1 spp, depth 5, %d threads, kernel %s\n",
                 o.width, o.height, kThreads, activeKernelName().c_str());
 #ifdef WHITTED_HAVE_EMBREE

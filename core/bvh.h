@@ -19,19 +19,25 @@
 #include <glm/vec3.hpp>
 
 #include "large_buffer_allocator.h"
+#include "sphere_set.h"
 
 namespace whitted {
 
-// One node of the flattened binary tree: 32 bytes in float, 56 in double.
+// One node of the flattened binary tree: 32 bytes, two to a cache line.
 // Left uninitialised when made: the build writes every field, and the pages
 // of a large tree are then first touched by the threads that fill them.
-template <typename T>
+//
+// The box is in float for double trees too, rounded outward from the double
+// box, as Embree stores its boxes: 56-byte double nodes made the double tree
+// 75 bytes per sphere against the float tree's 45, for no fewer spheres tested
+// in scenes whose spheres float can tell apart (docs/performance.md). A box in
+// float only ever holds more; the traversal's arithmetic stays in T.
 struct BvhNode {
-    T lo[3], hi[3];  // the box [lo, hi], holding every sphere below, rounded outward to T
+    float lo[3], hi[3];  // the box [lo, hi], holding every sphere below, rounded outward
     // Inner node: `first` is the index of its first child, the second child is
     // first + 1, and count == -1 - axis, the axis the children were split along
     // (the first child holds the lower centres). Leaf: its spheres are
-    // SphereBvh::spheres[first, first + count), count >= 1.
+    // SphereBvh::leafSpheres[first, first + count), count >= 1.
     std::int32_t first;
     std::int32_t count;
 };
@@ -42,8 +48,11 @@ using BvhArray = std::vector<T, LargeBufferAllocator<T>>;
 
 template <typename T>
 struct SphereBvh {
-    BvhArray<BvhNode<T>> nodes;      // nodes[0] is the root; empty when no sphere is in the tree
-    BvhArray<std::int32_t> spheres;  // the leaves' sphere indices, leaf after leaf
+    BvhArray<BvhNode> nodes;  // nodes[0] is the root; empty when no sphere is in the tree
+    // The leaves' spheres, leaf after leaf, each with what the sphere test
+    // reads of it: the build sets every index, sphereBvhFor() the rest from the
+    // scene's SphereSet (which alone knows the camera).
+    BvhArray<LeafSphere<T>> leafSpheres;
     // Spheres kept out of the tree and tested on every ray: huge ones such as a
     // floor (their box would swell every node above them, and the margin with
     // it), and any whose box T cannot hold. In index order.
@@ -53,7 +62,7 @@ struct SphereBvh {
 
 struct BvhBuildOptions {
     int bins = 16;        // SAH candidate planes per axis: bins - 1
-    int maxLeafSize = 4;  // a node with more spheres is always split
+    int maxLeafSize = 8;  // a node with more spheres is always split
     // A sphere whose diameter is more than hugeRatio times the longest side of
     // the box of all smaller spheres stays out of the tree (the seed's floor:
     // 199998 against a few units). At most maxDirect of them: each costs every ray.
@@ -118,9 +127,11 @@ struct BvhCache {
 
 // The tree for these spheres: refit from `cache` when it holds one for as many
 // spheres that the refit does not wear out, else built (and kept there).
-// Without a cache, built.
+// Without a cache, built. Its leafSpheres are `spheres`' values, which must
+// be the same spheres as centres and radii.
 template <typename T>
 std::shared_ptr<const SphereBvh<T>> sphereBvhFor(const std::vector<glm::dvec3>& centres,
-                                                 const std::vector<double>& radii, BvhCache* cache);
+                                                 const std::vector<double>& radii,
+                                                 const SphereSet<T>& spheres, BvhCache* cache);
 
 }  // namespace whitted

@@ -97,7 +97,7 @@ inline PacketSlabs<T> packetSlabs(const RayPacket<T>& r) {
 // The lanes of `lanes` whose ray meets the node's widened box at some t in
 // [0, limit]. A NaN anywhere keeps the lane (no comparison is true).
 template <typename T>
-inline unsigned boxLanes(const BvhNode<T>& node, const PacketSlabs<T>& s,
+inline unsigned boxLanes(const BvhNode& node, const PacketSlabs<T>& s,
                          const typename Simd<T>::type& limit, unsigned lanes) {
     using V = typename Simd<T>::type;
     T reach = 0;
@@ -129,7 +129,7 @@ inline void traverseBvh(const SphereBvh<T>& bvh, const RayPacket<T>& r, const Pa
     int top = 0;
     stack[top++] = 0;
     while (top > 0) {
-        const BvhNode<T>& node = bvh.nodes[stack[--top]];
+        const BvhNode& node = bvh.nodes[stack[--top]];
         const unsigned in = boxLanes(node, slabs, limit, lanes);
         if (!in) continue;
         if (node.count > 0) {
@@ -152,14 +152,16 @@ inline unsigned lanesInto(const RayPacket<T>& r, int k, unsigned lanes) {
     return laneBits((r.originSphere == T(k)) & r.intoOrigin) & lanes;
 }
 
-// Sphere k's candidate for the nearest hit of each of `lanes`, by
+// The sphere's candidate for the nearest hit of each of `lanes`, by
 // packetClosestHits()'s rules; ties go to the lower index, so the outcome does
 // not depend on the order spheres come in.
 template <typename T>
-inline void closestUpdate(const SphereSet<T>& spheres, int k, const RayPacket<T>& r, unsigned lanes,
-                          typename Simd<T>::type& tBest, typename Simd<T>::type& kBest) {
+inline void closestUpdate(const SphereSet<T>& spheres, const LeafSphere<T>& sphere,
+                          const RayPacket<T>& r, unsigned lanes, typename Simd<T>::type& tBest,
+                          typename Simd<T>::type& kBest) {
     using V = typename Simd<T>::type;
-    const PacketRoots<T> roots = intersectPacket(spheres, k, r, lanes);
+    const int k = sphere.index;
+    const PacketRoots<T> roots = intersectPacket(spheres, sphere, r, lanes);
     const auto inward = roots.self & r.intoOrigin & maskFromBits<T>(lanes);
     if (!roots.valid && !laneBits(inward)) return;
     const auto exits = roots.hit & (roots.tFar > T(0));
@@ -189,16 +191,17 @@ inline void bvhClosestHits(const SphereSet<T>& spheres, const SphereBvh<T>& bvh,
     while (into) {
         const int k = static_cast<int>(r.originSphere[__builtin_ctz(into)]);
         const unsigned lanes = lanesInto(r, k, into);
-        closestUpdate(spheres, k, r, lanes, tBest, kBest);
+        closestUpdate(spheres, spheres.leafSphere(k), r, lanes, tBest, kBest);
         into &= ~lanes;
     }
     // The huge spheres next: a floor's hit shortens every ray before the tree.
-    for (const std::int32_t k : bvh.direct) closestUpdate(spheres, k, r, r.active, tBest, kBest);
+    for (const std::int32_t k : bvh.direct)
+        closestUpdate(spheres, spheres.leafSphere(k), r, r.active, tBest, kBest);
     if (bvh.nodes.empty()) return;
     // Testing a ray's own sphere again changes nothing: its (t, k) is already kept.
-    auto leaf = [&](const BvhNode<T>& node, unsigned lanes) {
+    auto leaf = [&](const BvhNode& node, unsigned lanes) {
         for (int i = node.first; i < node.first + node.count; ++i)
-            closestUpdate(spheres, bvh.spheres[i], r, lanes, tBest, kBest);
+            closestUpdate(spheres, bvh.leafSpheres[i], r, lanes, tBest, kBest);
         return ~0u;
     };
     traverseBvh(bvh, r, slabs, tBest, r.active, leaf);
@@ -229,12 +232,14 @@ struct Occluders {
     }
 };
 
-// Sphere k's part in each lane's transmittance, by packetTransmittance()'s rules.
+// The sphere's part in each lane's transmittance, by packetTransmittance()'s rules.
 template <typename T>
-inline void shadowUpdate(const SphereSet<T>& spheres, const std::vector<T>& transparency, int k,
-                         const RayPacket<T>& r, const typename Simd<T>::type& distance,
-                         unsigned lanes, Occluders<T>& out) {
-    const PacketRoots<T> roots = intersectPacket(spheres, k, r, lanes);
+inline void shadowUpdate(const SphereSet<T>& spheres, const std::vector<T>& transparency,
+                         const LeafSphere<T>& sphere, const RayPacket<T>& r,
+                         const typename Simd<T>::type& distance, unsigned lanes,
+                         Occluders<T>& out) {
+    const int k = sphere.index;
+    const PacketRoots<T> roots = intersectPacket(spheres, sphere, r, lanes);
     const auto inward = roots.self & r.intoOrigin & maskFromBits<T>(lanes);
     if (!roots.valid && !laneBits(inward)) return;
     const auto exits = roots.hit & (roots.tFar > T(0));
@@ -273,19 +278,19 @@ inline typename Simd<T>::type bvhTransmittance(const SphereSet<T>& spheres,
     while (into) {
         const int k = static_cast<int>(r.originSphere[__builtin_ctz(into)]);
         const unsigned own = lanesInto(r, k, into);
-        shadowUpdate(spheres, transparency, k, r, distance, own, found);
+        shadowUpdate(spheres, transparency, spheres.leafSphere(k), r, distance, own, found);
         into &= ~own;
     }
     for (const std::int32_t k : bvh.direct)
         if (const unsigned open = lanes & ~found.opaque)
-            shadowUpdate(spheres, transparency, k, r, distance,
+            shadowUpdate(spheres, transparency, spheres.leafSphere(k), r, distance,
                          goingIn ? open & ~lanesInto(r, k, goingIn) : open, found);
-    auto leaf = [&](const BvhNode<T>& node, unsigned in) {
+    auto leaf = [&](const BvhNode& node, unsigned in) {
         for (int i = node.first; i < node.first + node.count && in; ++i) {
-            const int k = bvh.spheres[i];
+            const LeafSphere<T>& sphere = bvh.leafSpheres[i];
             // Its own sphere was counted above; once is all.
-            const unsigned test = goingIn ? in & ~lanesInto(r, k, goingIn) : in;
-            if (test) shadowUpdate(spheres, transparency, k, r, distance, test, found);
+            const unsigned test = goingIn ? in & ~lanesInto(r, sphere.index, goingIn) : in;
+            if (test) shadowUpdate(spheres, transparency, sphere, r, distance, test, found);
             in &= ~found.opaque;
         }
         return ~found.opaque;

@@ -86,13 +86,15 @@ struct PacketRoots {
     unsigned valid = 0;                  // the same as bits: bit l for lane l
 };
 
+// `sphere` is spheres.leafSphere(k), from wherever it was read (the sphere
+// tree keeps copies in leaf order): the same values, so the same roots.
 template <typename T>
-inline PacketRoots<T> intersectPacket(const SphereSet<T>& spheres, int k, const RayPacket<T>& r,
-                                      unsigned lanes) {
+inline PacketRoots<T> intersectPacket(const SphereSet<T>& spheres, const LeafSphere<T>& sphere,
+                                      const RayPacket<T>& r, unsigned lanes) {
     using V = typename Simd<T>::type;
-    const T cx = spheres.centre[k].x, cy = spheres.centre[k].y, cz = spheres.centre[k].z;
-    const Vec<T>& centreLo = spheres.centreLo[k];
-    const T rrHi = spheres.rrHi[k], rrLo = spheres.rrLo[k];
+    const int k = sphere.index;
+    const T cx = sphere.centre.x, cy = sphere.centre.y, cz = sphere.centre.z;
+    const T rrHi = sphere.rrHi;
     PacketRoots<T> out;
     out.self = r.originSphere == T(k);
     lanes &= ~laneBits(out.self & ~r.intoOrigin);  // convex: leaving it, it cannot be hit again
@@ -101,13 +103,14 @@ inline PacketRoots<T> intersectPacket(const SphereSet<T>& spheres, int k, const 
     const V fx = r.ox - cx, fy = r.oy - cy, fz = r.oz - cz;
     const V b = fx * r.dx + fy * r.dy + fz * r.dz;
     const V ff = fx * fx + fy * fy + fz * fz;
-    V c = r.fromCamera ? V{} + spheres.cameraC[k] : ff - rrHi;
+    V c = r.fromCamera ? V{} + sphere.cameraC : ff - rrHi;
     const auto away = (b > T(0)) & (c > ff * (T(16) * std::numeric_limits<T>::epsilon()));
     const auto nearSurface = (c < ff * T(0.0625)) & (c > -(ff * T(0.0625)));
     if (!r.fromCamera) {
         for (unsigned fix = laneBits(nearSurface & ~away) & lanes; fix; fix &= fix - 1) {
             const int l = __builtin_ctz(fix);
-            c[l] = accurateOffsetSquared(r.origin(l), Vec<T>(cx, cy, cz), centreLo, rrHi, rrLo);
+            c[l] = accurateOffsetSquared(r.origin(l), Vec<T>(cx, cy, cz), spheres.centreLo[k], rrHi,
+                                         spheres.rrLo[k]);
         }
     }
     const V px = fx - b * r.dx, py = fy - b * r.dy, pz = fz - b * r.dz;
@@ -127,6 +130,12 @@ inline PacketRoots<T> intersectPacket(const SphereSet<T>& spheres, int k, const 
     out.tNear = ordered ? t0 : t1;
     out.tFar = ordered ? t1 : t0;
     return out;
+}
+
+template <typename T>
+inline PacketRoots<T> intersectPacket(const SphereSet<T>& spheres, int k, const RayPacket<T>& r,
+                                      unsigned lanes) {
+    return intersectPacket(spheres, spheres.leafSphere(k), r, lanes);
 }
 
 // Nearest hit per lane with t in (0, infinity): t, and the sphere index as T

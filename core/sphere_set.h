@@ -3,6 +3,7 @@
 // kernel runs (core/kernel_dispatch.h), so it lives outside the per-ISA namespace.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -10,6 +11,19 @@
 #include "sphere_intersect.h"
 
 namespace whitted {
+
+// What every sphere test reads of sphere `index` (intersectPacket()); the
+// rarely needed low terms stay in the SphereSet. The sphere tree keeps these in
+// leaf order (SphereBvh::leafSpheres), so the spheres of a leaf are one or two
+// cache lines rather than a line per array per sphere: a million spheres do
+// not fit in cache, and those lines were most of a render's misses.
+template <typename T>
+struct LeafSphere {
+    Vec<T> centre;
+    T rrHi;
+    T cameraC;
+    std::int32_t index;
+};
 
 // The scene's spheres as parallel arrays: all that intersection reads.
 //
@@ -27,6 +41,7 @@ struct SphereSet {
     std::vector<T> cameraC;                // accurateOffsetSquared() from the camera position
 
     int count() const { return static_cast<int>(centre.size()); }
+    LeafSphere<T> leafSphere(int k) const { return {centre[k], rrHi[k], cameraC[k], k}; }
 
     // A sphere of the double scene: centre == c + cLo exactly (a two-term double,
     // as a translation in double leaves it) and radius r, both in this set's frame.

@@ -129,7 +129,7 @@ PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache) {
         }
     }
     if (useBvh) {
-        s.bvh = sphereBvhFor<T>(centres, radii, bvhCache);
+        s.bvh = sphereBvhFor<T>(centres, radii, s.spheres, bvhCache);
         s.useBvh = true;
     }
     return s;

@@ -24,7 +24,7 @@
 namespace whitted {
 namespace {
 
-static_assert(sizeof(BvhNode<float>) == 32, "a float node is 32 bytes");
+static_assert(sizeof(BvhNode) == 32, "a node is 32 bytes, in float and double trees");
 
 std::uint32_t testSeed(std::uint32_t fallback) {
     const char* s = std::getenv("WHITTED_TEST_SEED");
@@ -246,24 +246,32 @@ std::pair<std::vector<glm::dvec3>, std::vector<double>> geometryOf(const Scene& 
 }
 
 // Build checks on the tree's own invariants.
+// The sphere indices of a tree's leaves, leaf after leaf.
+template <typename T>
+std::vector<int> leafIndices(const SphereBvh<T>& bvh) {
+    std::vector<int> indices;
+    for (const LeafSphere<T>& sphere : bvh.leafSpheres) indices.push_back(sphere.index);
+    return indices;
+}
+
 template <typename T>
 void expectWellFormed(const std::vector<glm::dvec3>& centres, const std::vector<double>& radii,
                       const SphereBvh<T>& bvh) {
     const int n = static_cast<int>(radii.size());
     std::vector<int> seen(n, 0);
     for (int k : bvh.direct) ++seen[k];
-    for (int k : bvh.spheres) ++seen[k];
+    for (const LeafSphere<T>& sphere : bvh.leafSpheres) ++seen[sphere.index];
     for (int i = 0; i < n; ++i) ASSERT_EQ(seen[i], 1) << "sphere " << i;
     EXPECT_LE(bvh.depth, kMaxBvhDepth);
     int leafSpheres = 0;
     std::vector<int> parents(bvh.nodes.size(), -1);
     for (int i = 0; i < static_cast<int>(bvh.nodes.size()); ++i) {
-        const BvhNode<T>& node = bvh.nodes[i];
+        const BvhNode& node = bvh.nodes[i];
         for (int a = 0; a < 3; ++a) ASSERT_LE(node.lo[a], node.hi[a]) << "node " << i;
         if (node.count > 0) {
             leafSpheres += node.count;
             for (int j = node.first; j < node.first + node.count; ++j) {
-                const int k = bvh.spheres[j];
+                const int k = bvh.leafSpheres[j].index;
                 for (int a = 0; a < 3; ++a) {
                     EXPECT_LE(double(node.lo[a]), centres[k][a] - radii[k]) << "sphere " << k;
                     EXPECT_GE(double(node.hi[a]), centres[k][a] + radii[k]) << "sphere " << k;
@@ -282,7 +290,7 @@ void expectWellFormed(const std::vector<glm::dvec3>& centres, const std::vector<
             }
         }
     }
-    EXPECT_EQ(leafSpheres, static_cast<int>(bvh.spheres.size()));
+    EXPECT_EQ(leafSpheres, static_cast<int>(bvh.leafSpheres.size()));
 }
 
 TEST(BvhBuild, EverySphereInOneLeafInsideNestedBoxes) {
@@ -317,9 +325,9 @@ TEST(BvhBuild, SameTreeOnAnyNumberOfThreads) {
         const SphereBvh<float> tree = buildSphereBvh<float>(centres, radii, many);
         ASSERT_EQ(tree.nodes.size(), alone.nodes.size()) << threads << " threads";
         for (std::size_t i = 0; i < tree.nodes.size(); ++i)
-            ASSERT_EQ(std::memcmp(&tree.nodes[i], &alone.nodes[i], sizeof(BvhNode<float>)), 0)
+            ASSERT_EQ(std::memcmp(&tree.nodes[i], &alone.nodes[i], sizeof(BvhNode)), 0)
                 << "node " << i << ", " << threads << " threads";
-        EXPECT_EQ(tree.spheres, alone.spheres) << threads << " threads";
+        EXPECT_EQ(leafIndices(tree), leafIndices(alone)) << threads << " threads";
         EXPECT_EQ(tree.direct, alone.direct) << threads << " threads";
     }
 }
@@ -378,8 +386,8 @@ TEST(BvhRefit, RefitBoxesHoldTheMovedSpheres) {
     }
     ASSERT_TRUE(refitSphereBvh(bvh, centres, radii));
     expectWellFormed(centres, radii, bvh);
-    centres[bvh.spheres[0]] = glm::dvec3(1e18, 0, 0);  // beyond what float boxes may hold
-    const BvhNode<float> root = bvh.nodes[0];
+    centres[bvh.leafSpheres[0].index] = glm::dvec3(1e18, 0, 0);  // beyond what float boxes may hold
+    const BvhNode root = bvh.nodes[0];
     EXPECT_FALSE(refitSphereBvh(bvh, centres, radii));
     EXPECT_EQ(std::memcmp(&root, &bvh.nodes[0], sizeof root), 0)
         << "a refused refit changes nothing";
@@ -391,7 +399,21 @@ TEST(BvhBuild, HugeFloorStaysOutOfTheTree) {
     std::vector<double> radii = {0.6, 0.6, 0.6, 99999};
     const SphereBvh<float> bvh = buildSphereBvh<float>(centres, radii);
     EXPECT_EQ(bvh.direct, std::vector<std::int32_t>{3});
-    EXPECT_EQ(bvh.spheres.size(), 3u);
+    EXPECT_EQ(bvh.leafSpheres.size(), 3u);
+}
+
+// Double trees keep their boxes in float (BvhNode): a sphere float cannot
+// bound stays out of the tree, and the rest are held by boxes rounded outward.
+TEST(BvhBuild, DoubleTreeKeepsWhatFloatCannotBoundOutOfTheTree) {
+    std::vector<glm::dvec3> centres = {{1, 0.2, 2}, {-0.95, 0.31, 1.25}, {2e38, 0, 5}};
+    std::vector<double> radii = {0.6, 0.6, 1.0};
+    for (int i = 0; i < 20; ++i) {
+        centres.push_back({0.1 * i + 1e-9, 1.0 / 3.0, 2.0 + 1e-12 * i});
+        radii.push_back(0.05 + 1e-13 * i);
+    }
+    const SphereBvh<double> bvh = buildSphereBvh<double>(centres, radii);
+    EXPECT_EQ(bvh.direct, std::vector<std::int32_t>{2});
+    expectWellFormed(centres, radii, bvh);
 }
 
 TEST(BvhBuild, CoincidentSpheresMakeABoundedTree) {

@@ -31,11 +31,11 @@ using RefArray = std::vector<Ref<T>, LargeBufferAllocator<Ref<T>>>;
 constexpr int kSahDepth = 48;
 // Cost of visiting a node against testing one sphere, for the SAH. A leaf's
 // spheres lie side by side (SphereBvh::leafSpheres), so a sphere more in a leaf
-// costs little beside a node more, whose box is another cache line: 4, with
-// leaves of up to 8 (BvhBuildOptions), gave the tree half the nodes of 1 and
-// 4, for 3% more instructions and 10% fewer cache misses in a render, and
-// 35 to 42 bytes per sphere instead of 65 to 86 (docs/performance.md).
-constexpr double kTraversalCost = 4.0;
+// costs little beside a node more, whose box is another cache line. 5, with
+// leaves of up to 8 (BvhBuildOptions), against 1 and 4: 3% more instructions
+// and 10% fewer cache misses in a render, and 35 to 38 bytes per sphere in a
+// float tree (59 to 62 in double) instead of 65 to 86 (docs/performance.md).
+constexpr double kTraversalCost = 5.0;
 // Ranges with fewer spheres than this are built as one job on one thread; the
 // levels above are split first, each level's ranges in parallel. Small enough to give two
 // cores some dozens of jobs at 100k spheres, large enough that a job's set-up

@@ -210,6 +210,20 @@ std::optional<SceneProblem> validateEdit(const Scene& before, const Scene& after
     return std::nullopt;
 }
 
+// With every name unchanged and the scene before valid, only the changed item's
+// own rules can fail, as validateEdit says.
+std::optional<SceneProblem> validateSphereEdit(const Scene& after, size_t index) {
+    return checkSphere(after, index);
+}
+
+std::optional<SceneProblem> validateLightEdit(const Scene& after, size_t index) {
+    return checkLight(after.lights[index], index);
+}
+
+std::optional<SceneProblem> validateMaterialEdit(const Scene& after, size_t index) {
+    return checkMaterial(after.materials[index], indexed("materials", index));
+}
+
 // ---- canonical writer ------------------------------------------------------
 
 namespace {

@@ -2,6 +2,7 @@
 // validation, save byte-stable and atomically.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -65,6 +66,13 @@ std::optional<SceneProblem> validateScene(const Scene& scene);
 // editor validates every edit, and a scene of 100,000 spheres spent most of
 // an edit hashing names no edit had touched. Same result, same message.
 std::optional<SceneProblem> validateEdit(const Scene& before, const Scene& after);
+
+// validateEdit for an edit of a valid scene that changed one item alone and
+// kept its name: `after` is the scene after the edit, `index` the item's place
+// in its list. Constant time but for a sphere's material, looked up by name.
+std::optional<SceneProblem> validateSphereEdit(const Scene& after, std::size_t index);
+std::optional<SceneProblem> validateLightEdit(const Scene& after, std::size_t index);
+std::optional<SceneProblem> validateMaterialEdit(const Scene& after, std::size_t index);
 
 // The canonical text of a scene: keys in SPEC order, one object per line inside
 // lists, numbers in shortest round-trip form. Equal scenes give equal bytes.

@@ -37,10 +37,7 @@ std::function<QString()> MaterialPage::changeText(const QString& what) const {
 }
 
 void MaterialPage::editMaterial(const QString& what, const std::function<void(Material&)>& change) {
-    if (!editOrTell(this, doc_, changeText(what)(), [this, &change](Scene& s) {
-            if (Material* m = itemAt(s.materials, index_)) change(*m);
-        }))
-        refresh();
+    if (!editItemOrTell(this, doc_, index_, changeText(what)(), change)) refresh();
 }
 
 // Shows the preset the material's finish is, or "Custom"; choosing one
@@ -59,11 +56,10 @@ QComboBox* MaterialPage::buildPresetChooser() {
         const int preset = preset_->itemData(row).toInt();
         if (preset < 0) return refresh();
         const MaterialPreset& p = materialPresets()[static_cast<std::size_t>(preset)];
-        if (!editOrTell(this, doc_,
-                        tr("Apply preset %1 to %2").arg(preset_->itemText(row), materialName()),
-                        [this, &p](Scene& s) {
-                            if (Material* m = itemAt(s.materials, index_)) *m = withPreset(*m, p);
-                        }))
+        if (!editItemOrTell<Material>(
+                this, doc_, index_,
+                tr("Apply preset %1 to %2").arg(preset_->itemText(row), materialName()),
+                [&p](Material& m) { m = withPreset(m, p); }))
             refresh();
     });
     return preset_;
@@ -78,12 +74,10 @@ void MaterialPage::addCheckerRows(QFormLayout* form) {
     // The size field keeps showing its last value while the checker is off, so
     // turning it back on restores what the user had.
     std::vector<DoubleField*> unused;
-    checkerSize_ = makeField(
+    checkerSize_ = makeItemField<Material>(
         doc_, QStringLiteral("materialCheckerSize"), kPositiveLength,
-        [this](auto& s) {
-            auto* m = itemAt(s.materials, index_);
-            return m && m->checker ? &m->checker->size : nullptr;
-        },
+        [this](const Scene&) { return index_; },
+        [](auto& m) { return m.checker ? &m.checker->size : nullptr; },
         changeText(tr("checker size")), unused);
     {
         const QSignalBlocker block(checkerSize_->spinBox());

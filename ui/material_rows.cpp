@@ -12,9 +12,9 @@ MaterialRows::MaterialRows(SceneDocument* doc, QWidget* owner, QFormLayout* form
     : doc_(doc), locate_(std::move(locate)), text_(std::move(text)), diffuse_(new ColorButton) {
     diffuse_->setObjectName(prefix + QStringLiteral("Diffuse"));
     QObject::connect(diffuse_, &ColorButton::colorEdited, owner, [this, owner](const Vec3& c) {
-        editOrTell(owner, doc_, text_(QObject::tr("diffuse colour")), [this, c](Scene& s) {
-            if (Material* m = itemAt(s.materials, locate_(s))) m->diffuse = c;
-        });
+        editItemOrTell<Material>(owner, doc_, locate_(doc_->scene()),
+                                 text_(QObject::tr("diffuse colour")),
+                                 [c](Material& m) { m.diffuse = c; });
     });
     const bool all = extent == Extent::All;
     // On a sphere's page "Colour" is what the user looks for; the material page
@@ -44,12 +44,8 @@ MaterialRows::MaterialRows(SceneDocument* doc, QWidget* owner, QFormLayout* form
 
 DoubleField* MaterialRows::scalar(const QString& name, const DoubleFieldSpec& spec,
                                   double Material::*member, const QString& what) {
-    return makeField(
-        doc_, name, spec,
-        [this, member](auto& s) {
-            auto* m = itemAt(s.materials, locate_(s));
-            return m ? &(m->*member) : nullptr;
-        },
+    return makeItemField<Material>(
+        doc_, name, spec, locate_, [member](auto& m) { return &(m.*member); },
         [this, what] { return text_(what); }, fields_);
 }
 

@@ -219,12 +219,12 @@ QSize NumberSpinBox::minimumSizeHint() const {
 }
 
 DoubleField::DoubleField(SceneDocument* doc, const QString& objectName, const DoubleFieldSpec& spec,
-                         Getter get, Setter set, TextFn undoText, QWidget* parent)
+                         Getter get, Commit edit, TextFn undoText, QWidget* parent)
     : QWidget(parent),
       doc_(doc),
       spec_(spec),
       get_(std::move(get)),
-      set_(std::move(set)),
+      commit_(std::move(edit)),
       undoText_(std::move(undoText)),
       spin_(new NumberSpinBox(this)) {
     setObjectName(objectName + QStringLiteral("Field"));
@@ -328,7 +328,18 @@ void DoubleField::refresh() {
 
 void DoubleField::commit(double value) {
     if (!doc_) return;
-    if (!editOrTell(this, doc_, undoText_(), [&](Scene& scene) { set_(scene, value); })) refresh();
+    QString error;
+    if (commit_(*doc_, undoText_(), value, &error)) return;
+    showRefusal(this, error);
+    refresh();
+}
+
+DoubleField::Commit sceneCommit(std::function<void(Scene&, double)> set) {
+    return [set = std::move(set)](SceneDocument& doc, const QString& text, double value,
+                                  QString* error) {
+        return doc.edit(
+            text, [&](Scene& scene) { set(scene, value); }, error);
+    };
 }
 
 IntField::IntField(SceneDocument* doc, const QString& objectName, int min, int max, Getter get,

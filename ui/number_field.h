@@ -103,17 +103,21 @@ struct DoubleFieldSpec {
 };
 
 // A spin box, and a slider when the spec asks for one, editing one double of the
-// scene. `get` is only called by refresh(); `set` must ignore a scene in which
-// its item no longer exists. `undoText` names the step ("Change radius of ball").
+// scene. `get` is only called by refresh(); `edit` makes the edit (sceneCommit()
+// for a whole-scene edit, or an item edit) and must change nothing when its item
+// no longer exists. `undoText` names the step ("Change radius of ball").
 class DoubleField : public QWidget {
     Q_OBJECT
   public:
     using Getter = std::function<double(const Scene&)>;
-    using Setter = std::function<void(Scene&, double)>;
+    // Puts `value` into the document as one edit named `text`; false, with the
+    // reason in `error`, when the document refuses it.
+    using Commit =
+        std::function<bool(SceneDocument& doc, const QString& text, double value, QString* error)>;
     using TextFn = std::function<QString()>;
 
     DoubleField(SceneDocument* doc, const QString& objectName, const DoubleFieldSpec& spec,
-                Getter get, Setter set, TextFn undoText, QWidget* parent = nullptr);
+                Getter get, Commit edit, TextFn undoText, QWidget* parent = nullptr);
     ~DoubleField() override;
 
     // Shows the scene's value; emits nothing.
@@ -135,12 +139,16 @@ class DoubleField : public QWidget {
     QPointer<SceneDocument> doc_;
     DoubleFieldSpec spec_;
     Getter get_;
-    Setter set_;
+    Commit commit_;
     TextFn undoText_;
     NumberSpinBox* spin_;
     QSlider* slider_ = nullptr;
     bool gestureOpen_ = false;
 };
+
+// A DoubleField's commit for a value anywhere in the scene: SceneDocument::edit
+// of a copy that `set` changes.
+DoubleField::Commit sceneCommit(std::function<void(Scene&, double)> set);
 
 // A spin box editing one int of the scene; same contract as DoubleField.
 class IntField : public QSpinBox {
@@ -170,5 +178,15 @@ void showRefusal(QWidget* parent, const QString& reason);
 // Makes one edit; a refusal is shown to the user over `from`. True when made.
 bool editOrTell(QWidget* from, SceneDocument* doc, const QString& text,
                 const std::function<void(Scene&)>& change);
+
+// The same for an edit of one item (SceneDocument::editItem).
+template <class T>
+bool editItemOrTell(QWidget* from, SceneDocument* doc, int index, const QString& text,
+                    const std::function<void(T&)>& change) {
+    QString error;
+    if (doc->editItem<T>(index, text, change, &error)) return true;
+    showRefusal(from, error);
+    return false;
+}
 
 }  // namespace whitted::ui

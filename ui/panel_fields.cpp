@@ -7,25 +7,16 @@
 
 namespace whitted::ui {
 
-QWidget* makeVectorRow(SceneDocument* doc, const QString& name, const DoubleFieldSpec& spec,
-                       std::function<const Vec3*(const Scene&)> get, VectorAccess set,
-                       const DoubleField::TextFn& text, std::vector<DoubleField*>& fields) {
+QWidget* makeVectorRow(const QString& name,
+                       const std::function<DoubleField*(int axis, const QString& name)>& make,
+                       std::vector<DoubleField*>& fields) {
     auto* row = new QWidget;
     auto* layout = new QHBoxLayout(row);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(4);
     static const char* const kAxes[] = {"X", "Y", "Z"};
     for (int axis = 0; axis < 3; ++axis) {
-        auto* field = new DoubleField(
-            doc, name + QLatin1String(kAxes[axis]), spec,
-            [get, axis](const Scene& s) {
-                const Vec3* v = get(s);
-                return v ? (*v)[axis] : 0.0;
-            },
-            [set, axis](Scene& s, double value) {
-                if (Vec3* v = set(s)) (*v)[axis] = value;
-            },
-            text);
+        DoubleField* field = make(axis, name + QLatin1String(kAxes[axis]));
         field->spinBox()->setToolTip(QString(QLatin1Char('x' + axis)));
         fields.push_back(field);
         layout->addWidget(field);

@@ -49,28 +49,93 @@ DoubleField* makeField(SceneDocument* doc, const QString& name, const DoubleFiel
             const double* v = access(s);
             return v ? *v : 0.0;
         },
-        [access](Scene& s, double value) {
+        sceneCommit([access](Scene& s, double value) {
             if (double* v = access(s)) *v = value;
+        }),
+        std::move(text));
+    fields.push_back(field);
+    return field;
+}
+
+// Which item of type T (Sphere, Light, Material) a page's fields edit: its
+// index in its list, found in the scene (-1 or out of range: none).
+using Locate = std::function<int(const Scene&)>;
+
+// A field for the double that `access(item)` points to (nullptr: none) in the
+// item `locate` finds. Its edits are item edits (SceneDocument::editItem), in
+// time proportional to the item, not the scene.
+template <class T, class Access>
+DoubleField* makeItemField(SceneDocument* doc, const QString& name, const DoubleFieldSpec& spec,
+                           Locate locate, Access access, DoubleField::TextFn text,
+                           std::vector<DoubleField*>& fields) {
+    auto* field = new DoubleField(
+        doc, name, spec,
+        [locate, access](const Scene& s) {
+            const T* item = itemAt(itemsOf<T>(s), locate(s));
+            const double* v = item ? access(*item) : nullptr;
+            return v ? *v : 0.0;
+        },
+        [locate, access](SceneDocument& d, const QString& text, double value, QString* error) {
+            return d.editItem<T>(
+                locate(d.scene()), text,
+                [&](T& item) {
+                    if (double* v = access(item)) *v = value;
+                },
+                error);
         },
         std::move(text));
     fields.push_back(field);
     return field;
 }
 
-// Three fields in a row, named <name>X, <name>Y, <name>Z, for the Vec3 at `at(scene)`.
-using VectorAccess = std::function<Vec3*(Scene&)>;
-QWidget* makeVectorRow(SceneDocument* doc, const QString& name, const DoubleFieldSpec& spec,
-                       std::function<const Vec3*(const Scene&)> get, VectorAccess set,
-                       const DoubleField::TextFn& text, std::vector<DoubleField*>& fields);
+// Three fields in a row, named <name>X, <name>Y, <name>Z, made by `field(axis,
+// objectName)`.
+QWidget* makeVectorRow(const QString& name,
+                       const std::function<DoubleField*(int axis, const QString& name)>& field,
+                       std::vector<DoubleField*>& fields);
 
-// The generic-lambda form used by the pages: one accessor for both constnesses.
+// A row for the Vec3 that `access(scene)` points to (nullptr: none); one
+// generic accessor for both constnesses.
 template <class Access>
 QWidget* makeVectorRow(SceneDocument* doc, const QString& name, const DoubleFieldSpec& spec,
                        Access access, const DoubleField::TextFn& text,
                        std::vector<DoubleField*>& fields) {
     return makeVectorRow(
-        doc, name, spec, [access](const Scene& s) -> const Vec3* { return access(s); },
-        [access](Scene& s) -> Vec3* { return access(s); }, text, fields);
+        name,
+        [&](int axis, const QString& objectName) {
+            return new DoubleField(
+                doc, objectName, spec,
+                [access, axis](const Scene& s) {
+                    const Vec3* v = access(s);
+                    return v ? (*v)[axis] : 0.0;
+                },
+                sceneCommit([access, axis](Scene& s, double value) {
+                    if (Vec3* v = access(s)) (*v)[axis] = value;
+                }),
+                text);
+        },
+        fields);
+}
+
+// A row for the Vec3 that `access(item)` points to in the item `locate` finds,
+// edited as makeItemField's fields are.
+template <class T, class Access>
+QWidget* makeItemVectorRow(SceneDocument* doc, const QString& name, const DoubleFieldSpec& spec,
+                           Locate locate, Access access, const DoubleField::TextFn& text,
+                           std::vector<DoubleField*>& fields) {
+    return makeVectorRow(
+        name,
+        [&](int axis, const QString& objectName) {
+            std::vector<DoubleField*> one;
+            return makeItemField<T>(
+                doc, objectName, spec, locate,
+                [access, axis](auto& item) {
+                    auto* v = access(item);
+                    return v ? &(*v)[axis] : nullptr;
+                },
+                text, one);
+        },
+        fields);
 }
 
 QFormLayout* makeForm(QWidget* page);

@@ -121,9 +121,9 @@ void PresetControls::refresh() {
     error_->setText(errorText(now));
     // Each preset's own prediction where the user hovers before choosing.
     for (std::size_t i = 0; i < kRenderPresets.size(); ++i) {
-        Scene with = scene;
-        applyPreset(kRenderPresets[i], with.render);
-        const Prediction p = record_->predict(with);
+        RenderSettings with = scene.render;
+        applyPreset(kRenderPresets[i], with);
+        const Prediction p = record_->predict(scene, &with);
         combo_->setItemData(int(i) + 1, tr("Time: %1\nError: %2").arg(timeText(p), errorText(p)),
                             Qt::ToolTipRole);
     }

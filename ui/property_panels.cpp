@@ -64,43 +64,34 @@ std::function<QString()> PropertyPanel::changeText(const QString& what) const {
     return [this, what] { return tr("Change %1 of %2").arg(what, itemLabel()); };
 }
 
-void PropertyPanel::editItem(const QString& what, const std::function<void(Scene&)>& change) {
-    if (!editOrTell(this, doc_, changeText(what)(), change)) refresh();
+void PropertyPanel::editLight(const QString& what, const std::function<void(Light&)>& change) {
+    if (!editItemOrTell(this, doc_, index_, changeText(what)(), change)) refresh();
 }
 
 QWidget* PropertyPanel::buildLightPage() {
     auto* page = new QWidget;
     page->setObjectName(QStringLiteral("lightPage"));
     QFormLayout* form = makeForm(page);
-    auto light = [this](auto& s) { return itemAt(s.lights, index_); };
+    const Locate locate = [this](const Scene&) { return index_; };
 
     lightName_ = makeNameLabel(QStringLiteral("lightName"));
     form->addRow(tr("Light:"), lightName_);
-    form->addRow(tr("Position:"), makeVectorRow(
-                                      doc_, QStringLiteral("lightPosition"), kCoordinate,
-                                      [light](auto& s) {
-                                          auto* l = light(s);
-                                          return l ? &l->position : nullptr;
-                                      },
+    form->addRow(tr("Position:"), makeItemVectorRow<Light>(
+                                      doc_, QStringLiteral("lightPosition"), kCoordinate, locate,
+                                      [](auto& l) { return &l.position; },
                                       changeText(tr("position")), lightFields_));
 
     lightColor_ = new ColorButton;
     lightColor_->setObjectName(QStringLiteral("lightColor"));
-    connect(lightColor_, &ColorButton::colorEdited, this, [this](const Vec3& c) {
-        editItem(tr("colour"), [this, c](Scene& s) {
-            if (Light* l = itemAt(s.lights, index_)) l->color = c;
-        });
-    });
+    connect(lightColor_, &ColorButton::colorEdited, this,
+            [this](const Vec3& c) { editLight(tr("colour"), [c](Light& l) { l.color = c; }); });
     form->addRow(tr("Colour:"), lightColor_);
-    form->addRow(tr("Intensity:"),
-                 makeField(
-                     doc_, QStringLiteral("lightIntensity"),
-                     DoubleFieldSpec::range(0.0, 1000.0, 0.1).linearSlider(0.0, 10.0),
-                     [light](auto& s) {
-                         auto* l = light(s);
-                         return l ? &l->intensity : nullptr;
-                     },
-                     changeText(tr("intensity")), lightFields_));
+    form->addRow(
+        tr("Intensity:"),
+        makeItemField<Light>(
+            doc_, QStringLiteral("lightIntensity"),
+            DoubleFieldSpec::range(0.0, 1000.0, 0.1).linearSlider(0.0, 10.0), locate,
+            [](auto& l) { return &l.intensity; }, changeText(tr("intensity")), lightFields_));
     return page;
 }
 

@@ -38,7 +38,7 @@ class PropertyPanel : public QWidget {
     QString itemLabel() const;  // the shown item's name, for undo texts
     // An undo text "<verb> <what> of <item>"; the item name is read when the edit happens.
     std::function<QString()> changeText(const QString& what) const;
-    void editItem(const QString& what, const std::function<void(Scene&)>& change);
+    void editLight(const QString& what, const std::function<void(Light&)>& change);
 
     SceneDocument* doc_;
     ItemKind kind_ = ItemKind::Sphere;

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <shared_mutex>
+#include <utility>
 
 #include "image_convert.h"
 
@@ -68,27 +69,26 @@ void RenderWorker::run() {
             pending_.reset();
             generation = generation_.load();
         }
-        renderOne(scene, generation);
+        renderOne(std::move(scene), generation);
     }
 }
 
-Scene viewSized(const Scene& scene) {
-    Scene view = scene;
+Scene viewSized(Scene scene) {
     const int longest = std::max(scene.render.width, scene.render.height);
     if (longest > kMaxViewSize) {
         auto scaled = [&](int size) {
             return std::max(1, int(std::lround(double(size) * kMaxViewSize / longest)));
         };
-        view.render.width = scaled(scene.render.width);
-        view.render.height = scaled(scene.render.height);
+        scene.render.width = scaled(scene.render.width);
+        scene.render.height = scaled(scene.render.height);
     }
-    return view;
+    return scene;
 }
 
-void RenderWorker::renderOne(const Scene& requested, quint64 generation) {
+void RenderWorker::renderOne(Scene requested, quint64 generation) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
-    const Scene scene = viewSized(requested);
+    const Scene scene = viewSized(std::move(requested));
     const int width = scene.render.width, height = scene.render.height;
     QImage display(width, height, QImage::Format_RGB32);
     display.fill(Qt::black);

@@ -33,8 +33,9 @@ namespace whitted::ui {
 // gigabytes per frame. Export renders the full size.
 inline constexpr int kMaxViewSize = 2048;
 
-// The scene as the view renders it: render size capped at kMaxViewSize.
-Scene viewSized(const Scene& scene);
+// The scene as the view renders it: render size capped at kMaxViewSize. By
+// value, so that the worker moves its request in rather than copying it.
+Scene viewSized(Scene scene);
 
 struct RenderFrame {
     quint64 generation = 0;
@@ -83,7 +84,7 @@ class RenderWorker : public QObject {
 
   private:
     void run();
-    void renderOne(const Scene& requested, quint64 generation);
+    void renderOne(Scene requested, quint64 generation);
     // The render thread's frames pass through an outbox guarded by our own
     // mutex rather than inside Qt's queued signal: the hand-over is then a
     // synchronisation ThreadSanitizer can see (Qt's event queue is not

@@ -1,5 +1,9 @@
 #include "scene_document.h"
 
+#include <optional>
+#include <type_traits>
+#include <utility>
+
 #include <QElapsedTimer>
 #include <QUndoCommand>
 
@@ -15,6 +19,10 @@ namespace whitted::ui {
 template <class T>
 class ListDelta {
   public:
+    ListDelta() = default;  // nothing changed
+    // Item `index` alone changed, from `before` to `after` (an item edit).
+    ListDelta(std::size_t index, T before, T after)
+        : index_{index}, before_{std::move(before)}, after_{std::move(after)} {}
     ListDelta(const std::vector<T>& before, const std::vector<T>& after) {
         if (before.size() != after.size()) {
             whole_ = true;
@@ -60,6 +68,19 @@ struct SceneDelta {
         headBefore = head(before);
         headAfter = head(after);
     }
+    // An item edit of `scene`: one item of one list, the rest as it is.
+    template <class T>
+    static SceneDelta item(const Scene& scene, std::size_t index, T before, T after) {
+        SceneDelta delta(head(scene));
+        ListDelta<T> change(index, std::move(before), std::move(after));
+        if constexpr (std::is_same_v<T, Sphere>)
+            delta.spheres = std::move(change);
+        else if constexpr (std::is_same_v<T, Light>)
+            delta.lights = std::move(change);
+        else
+            delta.materials = std::move(change);
+        return delta;
+    }
     // The scene without its lists.
     static Scene head(const Scene& s) {
         Scene h;
@@ -75,13 +96,25 @@ struct SceneDelta {
     ListDelta<Sphere> spheres;
     ListDelta<Light> lights;
     ListDelta<Material> materials;
+
+  private:
+    explicit SceneDelta(const Scene& head) : headBefore(head), headAfter(head) {}
 };
+
+template <class T>
+std::optional<SceneProblem> validateItemEdit(const Scene& after, std::size_t index) {
+    if constexpr (std::is_same_v<T, Sphere>)
+        return validateSphereEdit(after, index);
+    else if constexpr (std::is_same_v<T, Light>)
+        return validateLightEdit(after, index);
+    else
+        return validateMaterialEdit(after, index);
+}
 
 class SceneEditCommand : public QUndoCommand {
   public:
-    SceneEditCommand(SceneDocument* doc, const Scene& before, const Scene& after,
-                     const QString& text, EditRun run)
-        : QUndoCommand(text), doc_(doc), delta_(before, after) {
+    SceneEditCommand(SceneDocument* doc, SceneDelta delta, const QString& text, EditRun run)
+        : QUndoCommand(text), doc_(doc), delta_(std::move(delta)) {
         joinable_ = run == EditRun::Join && delta_.headOnly();
         sinceLast_.start();
     }
@@ -184,10 +217,47 @@ bool SceneDocument::edit(const QString& text, const std::function<void(Scene&)>&
         if (error) *error = editProblemText(*problem, after);
         return false;
     }
-    undo_.push(new SceneEditCommand(this, scene_, after, text, run));
-    runOpen_ = run == EditRun::Join;
+    push(SceneDelta(scene_, after), text, run);
     return true;
 }
+
+void SceneDocument::push(SceneDelta delta, const QString& text, EditRun run) {
+    undo_.push(new SceneEditCommand(this, std::move(delta), text, run));
+    runOpen_ = run == EditRun::Join;
+}
+
+template <class T>
+bool SceneDocument::editItem(int index, const QString& text, const std::function<void(T&)>& change,
+                             QString* error) {
+    std::vector<T>& list = itemsOf<T>(scene_);
+    if (index < 0 || index >= static_cast<int>(list.size())) return true;
+    const auto i = static_cast<std::size_t>(index);
+    T after = list[i];
+    change(after);
+    if (after == list[i]) return true;
+    // A new name may clash with any other item's, or (a material's) leave
+    // spheres without theirs; and a first state reset() was given invalid
+    // needs the whole scene checked. Both are edit()'s, which does it all.
+    if (after.name != list[i].name || !(undo_.index() > 0 || resetSceneValid_))
+        return edit(
+            text, [&](Scene& s) { itemsOf<T>(s)[i] = after; }, error);
+    // Checked, and a refusal worded, in the scene as it would be: the item is
+    // swapped in for that and back out before anyone can see it.
+    std::swap(list[i], after);
+    std::optional<SceneProblem> problem = validateItemEdit<T>(scene_, i);
+    if (problem && error) *error = editProblemText(*problem, scene_);
+    std::swap(list[i], after);
+    if (problem) return false;
+    push(SceneDelta::item(scene_, i, list[i], std::move(after)), text, EditRun::Separate);
+    return true;
+}
+
+template bool SceneDocument::editItem<Sphere>(int, const QString&,
+                                              const std::function<void(Sphere&)>&, QString*);
+template bool SceneDocument::editItem<Light>(int, const QString&,
+                                             const std::function<void(Light&)>&, QString*);
+template bool SceneDocument::editItem<Material>(int, const QString&,
+                                                const std::function<void(Material&)>&, QString*);
 
 void SceneDocument::beginGesture(const QString& text) {
     if (gestureDepth_++ == 0) undo_.beginMacro(text);

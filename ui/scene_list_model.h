@@ -30,7 +30,6 @@ class SceneListModel : public QAbstractListModel {
 
   private:
     void onStructureChanged();
-    void onSceneChanged();
 
     SceneDocument* doc_;
     ItemKind kind_;

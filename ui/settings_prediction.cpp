@@ -126,15 +126,16 @@ Coverage fromMeasure(const MeasureResults& m, const RenderSettings& want, Predic
 }  // namespace
 
 bool sameSceneContent(const Scene& a, const Scene& b) {
-    Scene bWithA = b;
-    bWithA.render = a.render;
-    return a == bWithA;
+    // Field by field rather than comparing a copy with a's settings: the
+    // editor asks on every edit, and a scene may hold 100,000 spheres.
+    return a.camera == b.camera && a.background == b.background && a.ambient == b.ambient &&
+           a.materials == b.materials && a.lights == b.lights && a.spheres == b.spheres;
 }
 
 Prediction predictSettings(const Scene& scene, const std::vector<EditorRender>& renders,
-                           const MeasureResults* measure) {
+                           const MeasureResults* measure, const RenderSettings* settings) {
     Prediction p;
-    const RenderSettings& want = scene.render;
+    const RenderSettings& want = settings ? *settings : scene.render;
     if (!measure) {
         p.errorSource = QObject::tr("Measure gives an error prediction");
     } else if (!sameSceneContent(scene, measure->scene)) {

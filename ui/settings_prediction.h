@@ -46,7 +46,8 @@ struct Prediction {
 // hold for any settings of the scene it measured, and for nothing else.
 bool sameSceneContent(const Scene& a, const Scene& b);
 
-// Predicts time and error of rendering `scene` with its own settings.
+// Predicts time and error of rendering `scene` with `settings` (its own when
+// not given; a preset's without a copy of the scene).
 // `renders` is the editor's history, newest last; `measure` may be null.
 //  - Both from Measure when its grid holds the settings at the scene's size.
 //  - Otherwise the time from the editor's renders: the newest one with the
@@ -55,6 +56,6 @@ bool sameSceneContent(const Scene& a, const Scene& b);
 //  - The error interpolated between Measure's neighbouring sample counts (log-
 //    log, as error falls like a power of the samples), else none, with the reason.
 Prediction predictSettings(const Scene& scene, const std::vector<EditorRender>& renders,
-                           const MeasureResults* measure);
+                           const MeasureResults* measure, const RenderSettings* settings = nullptr);
 
 }  // namespace whitted::ui

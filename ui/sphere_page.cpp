@@ -32,6 +32,7 @@ SpherePage::SpherePage(SceneDocument* doc, QWidget* parent)
     setObjectName(QStringLiteral("spherePage"));
     QFormLayout* form = makeForm(this);
     auto sphere = [this](auto& s) { return itemAt(s.spheres, index_); };
+    const Locate locate = [this](const Scene&) { return index_; };
     auto text = [this](const QString& what) {
         return [this, what] { return tr("Change %1 of %2").arg(what, sphereName()); };
     };
@@ -41,20 +42,14 @@ SpherePage::SpherePage(SceneDocument* doc, QWidget* parent)
         const Sphere* sp = sphere(s);
         return centreStep(sp ? sp->radius : 1.0);
     });
-    form->addRow(tr("Centre:"), makeVectorRow(
-                                    doc_, QStringLiteral("sphereCenter"), centre,
-                                    [sphere](auto& s) {
-                                        auto* sp = sphere(s);
-                                        return sp ? &sp->center : nullptr;
-                                    },
-                                    text(tr("centre")), fields_));
-    form->addRow(tr("Radius:"), makeField(
-                                    doc_, QStringLiteral("sphereRadius"), kLength,
-                                    [sphere](auto& s) {
-                                        auto* sp = sphere(s);
-                                        return sp ? &sp->radius : nullptr;
-                                    },
-                                    text(tr("radius")), fields_));
+    form->addRow(tr("Centre:"),
+                 makeItemVectorRow<Sphere>(
+                     doc_, QStringLiteral("sphereCenter"), centre, locate,
+                     [](auto& sp) { return &sp.center; }, text(tr("centre")), fields_));
+    form->addRow(tr("Radius:"),
+                 makeItemField<Sphere>(
+                     doc_, QStringLiteral("sphereRadius"), kLength, locate,
+                     [](auto& sp) { return &sp.radius; }, text(tr("radius")), fields_));
     form->addRow(tr("Material:"), buildMaterialChoice());
     form->addRow(QString(), users_);  // "Shared by 3 spheres" says what it is
     materialRows_ = std::make_unique<MaterialRows>(
@@ -78,10 +73,9 @@ QWidget* SpherePage::buildMaterialChoice() {
     connect(material_, &QComboBox::currentIndexChanged, this, [this](int i) {
         if (i < 0 || i >= static_cast<int>(doc_->scene().materials.size())) return;
         const std::string material = doc_->scene().materials[i].name;
-        if (!editOrTell(this, doc_, tr("Change material of %1").arg(sphereName()),
-                        [this, material](Scene& s) {
-                            if (Sphere* sp = itemAt(s.spheres, index_)) sp->material = material;
-                        }))
+        if (!editItemOrTell<Sphere>(this, doc_, index_,
+                                    tr("Change material of %1").arg(sphereName()),
+                                    [material](Sphere& sp) { sp.material = material; }))
             refresh();
     });
     makeUnique_ = new QPushButton(tr("Make unique"));

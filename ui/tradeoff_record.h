@@ -29,8 +29,8 @@ class TradeoffRecord : public QObject {
     // Forgets everything: another scene was opened.
     void clear();
 
-    Prediction predict(const Scene& scene) const {
-        return predictSettings(scene, renders_, measure());
+    Prediction predict(const Scene& scene, const RenderSettings* settings = nullptr) const {
+        return predictSettings(scene, renders_, measure(), settings);
     }
 
   signals:

@@ -66,6 +66,178 @@ TEST(SceneDocument, RandomEdits_UndoAndRedoGiveBackEveryScene) {
     }
 }
 
+// Both documents of a pair are given the same change, one as a whole-scene
+// edit() and one as an item edit: everything anyone can see must agree.
+struct Twin {
+    SceneDocument whole, item;
+    QSignalSpy wholeScene{&whole, &SceneDocument::sceneChanged};
+    QSignalSpy itemScene{&item, &SceneDocument::sceneChanged};
+    QSignalSpy wholeStructure{&whole, &SceneDocument::structureChanged};
+    QSignalSpy itemStructure{&item, &SceneDocument::structureChanged};
+
+    explicit Twin(const Scene& scene) {
+        whole.reset(scene, QString());
+        item.reset(scene, QString());
+        wholeScene.clear(), itemScene.clear(), wholeStructure.clear(), itemStructure.clear();
+    }
+
+    // Makes the change both ways; returns whether it was made.
+    template <class T>
+    bool edit(int index, const QString& text, const std::function<void(T&)>& change) {
+        QString wholeError = "unset", itemError = "unset";
+        const bool wholeOk = whole.edit(
+            text,
+            [&](Scene& s) {
+                auto& list = itemsOf<T>(s);
+                if (index >= 0 && index < int(list.size())) change(list[index]);
+            },
+            &wholeError);
+        const bool itemOk = item.editItem<T>(index, text, change, &itemError);
+        EXPECT_EQ(itemOk, wholeOk) << text.toStdString();
+        EXPECT_EQ(itemError, wholeError) << text.toStdString();
+        expectSame(text);
+        return itemOk;
+    }
+
+    void expectSame(const QString& when) {
+        EXPECT_EQ(item.scene(), whole.scene()) << when.toStdString();
+        EXPECT_EQ(item.isModified(), whole.isModified()) << when.toStdString();
+        QUndoStack* a = item.undoStack();
+        QUndoStack* b = whole.undoStack();
+        ASSERT_EQ(a->count(), b->count()) << when.toStdString();
+        EXPECT_EQ(a->index(), b->index()) << when.toStdString();
+        for (int i = 0; i < a->count(); ++i)
+            EXPECT_EQ(a->text(i), b->text(i)) << when.toStdString() << ", step " << i;
+        EXPECT_EQ(itemScene.count(), wholeScene.count()) << when.toStdString();
+        EXPECT_EQ(itemStructure.count(), wholeStructure.count()) << when.toStdString();
+    }
+};
+
+TEST(SceneDocument, EditItem_RandomChanges_SameAsWholeSceneEditInEverythingSeen) {
+    Scene seed = loadScene(WHITTED_SCENES_DIR "/seed.json");
+    Twin twin(seed);
+    std::mt19937 rng(11);
+    std::cout << "[ SEED     ] 11\n";
+    auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); };
+    const int spheres = int(seed.spheres.size()), lights = int(seed.lights.size()),
+              materials = int(seed.materials.size());
+    int refused = 0;
+    for (int step = 0; step < 400; ++step) {
+        const double v = 0.01 * step;
+        bool ok = true;
+        switch (pick(12)) {
+            case 0:  // valid values
+                ok = twin.edit<Sphere>(pick(spheres), "radius",
+                                       [v](Sphere& s) { s.radius = v + 0.1; });
+                break;
+            case 1:
+                ok = twin.edit<Sphere>(pick(spheres), "centre", [v](Sphere& s) { s.center.y = v; });
+                break;
+            case 2:  // refused: each rule of an item's own values
+                ok = twin.edit<Sphere>(pick(spheres), "radius", [v](Sphere& s) { s.radius = -v; });
+                break;
+            case 3:
+                ok = twin.edit<Sphere>(pick(spheres), "material",
+                                       [](Sphere& s) { s.material = "no such"; });
+                break;
+            case 4: {  // another sphere's material: allowed
+                const std::string m = seed.materials[pick(materials)].name;
+                ok = twin.edit<Sphere>(pick(spheres), "material",
+                                       [m](Sphere& s) { s.material = m; });
+                break;
+            }
+            case 5:  // renames: to a taken name, to an empty one, to a new one
+                ok = twin.edit<Sphere>(pick(spheres), "rename",
+                                       [&](Sphere& s) { s.name = seed.spheres[0].name; });
+                break;
+            case 6:
+                ok = twin.edit<Light>(pick(lights), "rename", [](Light& l) { l.name = ""; });
+                break;
+            case 7:  // a material's rename leaves its spheres without it: refused
+                ok = twin.edit<Material>(pick(materials), "rename", [step](Material& m) {
+                    m.name = "m" + std::to_string(step);
+                });
+                break;
+            case 8:
+                ok = twin.edit<Light>(pick(lights), "intensity",
+                                      [v](Light& l) { l.intensity = v - 1.0; });
+                break;
+            case 9:
+                ok = twin.edit<Material>(pick(materials), "reflectivity",
+                                         [v](Material& m) { m.reflectivity = v / 2; });
+                break;
+            case 10:  // no change at all, and an item that does not exist
+                ok = twin.edit<Material>(pick(materials), "same", [](Material&) {});
+                ok = twin.edit<Sphere>(spheres + 3, "gone", [](Sphere& s) { s.radius = 2; }) && ok;
+                break;
+            default:
+                ok = twin.edit<Material>(pick(materials), "checker", [v](Material& m) {
+                    m.checker = Checker{{v, v, v}, v - 1.0};
+                });
+        }
+        refused += !ok;
+    }
+    EXPECT_GT(refused, 50);  // the refusals were exercised too
+    EXPECT_GT(twin.item.undoStack()->count(), 100);
+    // Undo and redo all the way, each step compared.
+    while (twin.item.undoStack()->canUndo()) {
+        twin.item.undoStack()->undo();
+        twin.whole.undoStack()->undo();
+        twin.expectSame("undo");
+    }
+    EXPECT_EQ(twin.item.scene(), seed);
+    while (twin.item.undoStack()->canRedo()) {
+        twin.item.undoStack()->redo();
+        twin.whole.undoStack()->redo();
+        twin.expectSame("redo");
+    }
+}
+
+TEST(SceneDocument, EditItem_RenameToTakenName_RefusedWithTheUsersMessage) {
+    SceneDocument doc;
+    doc.reset(loadScene(WHITTED_SCENES_DIR "/seed.json"), QString());
+    const Scene before = doc.scene();
+    const std::string taken = before.spheres[0].name;
+    QString error;
+    EXPECT_FALSE(doc.editItem<Sphere>(
+        1, "rename", [&](Sphere& s) { s.name = taken; }, &error));
+    EXPECT_EQ(
+        error,
+        QStringLiteral("There is already a sphere named “%1”").arg(QString::fromStdString(taken)));
+    EXPECT_EQ(doc.scene(), before);
+    EXPECT_EQ(doc.undoStack()->count(), 0);
+}
+
+TEST(SceneDocument, EditItem_NoChange_RecordsNoStepAndSaysNothing) {
+    SceneDocument doc;
+    doc.reset(loadScene(WHITTED_SCENES_DIR "/seed.json"), QString());
+    QSignalSpy changed(&doc, &SceneDocument::sceneChanged);
+    const double radius = doc.scene().spheres[0].radius;
+    EXPECT_TRUE(doc.editItem<Sphere>(0, "radius", [&](Sphere& s) { s.radius = radius; }));
+    EXPECT_TRUE(doc.editItem<Sphere>(-1, "radius", [](Sphere& s) { s.radius = 3; }));
+    EXPECT_EQ(doc.undoStack()->count(), 0);
+    EXPECT_EQ(changed.count(), 0);
+    EXPECT_FALSE(doc.isModified());
+}
+
+TEST(SceneDocument, EditItem_InAGesture_IsOneUndoStepThatUndoesExactly) {
+    SceneDocument doc;
+    doc.reset(loadScene(WHITTED_SCENES_DIR "/seed.json"), QString());
+    const Scene before = doc.scene();
+    doc.beginGesture("Change radius of ball");
+    for (int i = 1; i <= 20; ++i)
+        ASSERT_TRUE(doc.editItem<Sphere>(0, "radius", [i](Sphere& s) { s.radius = 0.05 * i; }));
+    doc.endGesture();
+    const Scene after = doc.scene();
+    EXPECT_EQ(after.spheres[0].radius, 1.0);
+    ASSERT_EQ(doc.undoStack()->count(), 1);
+    EXPECT_EQ(doc.undoStack()->text(0), QStringLiteral("Change radius of ball"));
+    doc.undoStack()->undo();
+    EXPECT_EQ(doc.scene(), before);
+    doc.undoStack()->redo();
+    EXPECT_EQ(doc.scene(), after);
+}
+
 }  // namespace
 }  // namespace whitted::ui
 

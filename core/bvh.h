@@ -8,7 +8,7 @@
 // is the brute-force one (ray_packet.h), so a render with the tree equals the
 // brute-force render bit for bit (tests/core/test_bvh.cpp). For that, a box
 // must never exclude a sphere whose test would report a hit: the boxes are
-// rounded outward to T here, and the traversal widens them further by a margin
+// rounded outward to float here, and the traversal widens them further by a margin
 // that covers the rounding errors of the sphere test (bvh_traverse.h).
 #pragma once
 
@@ -29,9 +29,9 @@ namespace whitted {
 //
 // The box is in float for double trees too, rounded outward from the double
 // box, as Embree stores its boxes: 56-byte double nodes made the double tree
-// 75 bytes per sphere against the float tree's 45, for no fewer spheres tested
-// in scenes whose spheres float can tell apart (docs/performance.md). A box in
-// float only ever holds more; the traversal's arithmetic stays in T.
+// 75 bytes per sphere, and double renders measured no slower with float boxes
+// (docs/performance.md). A box in float only ever holds more; the traversal's
+// arithmetic stays in T.
 struct BvhNode {
     float lo[3], hi[3];  // the box [lo, hi], holding every sphere below, rounded outward
     // Inner node: `first` is the index of its first child, the second child is

@@ -32,8 +32,8 @@ constexpr int kSahDepth = 48;
 // Cost of visiting a node against testing one sphere, for the SAH. A leaf's
 // spheres lie side by side (SphereBvh::leafSpheres), so a sphere more in a leaf
 // costs little beside a node more, whose box is another cache line. 5, with
-// leaves of up to 8 (BvhBuildOptions), against 1 and 4: 3% more instructions
-// and 10% fewer cache misses in a render, and 35 to 38 bytes per sphere in a
+// leaves of up to 8 (BvhBuildOptions), against 1 and 4: 3 to 4% more
+// instructions and 10 to 13% fewer cache misses in a render, and 35 to 38 bytes per sphere in a
 // float tree (59 to 62 in double) instead of 65 to 86 (docs/performance.md).
 constexpr double kTraversalCost = 5.0;
 // Ranges with fewer spheres than this are built as one job on one thread; the

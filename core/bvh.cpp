@@ -392,19 +392,21 @@ bool refitSphereBvh(SphereBvh<T>& bvh, const std::vector<glm::dvec3>& centres,
     for (const LeafSphere<T>& sphere : bvh.leafSpheres)
         if (!inReach<T>(centres[sphere.index], radii[sphere.index])) return false;
     // Children always come after their parent (bvh.cpp's build), so one pass
-    // from the end meets every child before its parent.
+    // from the end meets every child before its parent. The boxes are grown
+    // in double and rounded outward once per node: rounding is monotonic, so
+    // that is the box the build's per-sphere rounding gives, for a sixth of
+    // the roundings (most of a refit's time when it rounded every sphere).
     for (std::size_t i = bvh.nodes.size(); i-- > 0;) {
         BvhNode& node = bvh.nodes[i];
-        LaneBox<T> box;
+        LaneBox<double> box;
         if (node.count > 0) {
             for (int j = node.first; j < node.first + node.count; ++j) {
                 const std::int32_t k = bvh.leafSpheres[j].index;
-                const Ref<T> ref = sphereRef<T>(centres[k], radii[k], k);
-                box.grow(ref.lo, ref.hi);
+                box.grow(sphereBox(centres[k], radii[k]));
             }
         } else {
-            box.grow(boxOf<T>(bvh.nodes[node.first]));
-            box.grow(boxOf<T>(bvh.nodes[node.first + 1]));
+            box.grow(boxOf<double>(bvh.nodes[node.first]));
+            box.grow(boxOf<double>(bvh.nodes[node.first + 1]));
         }
         storeBox(node, box);
     }

@@ -375,6 +375,26 @@ TEST(BvhRefit, MovedSpheresAndCameraRenderLikeBruteForce) {
     }
 }
 
+// A refit of spheres that did not move gives the build's boxes bit for bit:
+// it rounds each node's box outward once where the build rounded each sphere's,
+// which is the same box.
+template <typename T>
+void expectRefitOfUnmovedSpheresChangesNothing() {
+    const Scene scene = randomScene(5000, Layout::Overlapping, testSeed(63), true);
+    const auto [centres, radii] = geometryOf(scene);
+    SphereBvh<T> bvh = buildSphereBvh<T>(centres, radii);
+    const BvhArray<BvhNode> built = bvh.nodes;
+    ASSERT_TRUE(refitSphereBvh(bvh, centres, radii));
+    ASSERT_EQ(bvh.nodes.size(), built.size());
+    for (std::size_t i = 0; i < built.size(); ++i)
+        ASSERT_EQ(std::memcmp(&bvh.nodes[i], &built[i], sizeof(BvhNode)), 0) << "node " << i;
+}
+
+TEST(BvhRefit, UnmovedSpheresKeepTheBuiltBoxes) {
+    expectRefitOfUnmovedSpheresChangesNothing<float>();
+    expectRefitOfUnmovedSpheresChangesNothing<double>();
+}
+
 // The refit tree is as well formed as a built one for the moved spheres.
 TEST(BvhRefit, RefitBoxesHoldTheMovedSpheres) {
     const Scene scene = randomScene(5000, Layout::Overlapping, testSeed(62), true);

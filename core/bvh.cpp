@@ -41,6 +41,9 @@ constexpr double kTraversalCost = 5.0;
 // cores some dozens of jobs at 100k spheres, large enough that a job's set-up
 // is nothing beside its work. Fixed, so the tree does not depend on the threads.
 constexpr int kJobSpheres = 2048;
+// Spheres per task of the passes over every sphere (the refs, the leaf
+// copies): enough work per task to make the hand-out nothing beside it.
+constexpr int kChunk = 1 << 14;
 
 // The largest |coordinate| + radius a sphere in the tree may have: the margin
 // argument in bvh_traverse.h needs squares of such numbers to stay finite in T,
@@ -170,7 +173,6 @@ void parallelFor(const std::vector<int>& order, int threads, const Work& work) {
 // Runs work(i) for i in [0, count), in chunks on up to `threads` threads.
 template <typename Work>
 void forChunks(int count, int threads, const Work& work) {
-    constexpr int kChunk = 1 << 14;
     std::vector<int> chunks((count + kChunk - 1) / kChunk);
     std::iota(chunks.begin(), chunks.end(), 0);
     parallelFor(chunks, threads, [&](int c) {
@@ -343,7 +345,6 @@ Subtree<T> buildTree(RefArray<T>& refs, const BvhBuildOptions& options, int thre
 template <typename T>
 RefArray<T> makeRefs(const std::vector<glm::dvec3>& centres, const std::vector<double>& radii,
                      const std::vector<char>& out, int threads) {
-    constexpr int kChunk = 1 << 14;
     const int n = static_cast<int>(radii.size());
     struct Chunk {
         int firstRef, begin, end;

@@ -10,9 +10,9 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <thread>
 
 #include "bvh_split.h"
+#include "parallel_for.h"
 #include "renderer.h"
 
 namespace whitted {
@@ -41,9 +41,6 @@ constexpr double kTraversalCost = 5.0;
 // cores some dozens of jobs at 100k spheres, large enough that a job's set-up
 // is nothing beside its work. Fixed, so the tree does not depend on the threads.
 constexpr int kJobSpheres = 2048;
-// Spheres per task of the passes over every sphere (the refs, the leaf
-// copies): enough work per task to make the hand-out nothing beside it.
-constexpr int kChunk = 1 << 14;
 
 // The largest |coordinate| + radius a sphere in the tree may have: the margin
 // argument in bvh_traverse.h needs squares of such numbers to stay finite in T,
@@ -154,31 +151,6 @@ struct Range {
     int node, begin, end, depth;
     int size() const { return end - begin; }
 };
-
-// Runs work(i) for i in [0, count) on up to `threads` threads, in the order
-// given (the caller puts the longest first).
-template <typename Work>
-void parallelFor(const std::vector<int>& order, int threads, const Work& work) {
-    std::atomic<std::size_t> next{0};
-    const auto run = [&] {
-        for (std::size_t k; (k = next++) < order.size();) work(order[k]);
-    };
-    std::vector<std::thread> helpers;
-    for (int i = 1; i < std::min<int>(threads, static_cast<int>(order.size())); ++i)
-        helpers.emplace_back(run);
-    run();
-    for (std::thread& h : helpers) h.join();
-}
-
-// Runs work(i) for i in [0, count), in chunks on up to `threads` threads.
-template <typename Work>
-void forChunks(int count, int threads, const Work& work) {
-    std::vector<int> chunks((count + kChunk - 1) / kChunk);
-    std::iota(chunks.begin(), chunks.end(), 0);
-    parallelFor(chunks, threads, [&](int c) {
-        for (int i = c * kChunk; i < std::min(count, (c + 1) * kChunk); ++i) work(i);
-    });
-}
 
 // The ranges' indices, largest first (ties in order), for parallelFor.
 std::vector<int> largestFirst(const std::vector<Range>& ranges) {
@@ -351,8 +323,8 @@ RefArray<T> makeRefs(const std::vector<glm::dvec3>& centres, const std::vector<d
     };
     std::vector<Chunk> chunks;
     int kept = 0;
-    for (int begin = 0; begin < n; begin += kChunk) {
-        const int end = std::min(n, begin + kChunk);
+    for (int begin = 0; begin < n; begin += kSphereChunk) {
+        const int end = std::min(n, begin + kSphereChunk);
         chunks.push_back({kept, begin, end});
         kept += static_cast<int>(std::count(out.begin() + begin, out.begin() + end, 0));
     }
@@ -390,25 +362,35 @@ SphereBvh<T> buildSphereBvh(const std::vector<glm::dvec3>& centres,
 template <typename T>
 bool refitSphereBvh(SphereBvh<T>& bvh, const std::vector<glm::dvec3>& centres,
                     const std::vector<double>& radii) {
-    for (const LeafSphere<T>& sphere : bvh.leafSpheres)
-        if (!inReach<T>(centres[sphere.index], radii[sphere.index])) return false;
-    // Children always come after their parent (bvh.cpp's build), so one pass
-    // from the end meets every child before its parent. The boxes are grown
-    // in double and rounded outward once per node: rounding is monotonic, so
-    // that is the box the build's per-sphere rounding gives, for a sixth of
-    // the roundings (most of a refit's time when it rounded every sphere).
+    const int threads = resolveThreadCount(0);
+    std::atomic<bool> inTree{true};
+    forChunks(static_cast<int>(bvh.leafSpheres.size()), threads, [&](int j) {
+        const std::int32_t k = bvh.leafSpheres[j].index;
+        if (!inReach<T>(centres[k], radii[k])) inTree = false;
+    });
+    if (!inTree) return false;
+    // The leaves first, on all cores: they hold every sphere, and so most of
+    // the work. Their boxes are grown in double and rounded outward once per
+    // node: rounding is monotonic, so that is the box the build's per-sphere
+    // rounding gives, for a sixth of the roundings.
+    forChunks(static_cast<int>(bvh.nodes.size()), threads, [&](int i) {
+        BvhNode& leaf = bvh.nodes[i];
+        if (leaf.count <= 0) return;
+        LaneBox<double> box;
+        for (int j = leaf.first; j < leaf.first + leaf.count; ++j) {
+            const std::int32_t k = bvh.leafSpheres[j].index;
+            box.grow(sphereBox(centres[k], radii[k]));
+        }
+        storeBox(leaf, box);
+    });
+    // Then the inner nodes: children always come after their parent (the
+    // build), so one pass from the end meets every child before its parent.
     for (std::size_t i = bvh.nodes.size(); i-- > 0;) {
         BvhNode& node = bvh.nodes[i];
+        if (node.count > 0) continue;
         LaneBox<double> box;
-        if (node.count > 0) {
-            for (int j = node.first; j < node.first + node.count; ++j) {
-                const std::int32_t k = bvh.leafSpheres[j].index;
-                box.grow(sphereBox(centres[k], radii[k]));
-            }
-        } else {
-            box.grow(boxOf<double>(bvh.nodes[node.first]));
-            box.grow(boxOf<double>(bvh.nodes[node.first + 1]));
-        }
+        box.grow(boxOf<double>(bvh.nodes[node.first]));
+        box.grow(boxOf<double>(bvh.nodes[node.first + 1]));
         storeBox(node, box);
     }
     return true;
@@ -416,10 +398,21 @@ bool refitSphereBvh(SphereBvh<T>& bvh, const std::vector<glm::dvec3>& centres,
 
 template <typename T>
 double sahCost(const SphereBvh<T>& bvh) {
-    double cost = 0;
-    for (const BvhNode& n : bvh.nodes)
-        cost += double(boxOf<T>(n).halfArea()) * (n.count > 0 ? n.count : 1);
-    return cost;
+    // Summed by chunk, in parallel, then the chunks in order: the same sum
+    // for any number of threads.
+    const int nodes = static_cast<int>(bvh.nodes.size());
+    std::vector<int> chunks((nodes + kSphereChunk - 1) / kSphereChunk);
+    std::iota(chunks.begin(), chunks.end(), 0);
+    std::vector<double> chunkCost(chunks.size());
+    parallelFor(chunks, resolveThreadCount(0), [&](int c) {
+        double cost = 0;
+        for (int i = c * kSphereChunk; i < std::min(nodes, (c + 1) * kSphereChunk); ++i) {
+            const BvhNode& n = bvh.nodes[i];
+            cost += double(boxOf<T>(n).halfArea()) * (n.count > 0 ? n.count : 1);
+        }
+        chunkCost[c] = cost;
+    });
+    return std::accumulate(chunkCost.begin(), chunkCost.end(), 0.0);
 }
 
 namespace {

@@ -20,4 +20,11 @@ int findMaterial(const Scene& scene, std::string_view name) {
     return -1;
 }
 
+std::unordered_map<std::string_view, int> materialIndices(const Scene& scene) {
+    std::unordered_map<std::string_view, int> indices;
+    for (size_t i = 0; i < scene.materials.size(); ++i)
+        indices.emplace(scene.materials[i].name, static_cast<int>(i));
+    return indices;
+}
+
 }  // namespace whitted

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -96,5 +97,10 @@ inline constexpr int kMaxSamplesPerPixel = 65536;
 
 // Index of the named material, or -1.
 int findMaterial(const Scene& scene, std::string_view name);
+
+// Each material's index by its name (the first of equal names, as
+// findMaterial), for looking up the materials of many spheres: one hash each
+// instead of a comparison per material. The views point into `scene`.
+std::unordered_map<std::string_view, int> materialIndices(const Scene& scene);
 
 }  // namespace whitted

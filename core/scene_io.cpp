@@ -8,7 +8,6 @@
 #include <string_view>
 #include <system_error>
 #include <unordered_map>
-#include <unordered_set>
 
 #include <nlohmann/json.hpp>
 
@@ -172,8 +171,7 @@ std::optional<SceneProblem> validateScene(const Scene& scene) {
     for (size_t i = 0; i < scene.lights.size(); ++i)
         if (auto p = checkLight(scene.lights[i], i)) return p;
     if (auto p = checkNames(scene.spheres, "spheres")) return p;
-    std::unordered_set<std::string_view> materialNames;
-    for (const Material& m : scene.materials) materialNames.insert(m.name);
+    const auto materialNames = materialIndices(scene);
     for (size_t i = 0; i < scene.spheres.size(); ++i) {
         const Sphere& s = scene.spheres[i];
         // The common case without building a path string: a file of a million

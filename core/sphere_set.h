@@ -3,11 +3,13 @@
 // kernel runs (core/kernel_dispatch.h), so it lives outside the per-ISA namespace.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
+#include "large_buffer_allocator.h"
 #include "sphere_intersect.h"
 
 namespace whitted {
@@ -35,31 +37,46 @@ struct LeafSphere {
 // both terms and so see the double scene's sphere; everything else uses hi.
 template <typename T>
 struct SphereSet {
-    std::vector<Vec<T>> centre, centreLo;  // centre + centreLo: the centre, to ~eps(T)^2
-    std::vector<T> radius, radiusLo;       // likewise the radius
-    std::vector<T> rrHi, rrLo;             // radius^2 == rrHi + rrLo, to ~eps(T)^2
-    std::vector<T> cameraC;                // accurateOffsetSquared() from the camera position
+    // From mmap when large (large_buffer_allocator.h): a million spheres' arrays
+    // are then zeroed by no one, and their pages first touched by the threads
+    // that fill them (prepareScene).
+    template <typename E>
+    using Array = std::vector<E, LargeBufferAllocator<E>>;
+    Array<Vec<T>> centre, centreLo;  // centre + centreLo: the centre, to ~eps(T)^2
+    Array<T> radius, radiusLo;       // likewise the radius
+    Array<T> rrHi, rrLo;             // radius^2 == rrHi + rrLo, to ~eps(T)^2
+    Array<T> cameraC;                // accurateOffsetSquared() from the camera position
 
     int count() const { return static_cast<int>(centre.size()); }
     LeafSphere<T> leafSphere(int k) const { return {centre[k], rrHi[k], cameraC[k], k}; }
 
-    // A sphere of the double scene: centre == c + cLo exactly (a two-term double,
-    // as a translation in double leaves it) and radius r, both in this set's frame.
-    void add(const glm::dvec3& c, const glm::dvec3& cLo, double r, const Vec<T>& camera) {
-        Vec<T> hi, lo;
-        for (int i = 0; i < 3; ++i) split(c[i], cLo[i], hi[i], lo[i]);
+    // Room for n spheres, each to be given by set(): a large scene's spheres
+    // are prepared on all cores, each into its own place.
+    void resize(std::size_t n) {
+        centre.resize(n);
+        centreLo.resize(n);
+        radius.resize(n);
+        radiusLo.resize(n);
+        rrHi.resize(n);
+        rrLo.resize(n);
+        cameraC.resize(n);
+    }
+    // Sphere k is a sphere of the double scene: centre == c + cLo exactly (a
+    // two-term double, as a translation in double leaves it) and radius r, both
+    // in this set's frame.
+    void set(int k, const glm::dvec3& c, const glm::dvec3& cLo, double r, const Vec<T>& camera) {
+        for (int i = 0; i < 3; ++i) split(c[i], cLo[i], centre[k][i], centreLo[k][i]);
         double rr, rrErr;
         exact::twoProduct(r, r, rr, rrErr);
-        T rrH, rrL, rH, rL;
-        split(rr, rrErr, rrH, rrL);
-        split(r, 0.0, rH, rL);
-        centre.push_back(hi);
-        centreLo.push_back(lo);
-        radius.push_back(rH);
-        radiusLo.push_back(rL);
-        rrHi.push_back(rrH);
-        rrLo.push_back(rrL);
-        cameraC.push_back(accurateOffsetSquared(camera, hi, lo, rrH, rrL));
+        split(rr, rrErr, rrHi[k], rrLo[k]);
+        split(r, 0.0, radius[k], radiusLo[k]);
+        cameraC[k] = accurateOffsetSquared(camera, centre[k], centreLo[k], rrHi[k], rrLo[k]);
+    }
+    // The same, as a sphere more.
+    void add(const glm::dvec3& c, const glm::dvec3& cLo, double r, const Vec<T>& camera) {
+        for (auto* a : {&centre, &centreLo}) a->emplace_back();
+        for (auto* a : {&radius, &radiusLo, &rrHi, &rrLo, &cameraC}) a->emplace_back();
+        set(count() - 1, c, cLo, r, camera);
     }
     // A sphere whose centre and radius T holds exactly.
     void add(const Vec<T>& c, T r, const Vec<T>& camera) {

@@ -9,6 +9,8 @@
 #include <string>
 
 #include "kernel_dispatch.h"
+#include "parallel_for.h"
+#include "renderer.h"
 #include "sampling.h"
 #include "tracer_kernel.h"
 
@@ -114,20 +116,28 @@ PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache) {
         if (c == Vec3(0.0)) continue;  // a dark light adds nothing: no shadow rays for it
         s.lights.push_back({Vec<T>(l.position - s.frameOrigin), boundedInput<T>(c)});
     }
-    const bool useBvh = bvhChosen(static_cast<int>(scene.spheres.size()));
-    std::vector<Vec3> centres;
-    std::vector<double> radii;
-    for (const Sphere& sp : scene.spheres) {
+    const int count = static_cast<int>(scene.spheres.size());
+    const bool useBvh = bvhChosen(count);
+    std::vector<Vec3> centres(useBvh ? count : 0);
+    std::vector<double> radii(useBvh ? count : 0);
+    s.spheres.resize(count);
+    s.material.resize(count);
+    s.transparency.resize(count);
+    const auto materialIndex = materialIndices(scene);
+    // Each sphere into its own place, on all cores: a million spheres took a
+    // second on one (docs/performance.md). A few dozen stay on this thread.
+    forChunks(count, resolveThreadCount(0), [&](int k) {
+        const Sphere& sp = scene.spheres[k];
         Vec3 c, cLo;  // the centre in the frame, exactly: c + cLo
         for (int i = 0; i < 3; ++i) exact::twoSum(sp.center[i], -s.frameOrigin[i], c[i], cLo[i]);
-        s.spheres.add(c, cLo, sp.radius, s.camera.origin);
-        s.material.push_back(findMaterial(scene, sp.material));
-        s.transparency.push_back(s.materials[s.material.back()].transparency);
+        s.spheres.set(k, c, cLo, sp.radius, s.camera.origin);
+        s.material[k] = materialIndex.at(sp.material);
+        s.transparency[k] = s.materials[s.material[k]].transparency;
         if (useBvh) {
-            centres.push_back(c);  // cLo is far inside the traversal's margin
-            radii.push_back(sp.radius);
+            centres[k] = c;  // cLo is far inside the traversal's margin
+            radii[k] = sp.radius;
         }
-    }
+    });
     if (useBvh) {
         s.bvh = sphereBvhFor<T>(centres, radii, s.spheres, bvhCache);
         s.useBvh = true;

@@ -179,7 +179,9 @@ class Builder {
         const int n = r.size();
         const bvh_build::RangeBounds<T> bounds = bvh_build::rangeBounds(refs, n);
         Division d{bounds.box};
-        if (n == 1) return d;
+        // Splitting costs at least kTraversalCost: a range no larger is a
+        // leaf whatever its best split, so that is not looked for.
+        if (n <= std::min<double>(options_.maxLeafSize, kTraversalCost)) return d;
         // A few spheres need no more bins than they are: the sweep over empty
         // bins cost more than the binning in a measured build of 100k.
         const bvh_build::Binning<T> map(std::min(bins_, std::max(4, n)), bounds.centres);

@@ -155,16 +155,25 @@ Split bestSplit(const Ref<T>* refs, int count, const Binning<T>& map) {
     Split best;
     for (int a = 0; a < 3; ++a) {
         if (!map.usable[a]) continue;
-        double rightCost[kMaxBins];  // rightCost[b]: the cost of bins [b, bins); -1: empty
+        // An empty bin changes neither side's cost: what the bin before it
+        // gave stands (a split after an empty bin costs what the split
+        // before it does, and the first of equal splits wins).
+        double rightCost[kMaxBins + 1];  // rightCost[b]: the cost of bins [b, bins); -1: empty
+        rightCost[map.bins] = -1.0;
         BinSum<T> side;
         for (int b = map.bins - 1; b > 0; --b) {
+            if (bin[a][b].count == 0) {
+                rightCost[b] = rightCost[b + 1];
+                continue;
+            }
             side.add(bin[a][b]);
-            rightCost[b] = side.count ? side.cost() : -1.0;
+            rightCost[b] = side.cost();
         }
         side = {};
         for (int b = 0; b + 1 < map.bins; ++b) {
+            if (bin[a][b].count == 0) continue;
             side.add(bin[a][b]);
-            if (side.count == 0 || rightCost[b + 1] < 0.0) continue;
+            if (rightCost[b + 1] < 0.0) continue;
             const double cost = side.cost() + rightCost[b + 1];
             if (cost < best.cost) best = {a, b, cost};
         }

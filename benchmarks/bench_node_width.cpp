@@ -18,13 +18,15 @@
 //             tracePacket() packs them (the hit lanes of a camera packet);
 //  * random:  random points in the field's box, random directions, 8 to a packet.
 //
-// Widths:
-//  * 2: the renderer's own bvhClosestHits() (bvh_traverse.h) on its tree; one
-//       ray is a packet with one lane, as kernelClosestHit() traces it;
+// Trees:
+//  * "2 (ours)": the renderer's own bvhClosestHits() (bvh_traverse.h) on its
+//       tree; one ray is a packet with one lane, as kernelClosestHit() traces it;
 //  * 4, 8: the binary tree collapsed (below). A packet tests the children one
 //       after another, SIMD over the lanes, with boxLanes()'s arithmetic; one ray
 //       tests all children at once, SIMD over the children (Embree's BVH4/BVH8
-//       single-ray scheme).
+//       single-ray scheme);
+//  * 2: the binary tree unchanged, in the wide layout, through the wide
+//       traversal: a control that tells the width's effect from the traversal's.
 // Every width tests spheres with closestUpdate() (the renderer's test and its
 // tie rule), so each ray must find the same (t, sphere) at every width: the
 // mismatch count printed is against width 2 in packets.
@@ -64,6 +66,8 @@ using namespace whitted;
 
 using V = Simd<float>::type;
 using Packet = RayPacket<float>;
+// The tree and traversal the renderer has: bvhClosestHits() on the binary tree.
+constexpr int kOurs = 0;
 constexpr int kLanes = Packet::kWidth;
 
 // ---------------------------------------------------------------------------
@@ -323,6 +327,11 @@ void widePacket(const SphereSet<float>& spheres, const SphereBvh<float>& bvh,
 template <int W>
 struct ChildVec;
 template <>
+struct ChildVec<2> {
+    typedef float type __attribute__((vector_size(8)));
+    typedef std::int32_t ints __attribute__((vector_size(8)));
+};
+template <>
 struct ChildVec<4> {
     typedef float type __attribute__((vector_size(16)));
     typedef std::int32_t ints __attribute__((vector_size(16)));
@@ -337,8 +346,10 @@ template <typename M>
 unsigned childBits(const M& m) {
     if constexpr (sizeof(M) == 32)
         return static_cast<unsigned>(_mm256_movemask_ps(reinterpret_cast<__m256>(m)));
-    else
+    else if constexpr (sizeof(M) == 16)
         return static_cast<unsigned>(_mm_movemask_ps(reinterpret_cast<__m128>(m)));
+    else
+        return (m[0] ? 1u : 0u) | (m[1] ? 2u : 0u);
 }
 
 template <typename Vec>
@@ -438,10 +449,20 @@ void wideRay(const SphereSet<float>& spheres, const SphereBvh<float>& bvh, const
 
 struct Bench {
     PreparedScene<float> scene;
+    WideBvh<2> wide2;  // the binary tree again, in the wide layout
     WideBvh<4> wide4;
     WideBvh<8> wide8;
     const SphereBvh<float>& bvh() const { return *scene.bvh; }
     const SphereSet<float>& spheres() const { return scene.spheres; }
+    template <int W>
+    const WideBvh<W>& wide() const {
+        if constexpr (W == 2)
+            return wide2;
+        else if constexpr (W == 4)
+            return wide4;
+        else
+            return wide8;
+    }
 };
 
 struct RaySet {
@@ -543,26 +564,22 @@ enum class Mode { packet, single };
 // out (8 slots per packet), the counters when kCount.
 template <int W, bool kCount>
 void tracePacketInto(const Bench& b, const Packet& r, V& t, V& k, Counts* c) {
-    if constexpr (W == 2) {
+    if constexpr (W == kOurs) {
         if constexpr (kCount)
             binaryCounted(b.spheres(), b.bvh(), r, t, k, c);
         else
             bvhClosestHits(b.spheres(), b.bvh(), r, t, k);
-    } else if constexpr (W == 4) {
-        widePacket<4, kCount>(b.spheres(), b.bvh(), b.wide4, r, t, k, c);
     } else {
-        widePacket<8, kCount>(b.spheres(), b.bvh(), b.wide8, r, t, k, c);
+        widePacket<W, kCount>(b.spheres(), b.bvh(), b.wide<W>(), r, t, k, c);
     }
 }
 
 template <int W, bool kCount>
 void traceRayInto(const Bench& b, const Packet& r, V& t, V& k, Counts* c) {
-    if constexpr (W == 2)
-        tracePacketInto<2, kCount>(b, r, t, k, c);  // one lane: kernelClosestHit()'s way
-    else if constexpr (W == 4)
-        wideRay<4, kCount>(b.spheres(), b.bvh(), b.wide4, r, t, k, c);
+    if constexpr (W == kOurs)
+        tracePacketInto<kOurs, kCount>(b, r, t, k, c);  // one lane: kernelClosestHit()'s way
     else
-        wideRay<8, kCount>(b.spheres(), b.bvh(), b.wide8, r, t, k, c);
+        wideRay<W, kCount>(b.spheres(), b.bvh(), b.wide<W>(), r, t, k, c);
 }
 
 struct Result {
@@ -600,7 +617,9 @@ void runPass(const Bench& b, const RaySet& set, Mode mode, Result& out, Counts* 
 
 template <bool kCount>
 void runWidth(int width, const Bench& b, const RaySet& set, Mode mode, Result& out, Counts* c) {
-    if (width == 2)
+    if (width == kOurs)
+        runPass<kOurs, kCount>(b, set, mode, out, c);
+    else if (width == 2)
         runPass<2, kCount>(b, set, mode, out, c);
     else if (width == 4)
         runPass<4, kCount>(b, set, mode, out, c);
@@ -673,7 +692,9 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-constexpr int kWidths[] = {2, 4, 8};
+constexpr int kTrees = 4;
+constexpr int kWidths[kTrees] = {kOurs, 2, 4, 8};
+const char* const kTreeNames[kTrees] = {"2 (ours)", "2", "4", "8"};
 constexpr Mode kModes[] = {Mode::packet, Mode::single};
 
 const char* modeName(Mode m) {
@@ -685,25 +706,25 @@ const char* modeName(Mode m) {
 // Returns the median seconds, [mode][width].
 std::vector<std::vector<double>> timeSet(const Bench& b, const RaySet& set, const Result& ref,
                                          int reps, std::size_t& mismatch) {
-    std::vector<std::vector<std::vector<double>>> s(2, std::vector<std::vector<double>>(3));
+    std::vector<std::vector<std::vector<double>>> s(2, std::vector<std::vector<double>>(kTrees));
     Result out;
     for (int rep = 0; rep < reps; ++rep)
         for (int m = 0; m < 2; ++m)
-            for (int w = 0; w < 3; ++w) {
+            for (int w = 0; w < kTrees; ++w) {
                 CALLGRIND_ZERO_STATS;
                 CALLGRIND_TOGGLE_COLLECT;
                 const auto start = std::chrono::steady_clock::now();
                 runWidth<false>(kWidths[w], b, set, kModes[m], out, nullptr);
                 s[m][w].push_back(secondsSince(start));
                 CALLGRIND_TOGGLE_COLLECT;
-                const std::string name = std::string(set.name) + "/" + modeName(kModes[m]) + "/" +
-                                         std::to_string(kWidths[w]);
+                const std::string name =
+                    std::string(set.name) + "/" + modeName(kModes[m]) + "/" + kTreeNames[w];
                 CALLGRIND_DUMP_STATS_AT(name.c_str());
                 if (rep == 0) mismatch += mismatches(out, ref);
             }
-    std::vector<std::vector<double>> median(2, std::vector<double>(3));
+    std::vector<std::vector<double>> median(2, std::vector<double>(kTrees));
     for (int m = 0; m < 2; ++m)
-        for (int w = 0; w < 3; ++w) {
+        for (int w = 0; w < kTrees; ++w) {
             std::vector<double>& v = s[m][w];
             std::sort(v.begin(), v.end());
             median[m][w] = v[v.size() / 2];
@@ -711,12 +732,20 @@ std::vector<std::vector<double>> timeSet(const Bench& b, const RaySet& set, cons
     return median;
 }
 
+// The counters per ray, as three table cells.
+std::string perRay(const Counts& c, double rays) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.2f | %.2f | %.2f", double(c.nodes) / rays,
+                  double(c.boxes) / rays, double(c.spheres) / rays);
+    return text;
+}
+
 void printSet(const Bench& b, const RaySet& set, const Options& o, int n, std::size_t& mismatch) {
     Result ref;
-    runPass<2, false>(b, set, Mode::packet, ref, nullptr);
+    runPass<kOurs, false>(b, set, Mode::packet, ref, nullptr);
     const auto seconds = timeSet(b, set, ref, o.reps, mismatch);
     for (int m = 0; m < 2; ++m)
-        for (int w = 0; w < 3; ++w) {
+        for (int w = 0; w < kTrees; ++w) {
             Counts c;
             if (o.counts) {  // the counting traversals must find the same hits too
                 Result out;
@@ -724,9 +753,9 @@ void printSet(const Bench& b, const RaySet& set, const Options& o, int n, std::s
                 mismatch += mismatches(out, ref);
             }
             const double rays = double(set.rays);
-            std::printf("| %d | %s | %s | %d | %zu | %.2f | %.2f | %.2f | %.2f |\n", n, set.name,
-                        modeName(kModes[m]), kWidths[w], set.rays, rays / seconds[m][w] / 1e6,
-                        double(c.nodes) / rays, double(c.boxes) / rays, double(c.spheres) / rays);
+            std::printf("| %d | %s | %s | %s | %zu | %.2f | %s |\n", n, set.name,
+                        modeName(kModes[m]), kTreeNames[w], set.rays, rays / seconds[m][w] / 1e6,
+                        o.counts ? perRay(c, rays).c_str() : "- | - | -");
             std::fflush(stdout);
         }
 }
@@ -738,8 +767,9 @@ Bench makeBench(int n, const Options& o) {
     scene.render.width = o.width;
     scene.render.height = o.height;
     useAcceleration(Acceleration::bvh);
-    Bench b{prepareScene<float>(scene), {}, {}};
+    Bench b{prepareScene<float>(scene), {}, {}, {}};
     useAcceleration(Acceleration::automatic);
+    b.wide2 = collapseBvh<2>(b.bvh());
     b.wide4 = collapseBvh<4>(b.bvh());
     b.wide8 = collapseBvh<8>(b.bvh());
     return b;

@@ -773,8 +773,12 @@ void printSet(const Bench& b, const RaySet& set, const Options& o, int n, std::s
                 mismatch += mismatches(out, ref);
             }
             const double rays = double(set.rays);
-            std::printf("| %d | %s | %s | %s | %zu | %.2f | %s |\n", n, set.name,
+            // The speed against the renderer's own traversal in the same mode:
+            // medians of passes taken in turn, so a ratio survives a load swing
+            // that moves both.
+            std::printf("| %d | %s | %s | %s | %zu | %.3g | %.2f | %s |\n", n, set.name,
                         modeName(kModes[m]), kTreeNames[w], set.rays, rays / seconds[m][w] / 1e6,
+                        seconds[m][0] / seconds[m][w],
                         o.counts ? perRay(c, rays).c_str() : "- | - | -");
             std::fflush(stdout);
         }
@@ -817,8 +821,8 @@ int main(int argc, char** argv) {
         "%d float lanes, 1 thread\n",
         o.width, o.height, o.rowStep, o.random, o.reps, kLanes);
     std::printf(
-        "| N | set | mode | width | rays | Mrays/s | nodes/ray | boxes/ray | "
-        "spheres/ray |\n|---|---|---|---|---|---|---|---|---|\n");
+        "| N | set | mode | width | rays | Mrays/s | speed / ours | nodes/ray | boxes/ray | "
+        "spheres/ray |\n|---|---|---|---|---|---|---|---|---|---|\n");
     std::size_t mismatch = 0;
     for (const int n : o.sizes) runSize(n, o, mismatch);
     std::printf("\nmismatches (t or sphere differing from the binary packets'): %zu\n", mismatch);

@@ -27,13 +27,15 @@
 //       single-ray scheme);
 //  * 2: the binary tree unchanged, in the wide layout, through the wide
 //       traversal: a control that tells the width's effect from the traversal's.
-// Every width tests spheres with closestUpdate() (the renderer's test and its
-// tie rule), so each ray must find the same (t, sphere) at every width: the
-// mismatch count printed is against width 2 in packets.
+// Every tree tests spheres with closestUpdate() (the renderer's test and its
+// tie rule), so each ray must find the same (t, sphere) in every tree: the
+// mismatch count printed is against "2 (ours)" in packets. The process exits
+// with 1 if any ray differs.
 //
-// Under `valgrind --tool=callgrind --instr-atstart=no`, each pass is
-// collected alone and dumped with its name (set/mode/width), so that
-// callgrind's totals give instructions and simulated misses per pass.
+// Each measured pass follows an unmeasured one through the same tree. Under
+// `valgrind --tool=callgrind --instr-atstart=no --collect-atstart=no`, each
+// measured pass is collected alone and dumped with its name (set/mode/tree);
+// benchmarks/node_width_callgrind.py turns the dumps into figures per ray.
 #include <algorithm>
 #include <chrono>
 #include <cmath>

@@ -194,33 +194,24 @@ void testLeaf(const SphereSet<float>& spheres, const SphereBvh<float>& bvh, int 
 }
 
 // ---------------------------------------------------------------------------
-// Binary: the renderer's traverseBvh() step for step, with counters, for the
-// counting pass; the timed passes call bvhClosestHits() itself.
+// Binary: the renderer's traverseBvh() with counters, for the counting pass;
+// the timed passes call bvhClosestHits() itself. It tests the root's box, then
+// both children's boxes at each inner node it enters.
 
 void binaryCounted(const SphereSet<float>& spheres, const SphereBvh<float>& bvh, const Packet& r,
                    V& tBest, V& kBest, Counts* c) {
     const PacketSlabs<float> slabs = packetSlabs(r);
     if (!closestStart(spheres, bvh, r, slabs, tBest, kBest)) return;
-    int stack[kMaxBvhDepth + 1];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        const BvhNode& node = bvh.nodes[stack[--top]];
-        ++c->boxes;
-        const unsigned in = boxLanes(node, slabs, tBest, r.active);
-        if (!in) continue;
-        if (node.count > 0) {
-            testLeaf<true>(spheres, bvh, node.first, node.count, r, in, tBest, kBest, c);
-            continue;
-        }
+    ++c->boxes;
+    const auto leaf = [&](const BvhNode& node, unsigned in) {
+        testLeaf<true>(spheres, bvh, node.first, node.count, r, in, tBest, kBest, c);
+        return ~0u;
+    };
+    const auto inner = [&] {
         ++c->nodes;
-        const int axis = -1 - node.count;
-        const int l = __builtin_ctz(in);
-        const float d = axis == 0 ? r.dx[l] : (axis == 1 ? r.dy[l] : r.dz[l]);
-        const int nearFirst = d < 0.0f ? 1 : 0;
-        stack[top++] = node.first + (1 - nearFirst);
-        stack[top++] = node.first + nearFirst;
-    }
+        c->boxes += 2;
+    };
+    traverseBvh(bvh, slabs, tBest, r.active, leaf, inner);
 }
 
 // ---------------------------------------------------------------------------

@@ -95,10 +95,12 @@ inline PacketSlabs<T> packetSlabs(const RayPacket<T>& r) {
 }
 
 // The lanes of `lanes` whose ray meets the node's widened box at some t in
-// [0, limit]. A NaN anywhere keeps the lane (no comparison is true).
+// [0, limit], and each lane's entry distance. A NaN anywhere keeps the lane
+// (no comparison is true).
 template <typename T>
 inline unsigned boxLanes(const BvhNode& node, const PacketSlabs<T>& s,
-                         const typename Simd<T>::type& limit, unsigned lanes) {
+                         const typename Simd<T>::type& limit, unsigned lanes,
+                         typename Simd<T>::type& entry) {
     using V = typename Simd<T>::type;
     T reach = 0;
     for (int i = 0; i < 3; ++i) {
@@ -113,36 +115,74 @@ inline unsigned boxLanes(const BvhNode& node, const PacketSlabs<T>& s,
     const V ny = ay < by ? ay : by, fy = ay < by ? by : ay;
     const V nz = az < bz ? az : bz, fz = az < bz ? bz : az;
     const V nxy = nx > ny ? nx : ny, fxy = fx < fy ? fx : fy;
-    const V entry = nxy > nz ? nxy : nz, exit = fxy < fz ? fxy : fz;
+    entry = nxy > nz ? nxy : nz;
+    const V exit = fxy < fz ? fxy : fz;
     const auto miss = (entry > exit) | (exit < T(0)) | (entry > limit);
     return lanes & ~laneBits(miss);
 }
 
-// Visits the leaves whose boxes the lanes' rays meet within [0, limit], the
-// nearer child first by the direction of the lowest such lane.
+// A node some lanes are yet to visit, with their entry distances into its box.
+template <typename T>
+struct BvhVisit {
+    typename Simd<T>::type entry;
+    unsigned lanes;
+    int node;
+};
+
+// Visits the leaves whose boxes the lanes' rays meet within [0, limit].
 // leaf(node, lanes) returns a mask of the lanes still looking; `limit` may
-// shrink meanwhile.
-template <typename T, typename Leaf>
-inline void traverseBvh(const SphereBvh<T>& bvh, const RayPacket<T>& r, const PacketSlabs<T>& slabs,
-                        const typename Simd<T>::type& limit, unsigned lanes, Leaf&& leaf) {
-    int stack[kMaxBvhDepth + 1];  // a path's far children: at most its depth + 1
+// shrink meanwhile. inner() is called at each inner node entered (for
+// benchmarks/bench_node_width.cpp's counts; nothing in a render).
+//
+// Both children's boxes are tested when their parent is entered (they lie
+// side by side in memory), and a child no lane meets is never stacked. The
+// nearer child, by the entry distance of the packet's lowest lane, is visited
+// first; the farther one waits with its lanes' entry distances, and those
+// lanes whose nearest hit has come closer meanwhile are dropped when it is
+// taken up. A lane passes exactly when boxLanes() at that moment would pass it.
+template <typename T, typename Leaf, typename Inner = void (*)()>
+inline void traverseBvh(
+    const SphereBvh<T>& bvh, const PacketSlabs<T>& slabs, const typename Simd<T>::type& limit,
+    unsigned lanes, Leaf&& leaf, Inner&& inner = [] {}) {
+    using V = typename Simd<T>::type;
+    BvhVisit<T> stack[kMaxBvhDepth + 1];  // a path's far children: at most its depth
     int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        const BvhNode& node = bvh.nodes[stack[--top]];
-        const unsigned in = boxLanes(node, slabs, limit, lanes);
-        if (!in) continue;
-        if (node.count > 0) {
-            lanes &= leaf(node, in);
+    V entry;
+    unsigned in = boxLanes(bvh.nodes[0], slabs, limit, lanes, entry);
+    int node = 0;
+    for (;;) {
+        const BvhNode& n = bvh.nodes[node];
+        if (in && n.count > 0) {
+            lanes &= leaf(n, in);
             if (!lanes) return;
-            continue;
+            in = 0;
         }
-        const int axis = -1 - node.count;
-        const int l = __builtin_ctz(in);
-        const T d = axis == 0 ? r.dx[l] : (axis == 1 ? r.dy[l] : r.dz[l]);
-        const int nearFirst = d < T(0) ? 1 : 0;  // the second child holds the higher centres
-        stack[top++] = node.first + (1 - nearFirst);
-        stack[top++] = node.first + nearFirst;
+        if (in) {
+            inner();
+            V entries[2];
+            const unsigned inChild[2] = {
+                boxLanes(bvh.nodes[n.first], slabs, limit, in, entries[0]),
+                boxLanes(bvh.nodes[n.first + 1], slabs, limit, in, entries[1])};
+            const int lead = __builtin_ctz(in);
+            const auto key = [&](int c) {
+                return (inChild[c] >> lead) & 1u ? entries[c][lead]
+                                                 : std::numeric_limits<T>::infinity();
+            };
+            const int near = inChild[0] == 0 || (inChild[1] != 0 && key(1) < key(0)) ? 1 : 0;
+            const int far = 1 - near;
+            if (inChild[far]) stack[top++] = {entries[far], inChild[far], n.first + far};
+            in = inChild[near];
+            node = n.first + near;
+            if (in) continue;
+        }
+        // Take up a waiting node, for its lanes still looking and not yet
+        // nearer to a hit than to its box.
+        do {
+            if (top == 0) return;
+            const BvhVisit<T>& v = stack[--top];
+            in = v.lanes & lanes & ~laneBits(v.entry > limit);
+            node = v.node;
+        } while (!in);
     }
 }
 
@@ -204,7 +244,7 @@ inline void bvhClosestHits(const SphereSet<T>& spheres, const SphereBvh<T>& bvh,
             closestUpdate(spheres, bvh.leafSpheres[i], r, lanes, tBest, kBest);
         return ~0u;
     };
-    traverseBvh(bvh, r, slabs, tBest, r.active, leaf);
+    traverseBvh(bvh, slabs, tBest, r.active, leaf);
 }
 
 // The spheres each lane's shadow ray crosses, to be multiplied in index order.
@@ -296,7 +336,7 @@ inline typename Simd<T>::type bvhTransmittance(const SphereSet<T>& spheres,
         return ~found.opaque;
     };
     if (!bvh.nodes.empty() && (lanes & ~found.opaque)) {
-        traverseBvh(bvh, r, slabs, distance, lanes & ~found.opaque, leaf);
+        traverseBvh(bvh, slabs, distance, lanes & ~found.opaque, leaf);
     }
     V s = V{} + T(1);
     for (unsigned open = lanes & ~found.opaque & ~found.overflow; open; open &= open - 1) {

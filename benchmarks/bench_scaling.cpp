@@ -13,7 +13,9 @@
 // preparation and the build, Embree's too. "ours" is the tracer's own choice
 // of structure (brute force below kBvhCrossover spheres, the BVH above); with
 // --bvh, and in the older form, whose crossover figures in docs/performance.md
-// compare the two at every N, it is always the BVH. --images writes our float
+// compare the two at every N, it is always the BVH. "kept" is a float render
+// after another with the same BvhCache: the tree kept and refit, as in the
+// editor after an edit or a camera move. --images writes our float
 // render and Embree's as DIR/field-N-ours.png and DIR/field-N-embree.png, to
 // look at what the PSNR column summarises.
 #include <algorithm>
@@ -117,12 +119,13 @@ struct Run {
     Image image;
 };
 
-Run renderWith(Scene scene, Acceleration choice, Precision precision) {
+Run renderWith(Scene scene, Acceleration choice, Precision precision, BvhCache* kept = nullptr) {
     scene.render.precision = precision;
     useAcceleration(choice);
     RenderOptions options;
     options.threads = kThreads;
     options.progressive = false;
+    options.bvhCache = kept;
     RenderResult result = render(scene, options);
     useAcceleration(Acceleration::automatic);
     return {result.seconds * 1e3, double(result.rays.total()) / result.seconds / 1e6,
@@ -196,21 +199,26 @@ struct Row {
     int n;
     Tree tree;
     Run ours, doubles, brute;
+    // A render with the tree of the render before kept and refit, as the
+    // editor renders after an edit or a camera move.
+    Run kept;
     Peer embree;
 };
 
 void printHeader() {
-    std::printf("%8s %9s %7s %7s | %10s %8s %10s %8s %10s | %9s %9s %10s %8s %7s %6s\n", "N",
-                "build ms", "B/sph", "B/sph d", "float ms", "Mr/s", "double ms", "dbl/flt",
-                "brute ms", "E high ms", "E med ms", "Embree ms", "E Mr/s", "ours/E", "PSNR");
+    std::printf("%8s %9s %7s %7s | %10s %8s %9s %10s %8s %10s | %9s %9s %10s %8s %7s %6s\n", "N",
+                "build ms", "B/sph", "B/sph d", "float ms", "Mr/s", "kept ms", "double ms",
+                "dbl/flt", "brute ms", "E high ms", "E med ms", "Embree ms", "E Mr/s", "ours/E",
+                "PSNR");
 }
 
 void printRow(const Row& r) {
     const bool e = r.embree.run.ms >= 0, d = r.doubles.ms >= 0;
     std::printf(
-        "%8d %9.2f %7.1f %7.1f | %10.1f %8.2f %10s %8s %10s | %9s %9s %10s %8s %7s %6s\n", r.n,
-        r.tree.buildMs, r.tree.bytesPerSphere, r.tree.doubleBytesPerSphere, r.ours.ms, r.ours.mrays,
-        cell(r.doubles.ms, "%.1f", d).c_str(), cell(r.doubles.ms / r.ours.ms, "%.2f", d).c_str(),
+        "%8d %9.2f %7.1f %7.1f | %10.1f %8.2f %9.1f %10s %8s %10s | %9s %9s %10s %8s %7s %6s\n",
+        r.n, r.tree.buildMs, r.tree.bytesPerSphere, r.tree.doubleBytesPerSphere, r.ours.ms,
+        r.ours.mrays, r.kept.ms, cell(r.doubles.ms, "%.1f", d).c_str(),
+        cell(r.doubles.ms / r.ours.ms, "%.2f", d).c_str(),
         cell(r.brute.ms, "%.1f", r.brute.ms >= 0).c_str(),
         cell(r.embree.buildHighMs, "%.2f", e).c_str(),
         cell(r.embree.buildMediumMs, "%.2f", e).c_str(), cell(r.embree.run.ms, "%.1f", e).c_str(),
@@ -221,11 +229,11 @@ void printRow(const Row& r) {
 }
 
 void writeCsv(std::FILE* f, const Row& r) {
-    std::fprintf(f, "%d,%.3f,%.2f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.2f,%.2f\n", r.n,
-                 r.tree.buildMs, r.tree.bytesPerSphere, r.ours.ms, r.ours.mrays, r.doubles.ms,
+    std::fprintf(f, "%d,%.3f,%.2f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.2f,%.2f,%.3f\n",
+                 r.n, r.tree.buildMs, r.tree.bytesPerSphere, r.ours.ms, r.ours.mrays, r.doubles.ms,
                  r.brute.ms, r.embree.buildHighMs, r.embree.buildMediumMs, r.embree.run.ms,
                  r.embree.run.mrays, r.embree.run.ms >= 0 ? r.ours.ms / r.embree.run.ms : -1.0,
-                 r.embree.psnr, r.tree.doubleBytesPerSphere);
+                 r.embree.psnr, r.tree.doubleBytesPerSphere, r.kept.ms);
     std::fflush(f);
 }
 
@@ -250,7 +258,7 @@ int main(int argc, char** argv) {
         std::fprintf(csv,
                      "n,build_ms,bytes_per_sphere,float_ms,float_mrays,double_ms,brute_ms,"
                      "embree_build_high_ms,embree_build_medium_ms,embree_ms,embree_mrays,"
-                     "ours_over_embree,psnr_db,bytes_per_sphere_double\n");
+                     "ours_over_embree,psnr_db,bytes_per_sphere_double,kept_ms\n");
     std::printf("field of N spheres + floor, %dx%d, 1 spp, depth 5, %d threads, kernel %s\n",
                 o.width, o.height, kThreads, activeKernelName().c_str());
 #ifdef WHITTED_HAVE_EMBREE
@@ -268,8 +276,11 @@ int main(int argc, char** argv) {
         Scene scene = sphereField(field);
         scene.render.width = o.width;
         scene.render.height = o.height;
-        Row row{n, measureTree(scene), {}, {}, {}, {}};
+        Row row{n, measureTree(scene), {}, {}, {}, {}, {}};
         row.ours = renderWith(scene, o.ours, Precision::Float);
+        BvhCache cache;
+        renderWith(scene, o.ours, Precision::Float, &cache);
+        row.kept = renderWith(scene, o.ours, Precision::Float, &cache);
         if (o.doubles) row.doubles = renderWith(scene, o.ours, Precision::Double);
         if (n <= o.maxBrute)
             row.brute = renderWith(scene, Acceleration::bruteForce, Precision::Float);

@@ -138,6 +138,11 @@ std::vector<char> keptOut(const std::vector<glm::dvec3>& centres, const std::vec
     return out;
 }
 
+// nodes[1] of a tree: the root alone at 0, every pair of children then
+// starts at an even index, and so shares a cache line (the traversal tests
+// both when it enters their parent).
+constexpr BvhNode kPadding{{0, 0, 0}, {0, 0, 0}, 0, 0};
+
 // A part of the tree built on its own: the whole tree, or one job's range.
 template <typename T>
 struct Subtree {
@@ -305,7 +310,8 @@ template <typename T>
 Subtree<T> buildTree(RefArray<T>& refs, const BvhBuildOptions& options, int threads) {
     Subtree<T> tree;
     if (refs.empty()) return tree;
-    tree.nodes.resize(1);
+    tree.nodes.resize(2);
+    tree.nodes[1] = kPadding;
     const Builder<T> builder(refs, options);
     const int count = static_cast<int>(refs.size());
     const std::vector<Range> jobs = count < kJobSpheres ? std::vector<Range>{{0, 0, count, 0}}
@@ -389,7 +395,7 @@ bool refitSphereBvh(SphereBvh<T>& bvh, const std::vector<glm::dvec3>& centres,
     // build), so one pass from the end meets every child before its parent.
     for (std::size_t i = bvh.nodes.size(); i-- > 0;) {
         BvhNode& node = bvh.nodes[i];
-        if (node.count > 0) continue;
+        if (node.count >= 0) continue;  // a leaf, or the padding
         LaneBox<double> box;
         box.grow(boxOf<double>(bvh.nodes[node.first]));
         box.grow(boxOf<double>(bvh.nodes[node.first + 1]));

@@ -34,10 +34,11 @@ namespace whitted {
 // arithmetic stays in T.
 struct BvhNode {
     float lo[3], hi[3];  // the box [lo, hi], holding every sphere below, rounded outward
-    // Inner node: `first` is the index of its first child, the second child is
-    // first + 1, and count == -1 - axis, the axis the children were split along
-    // (the first child holds the lower centres). Leaf: its spheres are
-    // SphereBvh::leafSpheres[first, first + count), count >= 1.
+    // Inner node: `first` is the index of its first child, an even one, the
+    // second child is first + 1, and count == -1 - axis, the axis the children
+    // were split along (the first child holds the lower centres). Leaf: its
+    // spheres are SphereBvh::leafSpheres[first, first + count), count >= 1.
+    // count == 0: nodes[1], which only pads the root's cache line.
     std::int32_t first;
     std::int32_t count;
 };
@@ -48,7 +49,9 @@ using BvhArray = std::vector<T, LargeBufferAllocator<T>>;
 
 template <typename T>
 struct SphereBvh {
-    BvhArray<BvhNode> nodes;  // nodes[0] is the root; empty when no sphere is in the tree
+    // nodes[0] is the root, nodes[1] padding; empty when no sphere is in the tree.
+    // Siblings share a cache line (the array is cache-line aligned).
+    BvhArray<BvhNode> nodes;
     // The leaves' spheres, leaf after leaf, each with what the sphere test
     // reads of it: the build sets every index, sphereBvhFor() the rest from the
     // scene's SphereSet (which alone knows the camera).

@@ -30,8 +30,10 @@ template <typename T>
 struct LargeBufferAllocator {
     using value_type = T;
     static constexpr std::size_t kLarge = std::size_t(1) << 20;
-    // Vector lanes (bvh_split.h) need more than new's 16 bytes; mmap gives pages.
-    static constexpr std::align_val_t kAlign{alignof(T)};
+    // Vector lanes (bvh_split.h) need more than new's 16 bytes, and a tree's
+    // sibling nodes share a line only if the array starts on one (bvh.h):
+    // cache-line aligned at least. mmap gives pages.
+    static constexpr std::align_val_t kAlign{alignof(T) > 64 ? alignof(T) : 64};
 
     LargeBufferAllocator() = default;
     template <typename U>

@@ -265,8 +265,10 @@ void expectWellFormed(const std::vector<glm::dvec3>& centres, const std::vector<
     EXPECT_LE(bvh.depth, kMaxBvhDepth);
     int leafSpheres = 0;
     std::vector<int> parents(bvh.nodes.size(), -1);
+    if (!bvh.nodes.empty()) EXPECT_EQ(bvh.nodes.at(1).count, 0) << "nodes[1] pads the root";
     for (int i = 0; i < static_cast<int>(bvh.nodes.size()); ++i) {
         const BvhNode& node = bvh.nodes[i];
+        if (i == 1) continue;
         for (int a = 0; a < 3; ++a) ASSERT_LE(node.lo[a], node.hi[a]) << "node " << i;
         if (node.count > 0) {
             leafSpheres += node.count;
@@ -280,6 +282,8 @@ void expectWellFormed(const std::vector<glm::dvec3>& centres, const std::vector<
             continue;
         }
         ASSERT_GE(node.count, -3);
+        ASSERT_LT(node.count, 0) << "node " << i;
+        EXPECT_EQ(node.first % 2, 0) << "the children of node " << i << " share a cache line";
         for (int c = node.first; c < node.first + 2; ++c) {
             ASSERT_LT(c, static_cast<int>(bvh.nodes.size()));
             ASSERT_EQ(parents[c], -1) << "node " << c << " has two parents";

@@ -265,7 +265,9 @@ void expectWellFormed(const std::vector<glm::dvec3>& centres, const std::vector<
     EXPECT_LE(bvh.depth, kMaxBvhDepth);
     int leafSpheres = 0;
     std::vector<int> parents(bvh.nodes.size(), -1);
-    if (!bvh.nodes.empty()) EXPECT_EQ(bvh.nodes.at(1).count, 0) << "nodes[1] pads the root";
+    if (!bvh.nodes.empty()) {
+        EXPECT_EQ(bvh.nodes.at(1).count, 0) << "nodes[1] pads the root";
+    }
     for (int i = 0; i < static_cast<int>(bvh.nodes.size()); ++i) {
         const BvhNode& node = bvh.nodes[i];
         if (i == 1) continue;

@@ -47,6 +47,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_args.h"
 #include "bvh.h"
 #include "bvh_traverse.h"
 #include "ray_packet.h"
@@ -162,29 +163,6 @@ struct Counts {
     std::uint64_t spheres = 0;  // leaf sphere tests (a packet's: one); the floor not included
 };
 
-// The start of bvhClosestHits(): tBest and kBest set, the rays' own spheres
-// and the spheres outside the tree tested. False when some origin lies beyond
-// the tree's reach; the caller then tests every sphere, as bvhClosestHits() does.
-bool closestStart(const SphereSet<float>& spheres, const SphereBvh<float>& bvh, const Packet& r,
-                  const PacketSlabs<float>& slabs, V& tBest, V& kBest) {
-    if ((laneBits(slabs.reach < kBvhOriginReach<float>) & r.active) != r.active) {
-        packetClosestHits(spheres, r, tBest, kBest);
-        return false;
-    }
-    tBest = V{} + std::numeric_limits<float>::infinity();
-    kBest = V{} - 1.0f;
-    unsigned into = laneBits(r.intoOrigin & maskFromBits<float>(r.active));
-    while (into) {
-        const int k = static_cast<int>(r.originSphere[__builtin_ctz(into)]);
-        const unsigned lanes = lanesInto(r, k, into);
-        closestUpdate(spheres, spheres.leafSphere(k), r, lanes, tBest, kBest);
-        into &= ~lanes;
-    }
-    for (const std::int32_t k : bvh.direct)
-        closestUpdate(spheres, spheres.leafSphere(k), r, r.active, tBest, kBest);
-    return !bvh.nodes.empty();
-}
-
 template <bool kCount>
 void testLeaf(const SphereSet<float>& spheres, const SphereBvh<float>& bvh, int first, int count,
               const Packet& r, unsigned lanes, V& tBest, V& kBest, Counts* c) {
@@ -201,7 +179,7 @@ void testLeaf(const SphereSet<float>& spheres, const SphereBvh<float>& bvh, int 
 void binaryCounted(const SphereSet<float>& spheres, const SphereBvh<float>& bvh, const Packet& r,
                    V& tBest, V& kBest, Counts* c) {
     const PacketSlabs<float> slabs = packetSlabs(r);
-    if (!closestStart(spheres, bvh, r, slabs, tBest, kBest)) return;
+    if (!bvhClosestStart(spheres, bvh, r, slabs, tBest, kBest)) return;
     ++c->boxes;
     const auto leaf = [&](const BvhNode& node, unsigned in) {
         testLeaf<true>(spheres, bvh, node.first, node.count, r, in, tBest, kBest, c);
@@ -217,31 +195,14 @@ void binaryCounted(const SphereSet<float>& spheres, const SphereBvh<float>& bvh,
 // ---------------------------------------------------------------------------
 // Wide, packets: children one after another, SIMD over the lanes.
 
-// boxLanes() for child c of a wide node, with the same operations in the same
-// order (so the same lanes pass), also giving each lane's entry distance.
+// slabLanes() for child c of a wide node: the renderer's box test, so the
+// same lanes pass, with each lane's entry distance.
 template <int W>
 unsigned childLanes(const WideNode<W>& node, int c, const PacketSlabs<float>& s, const V& limit,
                     unsigned lanes, V& entry) {
-    float reach = 0;
-    for (int a = 0; a < 3; ++a) {
-        const float lo = std::fabs(node.lo[a][c]), hi = std::fabs(node.hi[a][c]);
-        reach += lo > hi ? lo : hi;
-    }
-    const V margin = kBvhSlack<float> * (s.reach + reach);
-    const V ax = ((node.lo[0][c] - s.ox) - margin) * s.ix;
-    const V bx = ((node.hi[0][c] - s.ox) + margin) * s.ix;
-    const V ay = ((node.lo[1][c] - s.oy) - margin) * s.iy;
-    const V by = ((node.hi[1][c] - s.oy) + margin) * s.iy;
-    const V az = ((node.lo[2][c] - s.oz) - margin) * s.iz;
-    const V bz = ((node.hi[2][c] - s.oz) + margin) * s.iz;
-    const V nx = ax < bx ? ax : bx, fx = ax < bx ? bx : ax;
-    const V ny = ay < by ? ay : by, fy = ay < by ? by : ay;
-    const V nz = az < bz ? az : bz, fz = az < bz ? bz : az;
-    const V nxy = nx > ny ? nx : ny, fxy = fx < fy ? fx : fy;
-    entry = nxy > nz ? nxy : nz;
-    const V exit = fxy < fz ? fxy : fz;
-    const auto miss = (entry > exit) | (exit < 0.0f) | (entry > limit);
-    return lanes & ~laneBits(miss);
+    const float lo[3] = {node.lo[0][c], node.lo[1][c], node.lo[2][c]};
+    const float hi[3] = {node.hi[0][c], node.hi[1][c], node.hi[2][c]};
+    return slabLanes(lo, hi, s, limit, lanes, entry);
 }
 
 // A stacked child: its lanes and their entry distances when its parent was
@@ -297,7 +258,7 @@ template <int W, bool kCount>
 void widePacket(const SphereSet<float>& spheres, const SphereBvh<float>& bvh,
                 const WideBvh<W>& wide, const Packet& r, V& tBest, V& kBest, Counts* c) {
     const PacketSlabs<float> slabs = packetSlabs(r);
-    if (!closestStart(spheres, bvh, r, slabs, tBest, kBest)) return;
+    if (!bvhClosestStart(spheres, bvh, r, slabs, tBest, kBest)) return;
     PacketEntry stack[(W - 1) * kMaxBvhDepth + 2];
     int top = 0;
     stack[top++] = {V{} - std::numeric_limits<float>::infinity(), r.active, 0, -1};
@@ -417,7 +378,7 @@ template <int W, bool kCount>
 void wideRay(const SphereSet<float>& spheres, const SphereBvh<float>& bvh, const WideBvh<W>& wide,
              const Packet& r, V& tBest, V& kBest, Counts* c) {
     const PacketSlabs<float> slabs = packetSlabs(r);
-    if (!closestStart(spheres, bvh, r, slabs, tBest, kBest)) return;
+    if (!bvhClosestStart(spheres, bvh, r, slabs, tBest, kBest)) return;
     const RaySlabs s = raySlabs(slabs);
     RayEntry stack[(W - 1) * kMaxBvhDepth + 2];
     int top = 0;
@@ -657,15 +618,7 @@ struct Options {
     bool counts = true;
 };
 
-std::vector<int> parseSizes(const char* p) {
-    std::vector<int> sizes;
-    while (*p) {
-        char* end;
-        sizes.push_back(static_cast<int>(std::strtol(p, &end, 10)));
-        p = *end ? end + 1 : end;
-    }
-    return sizes;
-}
+using bench::parseSizes;
 
 Options parseOptions(int argc, char** argv) {
     Options o;

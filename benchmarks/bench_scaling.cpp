@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_args.h"
 #include "bvh.h"
 #include "image_error.h"
 #include "image_io.h"
@@ -54,15 +55,7 @@ struct Options {
     std::string images;
 };
 
-std::vector<int> parseSizes(const char* p) {
-    std::vector<int> sizes;
-    while (*p) {
-        char* end;
-        sizes.push_back(static_cast<int>(std::strtol(p, &end, 10)));
-        p = *end ? end + 1 : end;
-    }
-    return sizes;
-}
+using bench::parseSizes;
 
 Options parseOptions(int argc, char** argv) {
     Options o;

@@ -94,23 +94,23 @@ inline PacketSlabs<T> packetSlabs(const RayPacket<T>& r) {
             laneAbs<T>(r.ox) + laneAbs<T>(r.oy) + laneAbs<T>(r.oz)};
 }
 
-// The lanes of `lanes` whose ray meets the node's widened box at some t in
+// The lanes of `lanes` whose ray meets the widened box [lo, hi] at some t in
 // [0, limit], and each lane's entry distance. A NaN anywhere keeps the lane
 // (no comparison is true).
 template <typename T>
-inline unsigned boxLanes(const BvhNode& node, const PacketSlabs<T>& s,
-                         const typename Simd<T>::type& limit, unsigned lanes,
-                         typename Simd<T>::type& entry) {
+inline unsigned slabLanes(const float (&lo)[3], const float (&hi)[3], const PacketSlabs<T>& s,
+                          const typename Simd<T>::type& limit, unsigned lanes,
+                          typename Simd<T>::type& entry) {
     using V = typename Simd<T>::type;
     T reach = 0;
     for (int i = 0; i < 3; ++i) {
-        const T lo = std::fabs(node.lo[i]), hi = std::fabs(node.hi[i]);
-        reach += lo > hi ? lo : hi;
+        const T l = std::fabs(lo[i]), h = std::fabs(hi[i]);
+        reach += l > h ? l : h;
     }
     const V margin = kBvhSlack<T> * (s.reach + reach);
-    const V ax = ((node.lo[0] - s.ox) - margin) * s.ix, bx = ((node.hi[0] - s.ox) + margin) * s.ix;
-    const V ay = ((node.lo[1] - s.oy) - margin) * s.iy, by = ((node.hi[1] - s.oy) + margin) * s.iy;
-    const V az = ((node.lo[2] - s.oz) - margin) * s.iz, bz = ((node.hi[2] - s.oz) + margin) * s.iz;
+    const V ax = ((lo[0] - s.ox) - margin) * s.ix, bx = ((hi[0] - s.ox) + margin) * s.ix;
+    const V ay = ((lo[1] - s.oy) - margin) * s.iy, by = ((hi[1] - s.oy) + margin) * s.iy;
+    const V az = ((lo[2] - s.oz) - margin) * s.iz, bz = ((hi[2] - s.oz) + margin) * s.iz;
     const V nx = ax < bx ? ax : bx, fx = ax < bx ? bx : ax;
     const V ny = ay < by ? ay : by, fy = ay < by ? by : ay;
     const V nz = az < bz ? az : bz, fz = az < bz ? bz : az;
@@ -119,6 +119,14 @@ inline unsigned boxLanes(const BvhNode& node, const PacketSlabs<T>& s,
     const V exit = fxy < fz ? fxy : fz;
     const auto miss = (entry > exit) | (exit < T(0)) | (entry > limit);
     return lanes & ~laneBits(miss);
+}
+
+// slabLanes() for a node's box.
+template <typename T>
+inline unsigned boxLanes(const BvhNode& node, const PacketSlabs<T>& s,
+                         const typename Simd<T>::type& limit, unsigned lanes,
+                         typename Simd<T>::type& entry) {
+    return slabLanes(node.lo, node.hi, s, limit, lanes, entry);
 }
 
 // A node some lanes are yet to visit, with their entry distances into its box.
@@ -214,19 +222,19 @@ inline void closestUpdate(const SphereSet<T>& spheres, const LeafSphere<T>& sphe
     kBest = take ? kk : kBest;
 }
 
-// packetClosestHits() through the tree. Kept out of line, as is
-// bvhTransmittance(): inlined into the kernel's packet loop beside the
-// brute-force path, it cost the seed's render (brute force) 0.5% more
-// instructions; out of line, the 100k field's render costs 2% more
-// instructions and 15% fewer L1 misses (callgrind, docs/performance.md).
+// The start of bvhClosestHits(): tBest and kBest set, the rays' own spheres
+// and the spheres kept out of the tree tested. False when nothing is left to
+// do: some origin lies beyond the tree's reach (then every sphere has been
+// tested, by brute force), or the tree is empty.
 template <typename T>
-__attribute__((noinline)) void bvhClosestHits(const SphereSet<T>& spheres, const SphereBvh<T>& bvh,
-                                              const RayPacket<T>& r, typename Simd<T>::type& tBest,
-                                              typename Simd<T>::type& kBest) {
+inline bool bvhClosestStart(const SphereSet<T>& spheres, const SphereBvh<T>& bvh,
+                            const RayPacket<T>& r, const PacketSlabs<T>& slabs,
+                            typename Simd<T>::type& tBest, typename Simd<T>::type& kBest) {
     using V = typename Simd<T>::type;
-    const PacketSlabs<T> slabs = packetSlabs(r);
-    if ((laneBits(slabs.reach < kBvhOriginReach<T>) & r.active) != r.active)
-        return packetClosestHits(spheres, r, tBest, kBest);
+    if ((laneBits(slabs.reach < kBvhOriginReach<T>) & r.active) != r.active) {
+        packetClosestHits(spheres, r, tBest, kBest);
+        return false;
+    }
     tBest = V{} + std::numeric_limits<T>::infinity();
     kBest = V{} - T(1);
     // A ray going into its own sphere meets it even where rounding says its
@@ -241,7 +249,20 @@ __attribute__((noinline)) void bvhClosestHits(const SphereSet<T>& spheres, const
     // The huge spheres next: a floor's hit shortens every ray before the tree.
     for (const std::int32_t k : bvh.direct)
         closestUpdate(spheres, spheres.leafSphere(k), r, r.active, tBest, kBest);
-    if (bvh.nodes.empty()) return;
+    return !bvh.nodes.empty();
+}
+
+// packetClosestHits() through the tree. Kept out of line, as is
+// bvhTransmittance(): inlined into the kernel's packet loop beside the
+// brute-force path, it cost the seed's render (brute force) 0.5% more
+// instructions; out of line, the 100k field's render costs 2% more
+// instructions and 15% fewer L1 misses (callgrind, docs/performance.md).
+template <typename T>
+__attribute__((noinline)) void bvhClosestHits(const SphereSet<T>& spheres, const SphereBvh<T>& bvh,
+                                              const RayPacket<T>& r, typename Simd<T>::type& tBest,
+                                              typename Simd<T>::type& kBest) {
+    const PacketSlabs<T> slabs = packetSlabs(r);
+    if (!bvhClosestStart(spheres, bvh, r, slabs, tBest, kBest)) return;
     // Testing a ray's own sphere again changes nothing: its (t, k) is already kept.
     auto leaf = [&](const BvhNode& node, unsigned lanes) {
         for (int i = node.first; i < node.first + node.count; ++i)

@@ -108,12 +108,13 @@ class TileRenderer {
         const double workPerPixel = pass.work / (double(s_.width) * s_.height);
         auto worker = [&] {
             RayCounts counts;
+            Row row;  // the worker's own
             for (;;) {
                 if (stopRequested()) break;
                 const size_t t = next.fetch_add(1);
                 if (t >= tiles.size()) break;
                 const Tile& tile = tiles[t];
-                if (!renderTile(pass, tile, counts)) break;
+                if (!renderTile(pass, tile, row, counts)) break;
                 const double done = workDone_.fetch_add(workPerPixel * tile.w * tile.h) +
                                     workPerPixel * tile.w * tile.h;
                 if (onTile_) {
@@ -135,6 +136,12 @@ class TileRenderer {
         for (auto& h : helpers) h.join();
     }
 
+    // A worker's buffers for one row of a tile, kept from tile to tile.
+    struct Row {
+        std::vector<Vec<T>> radiance;
+        std::vector<glm::dvec3> sums;
+    };
+
     // The image is float whatever the precision: radiance beyond the largest
     // float (a light of intensity 1e300 in double, or sums that overflowed to
     // infinity) is stored as the largest float, never as infinity.
@@ -144,30 +151,59 @@ class TileRenderer {
         for (int c = 0; c < 3; ++c) out[c] = float(std::min(double(radiance[c]), kLargest));
     }
 
+    // A sum of n samples over n. Dividing by a power of two and multiplying by
+    // its inverse round the same exact quotient, so those passes (every one of
+    // a progressive render but perhaps the last) multiply: a division per
+    // channel was the largest cost of the tile loop after tracing.
+    static void storeMean(float* out, const glm::dvec3& sum, int n) {
+        if ((n & (n - 1)) == 0)
+            storePixel(out, sum * (1.0 / double(n)));
+        else
+            storePixel(out, sum / double(n));
+    }
+
+    // A one-sample pass stores the samples as they come: what the sums would
+    // hold, 0.0 + sample (which turns a -0.0 into +0.0), over 1.
+    void storeSamples(const Vec<T>* radiance, int x, int y, int w) {
+        float* out = image_.pixel(x, y);
+        for (int i = 0; i < w; ++i) storePixel(out + 3 * i, 0.0 + glm::dvec3(radiance[i]));
+    }
+
     // False when stopped part-way: the tile is then incomplete and not reported.
-    bool renderTile(const Pass& pass, const Tile& tile, RayCounts& counts) {
+    bool renderTile(const Pass& pass, const Tile& tile, Row& row, RayCounts& counts) {
         if (pass.kind == PassKind::Preview) return renderPreviewTile(tile, counts);
-        std::vector<Vec<T>> radiance(tile.w);
-        std::vector<glm::dvec3> sums(tile.w);
+        row.radiance.resize(tile.w);
+        row.sums.resize(tile.w);
+        const bool oneSample = pass.firstSample == 0 && pass.lastSample == 1 && sums_.empty();
         for (int y = tile.y; y < tile.y + tile.h; ++y) {
             if (stopRequested()) return false;
-            const size_t row = size_t(y) * s_.width + tile.x;
-            if (pass.firstSample > 0)
-                std::copy_n(sums_.begin() + row, tile.w, sums.begin());
-            else
-                std::fill(sums.begin(), sums.end(), glm::dvec3(0.0));
-            // Sample by sample across the row: each pixel still sums its samples
-            // in index order, as a one-shot render does.
-            for (int n = pass.firstSample; n < pass.lastSample; ++n) {
-                traceCameraRow(s_, y, tile.x, tile.w, n, radiance.data(), counts);
-                for (int i = 0; i < tile.w; ++i) sums[i] += glm::dvec3(radiance[i]);
-            }
-            if (!sums_.empty()) std::copy_n(sums.begin(), tile.w, sums_.begin() + row);
-            for (int i = 0; i < tile.w; ++i) {
-                storePixel(image_.pixel(tile.x + i, y), sums[i] / double(pass.lastSample));
+            if (oneSample) {
+                traceCameraRow(s_, y, tile.x, tile.w, 0, row.radiance.data(), counts);
+                storeSamples(row.radiance.data(), tile.x, y, tile.w);
+            } else {
+                renderRow(pass, tile, y, row, counts);
             }
         }
         return true;
+    }
+
+    void renderRow(const Pass& pass, const Tile& tile, int y, Row& row, RayCounts& counts) {
+        std::vector<glm::dvec3>& sums = row.sums;
+        const Vec<T>* radiance = row.radiance.data();
+        const size_t at = size_t(y) * s_.width + tile.x;
+        if (pass.firstSample > 0)
+            std::copy_n(sums_.begin() + at, tile.w, sums.begin());
+        else
+            std::fill(sums.begin(), sums.end(), glm::dvec3(0.0));
+        // Sample by sample across the row: each pixel still sums its samples
+        // in index order, as a one-shot render does.
+        for (int n = pass.firstSample; n < pass.lastSample; ++n) {
+            traceCameraRow(s_, y, tile.x, tile.w, n, row.radiance.data(), counts);
+            for (int i = 0; i < tile.w; ++i) sums[i] += glm::dvec3(radiance[i]);
+        }
+        if (!sums_.empty()) std::copy_n(sums.begin(), tile.w, sums_.begin() + at);
+        for (int i = 0; i < tile.w; ++i)
+            storeMean(image_.pixel(tile.x + i, y), sums[i], pass.lastSample);
     }
 
     bool renderPreviewTile(const Tile& tile, RayCounts& counts) {

@@ -91,6 +91,40 @@ inline V laneSqrt(const V& v) {
 #endif
 }
 
+#if defined(__FMA__)
+// a * b + c rounded once, per lane: what std::fma gives one lane. Only where
+// the target has FMA, as exact::twoProduct() uses std::fma only there.
+template <typename V>
+inline V laneFma(const V& a, const V& b, const V& c) {
+#if defined(__AVX512F__)
+    if constexpr (sizeof(V) == 64) {
+        if constexpr (sizeof(a[0]) == 4)
+            return reinterpret_cast<V>(_mm512_fmadd_ps(reinterpret_cast<__m512>(a),
+                                                       reinterpret_cast<__m512>(b),
+                                                       reinterpret_cast<__m512>(c)));
+        else
+            return reinterpret_cast<V>(_mm512_fmadd_pd(reinterpret_cast<__m512d>(a),
+                                                       reinterpret_cast<__m512d>(b),
+                                                       reinterpret_cast<__m512d>(c)));
+    }
+#endif
+    if constexpr (sizeof(V) == 32) {
+        if constexpr (sizeof(a[0]) == 4)
+            return reinterpret_cast<V>(_mm256_fmadd_ps(reinterpret_cast<__m256>(a),
+                                                       reinterpret_cast<__m256>(b),
+                                                       reinterpret_cast<__m256>(c)));
+        else
+            return reinterpret_cast<V>(_mm256_fmadd_pd(reinterpret_cast<__m256d>(a),
+                                                       reinterpret_cast<__m256d>(b),
+                                                       reinterpret_cast<__m256d>(c)));
+    } else {
+        V r{};
+        for (unsigned l = 0; l < sizeof(V) / sizeof(a[0]); ++l) r[l] = std::fma(a[l], b[l], c[l]);
+        return r;
+    }
+}
+#endif
+
 // floor() with SSE2 alone, which has no rounding instruction: adding and
 // subtracting 2^23 (2^52 for double) rounds |v| to a whole number, exactly,
 // then one step down fixes what rounded up. Larger magnitudes and NaN are

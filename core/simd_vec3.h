@@ -19,7 +19,10 @@ inline namespace WHITTED_ISA_NAMESPACE {
 template <typename T>
 struct Vec3x {
     using V = typename Simd<T>::type;
-    V x{}, y{}, z{};
+    // Not zeroed: every Vec3x the kernel declares is written whole before it
+    // is read, and zeroing the large structs made of them (LaneMaterials) was
+    // a memset call per packet.
+    V x, y, z;
 
     static Vec3x broadcast(const Vec<T>& v) { return {V{} + v.x, V{} + v.y, V{} + v.z}; }
     Vec<T> lane(int l) const { return {x[l], y[l], z[l]}; }

@@ -18,6 +18,8 @@
 #include <glm/vec3.hpp>
 
 #include "isa_namespace.h"
+#include "simd.h"
+
 namespace whitted {
 
 template <typename T>
@@ -62,6 +64,21 @@ inline void twoSquare(T a, T& p, T& e) {
     twoProduct(a, a, p, e);
 }
 
+// twoSquare() for every lane of a SIMD vector V of T, by the same operations.
+template <typename V, typename T>
+inline void twoSquareLanes(const V& a, V& p, V& e) {
+    p = a * a;
+#ifdef __FMA__
+    e = laneFma(a, a, -p);
+#else
+    constexpr T splitter = sizeof(T) == 4 ? T(4097) : T(134217729);  // 2^12+1, 2^27+1
+    const V ta = splitter * a;
+    const V ahi = ta - (ta - a);
+    const V alo = a - ahi;
+    e = ((ahi * ahi - p) + ahi * alo + alo * ahi) + alo * alo;
+#endif
+}
+
 }  // namespace exact
 
 // |o - centre|^2 - r^2 to nearly full precision of T, given the centre as
@@ -86,6 +103,29 @@ T accurateOffsetSquared(const Vec<T>& o, const Vec<T>& centre, const Vec<T>& cen
     err += e;
     T small = pe[0] + pe[1] + pe[2] - rrLo;
     for (int i = 0; i < 3; ++i) small += fl[i] * (T(2) * fh[i] + fl[i]);
+    return s + (err + small);
+}
+
+// accurateOffsetSquared() for every lane of a SIMD vector V of T, operation
+// for operation, so each lane gets what the scalar function gives its origin.
+template <typename V, typename T>
+V accurateOffsetSquaredLanes(const V (&o)[3], const Vec<T>& centre, const Vec<T>& centreLo, T rrHi,
+                             T rrLo) {
+    V fh[3], fl[3], p[3], pe[3];
+    for (int i = 0; i < 3; ++i) {
+        exact::twoSum<V>(o[i], -(V{} + centre[i]), fh[i], fl[i]);  // -c exactly, as its sign
+        fl[i] = fl[i] - centreLo[i];
+        exact::twoSquareLanes<V, T>(fh[i], p[i], pe[i]);
+    }
+    V s = p[0], err{}, e;
+    exact::twoSum<V>(s, p[1], s, e);
+    err = err + e;
+    exact::twoSum<V>(s, p[2], s, e);
+    err = err + e;
+    exact::twoSum<V>(s, -(V{} + rrHi), s, e);
+    err = err + e;
+    V small = pe[0] + pe[1] + pe[2] - rrLo;
+    for (int i = 0; i < 3; ++i) small = small + fl[i] * (T(2) * fh[i] + fl[i]);
     return s + (err + small);
 }
 

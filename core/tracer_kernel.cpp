@@ -57,12 +57,13 @@ struct LaneMaterials {
     using V = typename Simd<T>::type;
     using Mask = typename RayPacket<T>::Mask;
     Vec3x<T> centre, centreLo, diffuse;
-    V specular{}, reflectivity{}, transparency{}, ior{};
-    Mask lit{}, checker{};
-    Mask shininessInt{};  // the whole shininess, or -1 for lanes that need std::pow
-    V shininess{};
+    // Not zeroed: gatherMaterials() writes every field of every lane.
+    V specular, reflectivity, transparency, ior;
+    Mask lit, checker;
+    Mask shininessInt;  // the whole shininess, or -1 for lanes that need std::pow
+    V shininess;
     Vec3x<T> checkerColor, checkerFrameFraction, checkerFrameFractionLo, checkerFrameParity;
-    V checkerInvSize{}, checkerSize{}, checkerSizeLo{}, radius{}, radiusLo{}, rrHi{}, rrLo{};
+    V checkerInvSize, checkerSize, checkerSizeLo, radius, radiusLo, rrHi, rrLo;
 };
 
 // Writes one hit's sphere and material into a LaneMaterials, field by field,
@@ -95,31 +96,34 @@ void describeHit(const PreparedScene<T>& s, int k, LaneMaterials<T>& g, Put put)
     put(g.rrLo, s.spheres.rrLo[k]);
 }
 
+// Every field of every lane (those of `lanes` that miss too) from the sphere
+// of the lowest lane of `lanes`, then, sphere by sphere, the lanes that hit
+// another. Neighbouring rays mostly hit one sphere, and a scene has few near
+// one packet: a broadcast and a blend per field and sphere cost less than the
+// scalar stores of lane by lane (about 40 a lane).
 template <typename T>
 LaneMaterials<T> gatherMaterials(const PreparedScene<T>& s, const typename Simd<T>::type& kHit,
                                  unsigned lanes) {
     LaneMaterials<T> g;
-    // Neighbouring rays mostly hit one sphere: then every field is one
-    // broadcast instead of about 40 scalar stores per lane.
     const T first = kHit[__builtin_ctz(lanes)];
-    if ((laneBits(kHit == first) & lanes) == lanes) {
-        describeHit(s, static_cast<int>(first), g, [](auto& field, const auto& value) {
+    describeHit(s, static_cast<int>(first), g, [](auto& field, const auto& value) {
+        using Field = std::remove_reference_t<decltype(field)>;
+        if constexpr (requires { field.setLane(0, value); })
+            field = Field::broadcast(value);
+        else
+            field = Field{} + value;
+    });
+    for (unsigned rest = lanes & ~laneBits(kHit == first); rest;) {
+        const T k = kHit[__builtin_ctz(rest)];
+        const auto same = kHit == k;
+        describeHit(s, static_cast<int>(k), g, [&same](auto& field, const auto& value) {
             using Field = std::remove_reference_t<decltype(field)>;
             if constexpr (requires { field.setLane(0, value); })
-                field = Field::broadcast(value);
+                field = select(same, Field::broadcast(value), field);
             else
-                field = Field{} + value;
+                field = same ? Field{} + value : field;
         });
-        return g;
-    }
-    for (unsigned bits = lanes; bits; bits &= bits - 1) {
-        const int l = __builtin_ctz(bits);
-        describeHit(s, static_cast<int>(kHit[l]), g, [l](auto& field, const auto& value) {
-            if constexpr (requires { field.setLane(l, value); })
-                field.setLane(l, value);
-            else
-                field[l] = value;
-        });
+        rest &= ~laneBits(same);
     }
     return g;
 }
@@ -245,8 +249,7 @@ void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth,
         if (!litLanes) continue;
         counts.shadow += __builtin_popcount(litLanes);
         // The shadow ray goes into the sphere when it leaves p against the outward normal.
-        RayPacket<T> shadow;
-        shadow.assign(p, l, kHit, dot(l, outward) < T(0), litLanes);
+        const RayPacket<T> shadow = RayPacket<T>::of(p, l, kHit, dot(l, outward) < T(0), litLanes);
         const V sj = sceneTransmittance(s.spheres, s.transparency, s.useBvh ? s.bvh.get() : nullptr,
                                         shadow, distance, litLanes);
         const auto shaded = lit & (sj != T(0));
@@ -285,8 +288,7 @@ void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth,
             const V root = laneSqrt(passes ? k : V{});
             const Vec3x<T> t = normalize(eta * d + (eta * cosi - root) * n);
             // Refracted rays cross the surface: into the sphere from outside, out from inside.
-            RayPacket<T> refracted;
-            refracted.assign(p, t, kHit, ~inside, bits);
+            const RayPacket<T> refracted = RayPacket<T>::of(p, t, kHit, ~inside, bits);
             counts.refraction += __builtin_popcount(bits);
             Vec3x<T> sub;
             tracePacket(s, refracted, depth + 1, sub, counts);
@@ -296,8 +298,7 @@ void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth,
     const auto mirror = hit & (reflectWeight > T(0));
     if (const unsigned bits = laneBits(mirror)) {
         const Vec3x<T> r = d - (T(2) * dot(d, n)) * n;  // reflect(d, n)
-        RayPacket<T> reflected;
-        reflected.assign(p, r, kHit, inside, bits);
+        const RayPacket<T> reflected = RayPacket<T>::of(p, r, kHit, inside, bits);
         counts.reflection += __builtin_popcount(bits);
         Vec3x<T> sub;
         tracePacket(s, reflected, depth + 1, sub, counts);
@@ -327,10 +328,9 @@ void traceCameraPacket(const PreparedScene<T>& s, typename Simd<T>::type x,
     const Vec3x<T> dir =
         normalize(Vec3x<T>::broadcast(cam.forward) + x * Vec3x<T>::broadcast(cam.right) +
                   y * Vec3x<T>::broadcast(cam.up));
-    RayPacket<T> packet;
-    packet.fromCamera = true;
-    packet.assign(Vec3x<T>::broadcast(cam.origin), dir, V{} - T(1), typename RayPacket<T>::Mask{},
-                  (1u << m) - 1);
+    const RayPacket<T> packet =
+        RayPacket<T>::of(Vec3x<T>::broadcast(cam.origin), dir, V{} - T(1),
+                         typename RayPacket<T>::Mask{}, (1u << m) - 1, true);
     counts.camera += m;
     tracePacket(s, packet, 0, radiance, counts);
 }

@@ -441,10 +441,8 @@ Packet cameraPacket(const CameraBasis<float>& cam, int y, int x0, int m) {
     const Vec3x<float> dir =
         normalize(Vec3x<float>::broadcast(cam.forward) + x * Vec3x<float>::broadcast(cam.right) +
                   yy * Vec3x<float>::broadcast(cam.up));
-    Packet p;
-    p.fromCamera = true;
-    p.assign(Vec3x<float>::broadcast(cam.origin), dir, V{} - 1.0f, Packet::Mask{}, (1u << m) - 1);
-    return p;
+    return Packet::of(Vec3x<float>::broadcast(cam.origin), dir, V{} - 1.0f, Packet::Mask{},
+                      (1u << m) - 1, true);
 }
 
 RaySet cameraRays(const Bench& b, int rowStep) {
@@ -472,9 +470,7 @@ Packet reflectPacket(const Bench& b, const Packet& r) {
     const Vec3x<float> outward = normalize(p - centre);
     const auto inside = dot(d, outward) > 0.0f;
     const Vec3x<float> n = select(inside, -outward, outward);
-    Packet out;
-    out.assign(p, d - (2.0f * dot(d, n)) * n, k, inside, lanes);
-    return out;
+    return Packet::of(p, d - (2.0f * dot(d, n)) * n, k, inside, lanes);
 }
 
 RaySet reflectRays(const Bench& b, const RaySet& camera) {

@@ -18,7 +18,8 @@
 #include <cstddef>
 #include <cstring>
 #include <new>
-#include <utility>
+
+#include "uninitialised_allocator.h"
 
 namespace whitted {
 
@@ -26,9 +27,16 @@ namespace whitted {
 void* allocateZeroedPages(std::size_t bytes);
 void releasePages(void* pages, std::size_t bytes);
 
+// Value-initialisation leaves the (already zero) memory alone; every other
+// construction, copies and fills included, is the ordinary one
+// (UninitialisedAllocator's construct()).
 template <typename T>
-struct LargeBufferAllocator {
+struct LargeBufferAllocator : UninitialisedAllocator<T> {
     using value_type = T;
+    template <typename U>
+    struct rebind {
+        using other = LargeBufferAllocator<U>;
+    };
     static constexpr std::size_t kLarge = std::size_t(1) << 20;
     // Vector lanes (bvh_split.h) need more than new's 16 bytes, and a tree's
     // sibling nodes share a line only if the array starts on one (bvh.h):
@@ -51,17 +59,6 @@ struct LargeBufferAllocator {
             ::operator delete(p, kAlign);
         else
             releasePages(p, n * sizeof(T));
-    }
-
-    // Value-initialisation leaves the (already zero) memory alone; every other
-    // construction, copies and fills included, is the ordinary one.
-    template <typename U>
-    void construct(U* p) noexcept {
-        ::new (static_cast<void*>(p)) U;
-    }
-    template <typename U, typename... Args>
-    void construct(U* p, Args&&... args) {
-        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
     }
 
     template <typename U>

@@ -9,8 +9,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "large_buffer_allocator.h"
 #include "sphere_intersect.h"
+#include "uninitialised_allocator.h"
 
 namespace whitted {
 
@@ -37,11 +37,10 @@ struct LeafSphere {
 // both terms and so see the double scene's sphere; everything else uses hi.
 template <typename T>
 struct SphereSet {
-    // From mmap when large (large_buffer_allocator.h): a million spheres' arrays
-    // are then zeroed by no one, and their pages first touched by the threads
-    // that fill them (prepareScene).
+    // Not zeroed on resize (uninitialised_allocator.h): a million spheres'
+    // arrays are filled in parallel by prepareScene, each element once.
     template <typename E>
-    using Array = std::vector<E, LargeBufferAllocator<E>>;
+    using Array = std::vector<E, UninitialisedAllocator<E>>;
     Array<Vec<T>> centre, centreLo;  // centre + centreLo: the centre, to ~eps(T)^2
     Array<T> radius, radiusLo;       // likewise the radius
     Array<T> rrHi, rrLo;             // radius^2 == rrHi + rrLo, to ~eps(T)^2

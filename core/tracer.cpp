@@ -12,6 +12,7 @@
 #include "parallel_for.h"
 #include "renderer.h"
 #include "sampling.h"
+#include "scene_io.h"
 #include "tracer_kernel.h"
 
 namespace whitted {
@@ -124,20 +125,31 @@ PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache) {
     s.material.resize(count);
     s.transparency.resize(count);
     const auto materialIndex = materialIndices(scene);
+    std::atomic<int> unknownMaterial{-1};  // a sphere whose material is missing
     // Each sphere into its own place, on all cores: a million spheres took a
-    // second on one (docs/performance.md). A few dozen stay on this thread.
+    // second on one (docs/performance.md). Fewer than kSphereChunk stay on
+    // this thread.
     forChunks(count, resolveThreadCount(0), [&](int k) {
         const Sphere& sp = scene.spheres[k];
         Vec3 c, cLo;  // the centre in the frame, exactly: c + cLo
         for (int i = 0; i < 3; ++i) exact::twoSum(sp.center[i], -s.frameOrigin[i], c[i], cLo[i]);
         s.spheres.set(k, c, cLo, sp.radius, s.camera.origin);
-        s.material[k] = materialIndex.at(sp.material);
-        s.transparency[k] = s.materials[s.material[k]].transparency;
+        const auto material = materialIndex.find(sp.material);
+        if (material == materialIndex.end()) unknownMaterial = k;
+        s.material[k] = material == materialIndex.end() ? 0 : material->second;
+        s.transparency[k] = s.materials.empty() ? T(1) : s.materials[s.material[k]].transparency;
         if (useBvh) {
             centres[k] = c;  // cLo is far inside the traversal's margin
             radii[k] = sp.radius;
         }
     });
+    // Validated scenes never get here with one. Thrown on this thread, not a
+    // worker's, in validateScene()'s words.
+    if (unknownMaterial >= 0) {
+        const std::optional<SceneProblem> problem = validateScene(scene);
+        throw std::invalid_argument(problem ? problem->jsonPath + ": " + problem->reason
+                                            : "a sphere's material is missing");
+    }
     if (useBvh) {
         s.bvh = sphereBvhFor<T>(centres, radii, s.spheres, bvhCache);
         s.useBvh = true;

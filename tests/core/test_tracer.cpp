@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <ostream>
+#include <stdexcept>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -539,6 +540,21 @@ TEST_P(ShadingTest, DarkLightOrUnlitMaterials_TraceNoShadowRays) {
     s.materials[0].diffuse = {0, 0, 0};
     s.materials[0].specular = 0;  // kd = ks = 0: the light term is zero everywhere
     EXPECT_EQ(renderOneThread(s).rays.shadow, 0u) << "black, non-specular material";
+}
+
+// prepareScene() fills the spheres on all cores; a sphere naming a missing
+// material (a scene not validated first) is refused on the caller's thread,
+// in validateScene()'s words, not left to crash a worker.
+TEST(PrepareScene, SphereWithMissingMaterial_IsRefusedWithItsPath) {
+    Scene s = centreRayScene(Precision::Float);
+    s.materials = {material("red", {1, 0, 0})};
+    s.spheres = {sphere("a", {0, 0, 5}, 1, "red"), sphere("b", {0, 3, 5}, 1, "blue")};
+    try {
+        prepareScene<float>(s);
+        FAIL() << "prepared a scene whose sphere names a missing material";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_EQ(std::string(e.what()), "spheres[1].material: no material named \"blue\"");
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Precisions, ShadingTest,

@@ -326,22 +326,17 @@ template <typename T>
 RefArray<T> makeRefs(const std::vector<glm::dvec3>& centres, const std::vector<double>& radii,
                      const std::vector<char>& out, int threads) {
     const int n = static_cast<int>(radii.size());
-    struct Chunk {
-        int firstRef, begin, end;
-    };
-    std::vector<Chunk> chunks;
+    std::vector<int> firstRef(chunkCount(n));  // where each chunk's refs begin
     int kept = 0;
-    for (int begin = 0; begin < n; begin += kSphereChunk) {
-        const int end = std::min(n, begin + kSphereChunk);
-        chunks.push_back({kept, begin, end});
+    for (int c = 0; c < chunkCount(n); ++c) {
+        firstRef[c] = kept;
+        const int begin = c * kSphereChunk, end = std::min(n, begin + kSphereChunk);
         kept += static_cast<int>(std::count(out.begin() + begin, out.begin() + end, 0));
     }
     RefArray<T> refs(kept);
-    std::vector<int> order(chunks.size());
-    std::iota(order.begin(), order.end(), 0);
-    parallelFor(order, threads, [&](int c) {
-        int next = chunks[c].firstRef;
-        for (int i = chunks[c].begin; i < chunks[c].end; ++i)
+    forEachChunk(n, threads, [&](int c, int begin, int end) {
+        int next = firstRef[c];
+        for (int i = begin; i < end; ++i)
             if (!out[i]) refs[next++] = sphereRef<T>(centres[i], radii[i], i);
     });
     return refs;
@@ -409,12 +404,10 @@ double sahCost(const SphereBvh<T>& bvh) {
     // Summed by chunk, in parallel, then the chunks in order: the same sum
     // for any number of threads.
     const int nodes = static_cast<int>(bvh.nodes.size());
-    std::vector<int> chunks((nodes + kSphereChunk - 1) / kSphereChunk);
-    std::iota(chunks.begin(), chunks.end(), 0);
-    std::vector<double> chunkCost(chunks.size());
-    parallelFor(chunks, resolveThreadCount(0), [&](int c) {
+    std::vector<double> chunkCost(chunkCount(nodes));
+    forEachChunk(nodes, resolveThreadCount(0), [&](int c, int begin, int end) {
         double cost = 0;
-        for (int i = c * kSphereChunk; i < std::min(nodes, (c + 1) * kSphereChunk); ++i) {
+        for (int i = begin; i < end; ++i) {
             const BvhNode& n = bvh.nodes[i];
             cost += double(boxOf<T>(n).halfArea()) * (n.count > 0 ? n.count : 1);
         }

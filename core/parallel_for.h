@@ -32,15 +32,32 @@ void parallelFor(const std::vector<int>& order, int threads, const Work& work) {
     for (std::thread& h : helpers) h.join();
 }
 
+// The number of chunks forEachChunk() cuts `count` items into.
+inline int chunkCount(int count, int chunk = kSphereChunk) {
+    return (count + chunk - 1) / chunk;
+}
+
+// Runs work(c, begin, end) for each chunk c, the items [begin, end) of
+// [0, count), `chunk` items a chunk, on up to `threads` threads: for passes
+// that keep something per chunk (a partial sum, a place to write from).
+template <typename Work>
+void forEachChunk(int count, int threads, const Work& work, int chunk = kSphereChunk) {
+    std::vector<int> chunks(chunkCount(count, chunk));
+    std::iota(chunks.begin(), chunks.end(), 0);
+    parallelFor(chunks, threads,
+                [&](int c) { work(c, c * chunk, std::min(count, (c + 1) * chunk)); });
+}
+
 // Runs work(i) for i in [0, count), in chunks of `chunk` on up to `threads`
 // threads.
 template <typename Work>
 void forChunks(int count, int threads, const Work& work, int chunk = kSphereChunk) {
-    std::vector<int> chunks((count + chunk - 1) / chunk);
-    std::iota(chunks.begin(), chunks.end(), 0);
-    parallelFor(chunks, threads, [&](int c) {
-        for (int i = c * chunk; i < std::min(count, (c + 1) * chunk); ++i) work(i);
-    });
+    forEachChunk(
+        count, threads,
+        [&](int, int begin, int end) {
+            for (int i = begin; i < end; ++i) work(i);
+        },
+        chunk);
 }
 
 }  // namespace whitted

@@ -54,18 +54,50 @@ bool inReach(const glm::dvec3& c, double r) {
     return std::max({std::fabs(c.x), std::fabs(c.y), std::fabs(c.z)}) + r < kTreeReach<T>;
 }
 
-// x rounded to T towards -infinity / +infinity. The rounded value goes through
-// a volatile, as in SphereSet::split: GCC's SLP vectoriser has been seen
-// dropping double(T(x)) round trips.
+// Lanes rounded to float one way, with no branch: which way the nearest float
+// lies is a coin toss per coordinate, and the branches of std::nextafter took
+// a sixth of the build. A float's bits, read as sign and magnitude, map to an
+// integer key that counts floats in order (both zeros to 0), so the next float
+// down or up is the key minus or plus one.
+using bvh_build::LaneInts;
+LaneInts floatKeys(Lanes<float> x) {
+    const LaneInts bits = reinterpret_cast<LaneInts>(x);
+    const LaneInts magnitude = bits & 0x7fffffff;
+    return bits < 0 ? -magnitude : magnitude;
+}
+Lanes<float> floatsOfKeys(LaneInts key) {
+    const LaneInts bits = key < 0 ? (-key | std::int32_t(0x80000000)) : key;
+    return reinterpret_cast<Lanes<float>>(bits);
+}
+// The lanes of x rounded to float towards -infinity.
+Lanes<float> floatsBelow(Lanes<double> x) {
+    const Lanes<float> nearest = __builtin_convertvector(x, Lanes<float>);
+    const LaneInts above = __builtin_convertvector(
+        __builtin_convertvector(nearest, Lanes<double>) > x, LaneInts);  // -1: one float too high
+    return floatsOfKeys(floatKeys(nearest) + above);
+}
+// The lanes of x rounded to float towards +infinity.
+Lanes<float> floatsAbove(Lanes<double> x) {
+    const Lanes<float> nearest = __builtin_convertvector(x, Lanes<float>);
+    const LaneInts below = __builtin_convertvector(
+        __builtin_convertvector(nearest, Lanes<double>) < x, LaneInts);  // -1: one float too low
+    return floatsOfKeys(floatKeys(nearest) - below);
+}
+
+// Lanes rounded outward to T: to float as above, unchanged in double.
 template <typename T>
-T roundedDown(double x) {
-    const volatile T t = static_cast<T>(x);
-    return double(t) > x ? std::nextafter(T(t), -std::numeric_limits<T>::infinity()) : T(t);
+Lanes<T> lanesBelow(Lanes<double> x) {
+    if constexpr (sizeof(T) == sizeof(float))
+        return floatsBelow(x);
+    else
+        return x;
 }
 template <typename T>
-T roundedUp(double x) {
-    const volatile T t = static_cast<T>(x);
-    return double(t) < x ? std::nextafter(T(t), std::numeric_limits<T>::infinity()) : T(t);
+Lanes<T> lanesAbove(Lanes<double> x) {
+    if constexpr (sizeof(T) == sizeof(float))
+        return floatsAbove(x);
+    else
+        return x;
 }
 
 template <typename T>
@@ -78,20 +110,18 @@ LaneBox<T> boxOf(const BvhNode& node) {
 
 template <typename T>
 void storeBox(BvhNode& node, const LaneBox<T>& box) {
+    const Lanes<float> lo = floatsBelow(__builtin_convertvector(box.lo, Lanes<double>));
+    const Lanes<float> hi = floatsAbove(__builtin_convertvector(box.hi, Lanes<double>));
     for (int a = 0; a < 3; ++a) {
-        node.lo[a] = roundedDown<float>(double(box.lo[a]));
-        node.hi[a] = roundedUp<float>(double(box.hi[a]));
+        node.lo[a] = lo[a];
+        node.hi[a] = hi[a];
     }
 }
 
 template <typename T>
 Ref<T> sphereRef(const glm::dvec3& c, double r, std::int32_t sphere) {
-    Lanes<T> lo{}, hi{};
-    for (int a = 0; a < 3; ++a) {
-        lo[a] = roundedDown<T>(c[a] - r);
-        hi[a] = roundedUp<T>(c[a] + r);
-    }
-    return {lo, hi, sphere};
+    const Lanes<double> centre{c.x, c.y, c.z, 0};
+    return {lanesBelow<T>(centre - r), lanesAbove<T>(centre + r), sphere};
 }
 
 LaneBox<double> sphereBox(const glm::dvec3& c, double r) {

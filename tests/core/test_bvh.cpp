@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <string>
 #include <tuple>
@@ -274,12 +275,22 @@ void expectWellFormed(const std::vector<glm::dvec3>& centres, const std::vector<
         for (int a = 0; a < 3; ++a) ASSERT_LE(node.lo[a], node.hi[a]) << "node " << i;
         if (node.count > 0) {
             leafSpheres += node.count;
+            constexpr float kInf = std::numeric_limits<float>::infinity();
+            glm::dvec3 lowest(kInf), highest(-kInf);
             for (int j = node.first; j < node.first + node.count; ++j) {
                 const int k = bvh.leafSpheres[j].index;
                 for (int a = 0; a < 3; ++a) {
                     EXPECT_LE(double(node.lo[a]), centres[k][a] - radii[k]) << "sphere " << k;
                     EXPECT_GE(double(node.hi[a]), centres[k][a] + radii[k]) << "sphere " << k;
+                    lowest[a] = std::min(lowest[a], centres[k][a] - radii[k]);
+                    highest[a] = std::max(highest[a], centres[k][a] + radii[k]);
                 }
+            }
+            // No looser than rounding outward makes it: one float step more
+            // would hold a sphere less.
+            for (int a = 0; a < 3; ++a) {
+                EXPECT_GT(double(std::nextafter(node.lo[a], kInf)), lowest[a]) << "leaf " << i;
+                EXPECT_LT(double(std::nextafter(node.hi[a], -kInf)), highest[a]) << "leaf " << i;
             }
             continue;
         }

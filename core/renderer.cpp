@@ -39,6 +39,15 @@ std::vector<Tile> spiralTiles(int width, int height, int size) {
     return tiles;
 }
 
+// The preview's block edge: a divisor of the tile edge, so that tiles hold
+// whole blocks and no block is traced twice.
+int previewBlockOf(const RenderOptions& o) {
+    const int tile = std::max(1, o.tileSize);
+    int block = std::clamp(o.previewBlock, 1, tile);
+    while (tile % block != 0) --block;
+    return block;
+}
+
 std::vector<Pass> planPasses(const RenderSettings& r, const RenderOptions& o) {
     const double pixels = double(r.width) * r.height;
     std::vector<Pass> passes;
@@ -47,7 +56,7 @@ std::vector<Pass> planPasses(const RenderSettings& r, const RenderOptions& o) {
         passes.push_back({PassKind::Samples, 0, spp, pixels * spp});
         return passes;
     }
-    const int block = std::max(1, o.previewBlock);
+    const int block = previewBlockOf(o);
     if (block > 1 && (r.width > block || r.height > block))
         passes.push_back({PassKind::Preview, 0, 0, pixels / (double(block) * block)});
     for (int done = 0; done < spp;) {
@@ -68,7 +77,7 @@ class TileRenderer {
           onTile_(onTile),
           shouldStop_(shouldStop),
           settings_(scene.render),
-          image_(scene.render.width, scene.render.height) {}
+          block_(previewBlockOf(options)) {}
 
     RenderResult run() {
         const std::vector<Pass> passes = planPasses(settings_, options_);
@@ -85,10 +94,18 @@ class TileRenderer {
         RenderResult result;
         result.threads = threads;
         for (size_t p = 0; p < passes.size() && !stopped_; ++p) {
+            // Each image only when its first pass starts: the full-size one
+            // (11 MB at 1280x720) once the preview is out.
+            if (passes[p].kind == PassKind::Preview)
+                preview_ =
+                    Image((s_.width + block_ - 1) / block_, (s_.height + block_ - 1) / block_);
+            else if (image_.rgb.empty())
+                image_ = Image(s_.width, s_.height);
             runPass(passes[p], int(p), int(passes.size()), tiles, threads);
             if (!stopped_ && passes[p].kind == PassKind::Samples)
                 result.samples = passes[p].lastSample;
         }
+        if (image_.rgb.empty()) image_ = Image(s_.width, s_.height);  // stopped in the preview
         result.completed = !stopped_;
         result.rays = rays_;
         result.image = std::move(image_);
@@ -124,7 +141,9 @@ class TileRenderer {
                                             pass.kind == PassKind::Preview ? 0 : pass.lastSample,
                                             std::min(1.0, done / totalWork_),
                                             int(tiles.size())};
-                    onTile_(TileUpdate{image_, tile.x, tile.y, tile.w, tile.h, progress});
+                    const bool preview = pass.kind == PassKind::Preview;
+                    onTile_(TileUpdate{preview ? preview_ : image_, tile.x, tile.y, tile.w, tile.h,
+                                       progress, preview ? block_ : 1});
                 }
             }
             std::lock_guard lock(raysMutex_);
@@ -206,17 +225,17 @@ class TileRenderer {
             storeMean(image_.pixel(tile.x + i, y), sums[i], pass.lastSample);
     }
 
+    // One camera ray through the middle of each block, stored as the
+    // preview's pixel of that block.
     bool renderPreviewTile(const Tile& tile, RayCounts& counts) {
-        const int block = options_.previewBlock;
-        for (int by = tile.y; by < tile.y + tile.h; by += block) {
+        for (int by = tile.y; by < tile.y + tile.h; by += block_) {
             if (stopRequested()) return false;
-            const int bh = std::min(block, tile.y + tile.h - by);
-            for (int bx = tile.x; bx < tile.x + tile.w; bx += block) {
-                const int bw = std::min(block, tile.x + tile.w - bx);
+            const int bh = std::min(block_, tile.y + tile.h - by);
+            for (int bx = tile.x; bx < tile.x + tile.w; bx += block_) {
+                const int bw = std::min(block_, tile.x + tile.w - bx);
                 const Vec<T> c =
                     tracePixelSample(s_, bx + bw / 2, by + bh / 2, T(0.5), T(0.5), counts);
-                for (int y = by; y < by + bh; ++y)
-                    for (int x = bx; x < bx + bw; ++x) storePixel(image_.pixel(x, y), c);
+                storePixel(preview_.pixel(bx / block_, by / block_), c);
             }
         }
         return true;
@@ -227,6 +246,8 @@ class TileRenderer {
     const TileCallback& onTile_;
     const StopPredicate& shouldStop_;
     const RenderSettings settings_;
+    const int block_;  // the preview's block edge
+    Image preview_;    // one pixel per block
     Image image_;
     using Sums = std::vector<glm::dvec3, LargeBufferAllocator<glm::dvec3>>;
     Sums sums_;
@@ -238,6 +259,24 @@ class TileRenderer {
 };
 
 }  // namespace
+
+PixelRect tileBlocks(const TileUpdate& tile) {
+    const int b = tile.block;
+    const int x = tile.x / b, y = tile.y / b;
+    return {x, y, (tile.x + tile.width + b - 1) / b - x, (tile.y + tile.height + b - 1) / b - y};
+}
+
+void copyTile(const TileUpdate& tile, Image& into) {
+    for (int y = tile.y; y < tile.y + tile.height; ++y) {
+        float* out = into.pixel(tile.x, y);
+        if (tile.block == 1) {
+            std::copy_n(tile.image.pixel(tile.x, y), 3 * tile.width, out);
+            continue;
+        }
+        for (int x = tile.x; x < tile.x + tile.width; ++x, out += 3)
+            std::copy_n(tile.image.pixel(x / tile.block, y / tile.block), 3, out);
+    }
+}
 
 int resolveThreadCount(int requested) {
     if (requested > 0) return requested;

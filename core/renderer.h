@@ -24,7 +24,10 @@ struct RenderOptions {
     int threads = 0;          // worker threads including the caller; 0: all cores
     int tileSize = 32;        // tile edge in pixels
     bool progressive = true;  // false: a single pass of all samples, no preview
-    int previewBlock = 8;     // pixels per preview block edge; 1 disables the preview
+    // Pixels per preview block edge; 1 disables the preview. A block never
+    // straddles two tiles: render() uses the largest divisor of tileSize not
+    // above it.
+    int previewBlock = 8;
     // The caller has checked the scene with validateScene() or validateEdit()
     // (the editor's document does, on every edit), so render() need not check
     // it again: at 100,000 spheres that second check was a tenth of an edit.
@@ -45,14 +48,31 @@ struct RenderProgress {
     int tilesInPass = 0;    // tiles the pass reports, each exactly once
 };
 
-// A finished tile. `image` is the whole image being refined; only the tile's
-// rectangle [x, x+width) x [y, y+height) changed, and it stays untouched until the
-// callback returns, so the callback may copy it.
+// A finished tile: the rectangle [x, x+width) x [y, y+height) of the render.
+// `image` is the whole picture being refined, one pixel of it to each block of
+// `block` x `block` render pixels: block 1 in a samples pass; in the preview,
+// the preview block, so that the preview neither writes nor hands over a
+// full-size image (at 1280x720 that traffic was most of its time). Only the
+// tile's blocks changed (tileBlocks()), and they stay untouched until the
+// callback returns, so the callback may copy them.
 struct TileUpdate {
     const Image& image;
     int x, y, width, height;
     RenderProgress progress;
+    int block = 1;
 };
+
+// The tile's pixels of TileUpdate::image: its rectangle divided by the block,
+// rounded outward (the last block of a row or column may be partly outside the
+// render).
+struct PixelRect {
+    int x, y, width, height;
+};
+PixelRect tileBlocks(const TileUpdate& tile);
+
+// Writes the tile into a full-size image of the render, each block's pixel
+// repeated over the block.
+void copyTile(const TileUpdate& tile, Image& into);
 
 // Called from the worker threads, possibly several at once: keep it short and
 // thread-safe (copy the tile, post a message).
@@ -63,9 +83,12 @@ using StopPredicate = std::function<bool()>;
 struct RenderResult {
     Image image;
     RayCounts rays;
-    double seconds = 0.0;    // wall time of render(), preparation included
-    int threads = 1;         // worker threads used
-    int samples = 0;         // samples per pixel in every pixel of `image` (0: only the preview)
+    double seconds = 0.0;  // wall time of render(), preparation included
+    int threads = 1;       // worker threads used
+    // Samples per pixel in every pixel of `image`. 0: stopped before one
+    // full-size pass was complete; `image` then holds the full-size tiles
+    // finished, and zero elsewhere (the preview is only in the tile reports).
+    int samples = 0;
     bool completed = false;  // false when stopped early
 };
 

@@ -131,8 +131,7 @@ std::vector<ProgressiveSample> progressiveCurve(const Scene& scene, const Image&
     const auto start = std::chrono::steady_clock::now();
     auto onTile = [&](const TileUpdate& u) {
         std::lock_guard<std::mutex> lock(mutex);
-        for (int y = u.y; y < u.y + u.height; ++y)
-            std::copy_n(u.image.pixel(u.x, y), 3 * u.width, shown.pixel(u.x, y));
+        copyTile(u, shown);
         if (++tilesSeen[u.progress.pass] == u.progress.tilesInPass) {
             const double seconds =
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

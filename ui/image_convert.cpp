@@ -1,5 +1,7 @@
 #include "image_convert.h"
 
+#include <algorithm>
+
 #include "srgb.h"
 
 namespace whitted::ui {
@@ -19,6 +21,26 @@ void convertRegion(const Image& image, QImage& out, int x, int y, int w, int h) 
             line[i] = lastRgb;
         }
     }
+}
+
+QImage blocksEnlarged(const QImage& blocks, int block, int width, int height) {
+    QImage out(width, height, QImage::Format_RGB32);
+    for (int y = 0; y < height; ++y) {
+        auto* line = reinterpret_cast<QRgb*>(out.scanLine(y));
+        if (y % block != 0) {  // the row above, in the same block row
+            std::copy_n(reinterpret_cast<const QRgb*>(out.constScanLine(y - 1)), width, line);
+            continue;
+        }
+        const auto* in = reinterpret_cast<const QRgb*>(blocks.constScanLine(y / block));
+        for (int x = 0; x < width; ++x) line[x] = in[x / block];
+    }
+    return out;
+}
+
+QImage blackImage(int width, int height) {
+    QImage out(width, height, QImage::Format_RGB32);
+    out.fill(Qt::black);
+    return out;
 }
 
 QImage toQImage(const Image& image) {

@@ -12,6 +12,13 @@ namespace whitted::ui {
 // `out` (Format_RGB32, the image's size).
 void convertRegion(const Image& image, QImage& out, int x, int y, int w, int h);
 
+// A width x height picture of `blocks`, each of whose pixels covers `block` x
+// `block` pixels of it (the render's preview, one pixel per block).
+QImage blocksEnlarged(const QImage& blocks, int block, int width, int height);
+
+// A width x height picture, all black (Format_RGB32).
+QImage blackImage(int width, int height);
+
 // The whole image as a new QImage.
 QImage toQImage(const Image& image);
 

@@ -191,7 +191,8 @@ void MainWindow::sceneReplaced() {
 void MainWindow::onFrame(const RenderFrame& frame) {
     // Stale: a newer request exists, and its frames must not be overwritten.
     if (frame.generation != worker_.latestGeneration()) return;
-    view_->setFrame(frame.image);
+    view_->setFrame(frame.image, QSizeF(frame.settings.width / double(frame.block),
+                                        frame.settings.height / double(frame.block)));
     passLabel_->setText(frame.preview
                             ? tr("Preview")
                             : tr("Pass %1 of %2").arg(frame.pass + 1).arg(frame.passCount));

@@ -30,8 +30,9 @@ RenderView::RenderView(SceneDocument* doc, QWidget* parent) : QWidget(parent), d
     connect(doc_, &SceneDocument::sceneChanged, this, qOverload<>(&QWidget::update));
 }
 
-void RenderView::setFrame(const QImage& image) {
+void RenderView::setFrame(const QImage& image, QSizeF shown) {
     frame_ = image;
+    frameShown_ = QRectF(QPointF(0, 0), shown.isEmpty() ? QSizeF(image.size()) : shown);
     update();
 }
 
@@ -59,7 +60,7 @@ void RenderView::paintEvent(QPaintEvent*) {
     if (frame_.isNull()) return;
     // Scaled while a new frame is on its way: the old image, stretched, beats a blank.
     p.setRenderHint(QPainter::SmoothPixmapTransform, frame_.width() > imageRect().width());
-    p.drawImage(imageRect(), frame_);
+    p.drawImage(QRectF(imageRect()), frame_, frameShown_);
     paintViewOverlay(p, doc_->scene(), imageRect(), overlay_);
 }
 

@@ -34,7 +34,9 @@ class RenderView : public QWidget {
   public:
     explicit RenderView(SceneDocument* doc, QWidget* parent = nullptr);
 
-    void setFrame(const QImage& image);
+    // `shown`: the part of `image` that covers the render, in its pixels (a
+    // preview's last blocks may reach past the render's edge); empty: all of it.
+    void setFrame(const QImage& image, QSizeF shown = {});
     const QImage& frame() const { return frame_; }
 
     // The camera Home returns to: the scene's camera as it was opened or saved.
@@ -89,6 +91,7 @@ class RenderView : public QWidget {
 
     SceneDocument* doc_;
     QImage frame_;
+    QRectF frameShown_;  // the part of frame_ drawn into imageRect()
     Camera home_;
     ViewOverlay overlay_;
     std::optional<Vec3> pivot_;  // set by F and by an orbit drag; cleared by Home, pan, walk

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <mutex>
 #include <shared_mutex>
 #include <utility>
 
@@ -90,8 +91,12 @@ void RenderWorker::renderOne(Scene requested, quint64 generation) {
     const auto start = Clock::now();
     const Scene scene = viewSized(std::move(requested));
     const int width = scene.render.width, height = scene.render.height;
-    QImage display(width, height, QImage::Format_RGB32);
-    display.fill(Qt::black);
+    // The preview's pixels, one per block, then the full-size picture, made
+    // from them when the first full-resolution tile arrives: the preview
+    // frame is out before 3.7 MB of pixels are written at 1280x720.
+    QImage preview, display;
+    int previewBlock = 1;
+    std::once_flag previewMade, displayMade;
 
     // Tile callbacks arrive from several pool threads at once. Tiles are disjoint,
     // so they convert in parallel under a shared lock; copying a frame out takes
@@ -122,9 +127,23 @@ void RenderWorker::renderOne(Scene requested, quint64 generation) {
     };
     RenderProgress lastProgress;
     const auto onTile = [&](const TileUpdate& t) {
+        const bool isPreview = t.progress.kind == PassKind::Preview;
+        if (isPreview) {
+            std::call_once(previewMade, [&] {
+                preview = QImage(t.image.width, t.image.height, QImage::Format_RGB32);
+                preview.fill(Qt::black);
+                previewBlock = t.block;
+            });
+        } else {
+            std::call_once(displayMade, [&] {
+                display = preview.isNull() ? blackImage(width, height)
+                                           : blocksEnlarged(preview, previewBlock, width, height);
+            });
+        }
         {
             std::shared_lock shared(imageLock);
-            convertRegion(t.image, display, t.x, t.y, t.width, t.height);
+            const PixelRect r = tileBlocks(t);
+            convertRegion(t.image, isPreview ? preview : display, r.x, r.y, r.width, r.height);
         }
         std::lock_guard lock(frameMutex);
         lastProgress = t.progress;
@@ -141,8 +160,9 @@ void RenderWorker::renderOne(Scene requested, quint64 generation) {
             RenderFrame frame = makeFrame(t.progress, passComplete);
             {
                 std::unique_lock exclusive(imageLock);
-                frame.image = display.copy();
+                frame.image = (isPreview ? preview : display).copy();
             }
+            if (isPreview) frame.block = previewBlock;
             post(std::move(frame));
             lastSent = Clock::now();
         }

@@ -39,7 +39,10 @@ Scene viewSized(Scene scene);
 
 struct RenderFrame {
     quint64 generation = 0;
-    QImage image;  // 8-bit sRGB at the scene's render size (viewSized())
+    // 8-bit sRGB at the scene's render size (viewSized()); a preview frame
+    // holds one pixel per block of `block` x `block` render pixels.
+    QImage image;
+    int block = 1;
     int pass = 0;  // 0-based pass the frame belongs to
     int passCount = 0;
     bool preview = false;         // the coarse first pass

@@ -205,6 +205,55 @@ TEST(Renderer, ProgressiveRender_ReportsPreviewThenGrowingSamplesUpToSpp) {
         << "every tile of every pass reported once";
 }
 
+// The preview hands over one pixel per block, not a full-size image: each is
+// the camera ray through the block's middle pixel, so it equals that pixel of
+// the one-sample render; copyTile() spreads it over the block.
+TEST(Renderer, PreviewTiles_OnePixelPerBlockEqualToTheBlocksMiddlePixel) {
+    const Scene scene = smallSeed(1, Precision::Float);
+    std::mutex mutex;
+    Image spread(97, 61);
+    Image blocks;
+    const RenderResult r = render(scene, options(2, 16, true), [&](const TileUpdate& t) {
+        if (t.progress.kind != PassKind::Preview) return;
+        std::lock_guard lock(mutex);
+        EXPECT_EQ(t.block, 8);
+        const PixelRect b = tileBlocks(t);
+        EXPECT_EQ(b.x * 8, t.x);
+        EXPECT_EQ(b.width, (t.width + 7) / 8);
+        copyTile(t, spread);
+        blocks = t.image;
+    });
+    ASSERT_TRUE(r.completed);
+    ASSERT_EQ(blocks.width, 13);  // 97 / 8, rounded up
+    ASSERT_EQ(blocks.height, 8);  // 61 / 8, rounded up
+    for (int by = 0; by < 8; ++by)
+        for (int bx = 0; bx < 13; ++bx) {
+            const int w = std::min(8, 97 - 8 * bx), h = std::min(8, 61 - 8 * by);
+            const float* middle = r.image.pixel(8 * bx + w / 2, 8 * by + h / 2);
+            EXPECT_EQ(std::memcmp(blocks.pixel(bx, by), middle, 3 * sizeof(float)), 0)
+                << "block " << bx << ", " << by;
+        }
+    for (int y = 0; y < 61; ++y)
+        for (int x = 0; x < 97; ++x)
+            ASSERT_EQ(std::memcmp(spread.pixel(x, y), blocks.pixel(x / 8, y / 8), 3 * sizeof(float)),
+                      0)
+                << "pixel " << x << ", " << y;
+}
+
+// A block never straddles two tiles: with tiles of 12 the preview's block of 8
+// becomes 6.
+TEST(Renderer, PreviewBlock_DividesTheTileSize) {
+    const Scene scene = smallSeed(1, Precision::Float);
+    std::atomic<int> previewTiles{0}, wrongBlocks{0};
+    render(scene, options(2, 12, true), [&](const TileUpdate& t) {
+        if (t.progress.kind != PassKind::Preview) return;
+        ++previewTiles;
+        if (t.block != 6 || t.image.width != 17 || t.image.height != 11) ++wrongBlocks;
+    });
+    EXPECT_EQ(previewTiles.load(), 9 * 6);  // 97x61 in tiles of 12
+    EXPECT_EQ(wrongBlocks.load(), 0);
+}
+
 TEST(Renderer, ProgressWithSeveralThreads_EveryTileOnceAndReachesOne) {
     const Scene scene = smallSeed(2, Precision::Float);
     std::vector<Recorded> log;

@@ -110,6 +110,7 @@ class FrameLog {
         connection_ = QObject::connect(&window, &MainWindow::frameShown, &window,
                                        [this](const RenderFrame& f) {
                                            generations.push_back(f.generation);
+                                           lastCovers = f.image.size() * f.block;
                                            if (f.renderComplete) ++completed;
                                        });
     }
@@ -119,6 +120,8 @@ class FrameLog {
 
     int completed = 0;                 // frames shown with renderComplete
     std::vector<quint64> generations;  // of every frame shown, in order
+    QSize
+        lastCovers;  // render pixels the last frame covers (a preview: its pixels times its block)
 
   private:
     QMetaObject::Connection connection_;

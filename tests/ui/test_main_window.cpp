@@ -87,6 +87,57 @@ TEST_F(MainWindowTest, MaterialDiffuse_EditedToRed_BallTurnsRedAndBackgroundStay
 // 2: the camera by keys and mouse is in test_view_camera.cpp.
 
 // 3.
+// An edit shows its coarse preview first: one colour per 8x8 block of the
+// render, each the colour of the camera ray through the block's middle pixel,
+// placed where those pixels are in the view.
+TEST_F(MainWindowTest, Preview_ShowsEachBlockWhereItsPixelsAre) {
+    QImage preview, seen;
+    int block = 0;
+    const QMetaObject::Connection c =
+        QObject::connect(window.get(), &MainWindow::frameShown, [&](const RenderFrame& f) {
+            if (!f.preview || !preview.isNull()) return;
+            preview = f.image;
+            block = f.block;
+            seen = view->grab().toImage().convertToFormat(QImage::Format_RGB32);
+        });
+    const int n = log->completed;
+    ASSERT_TRUE(doc->edit("radius", [](Scene& s) {
+        s.spheres[kBlueBall].radius *= 1.1;
+        s.render.samplesPerPixel = 1;  // each full-size pixel one camera ray, as each block's
+    }));
+    ASSERT_TRUE(waitForRender(n));
+    QObject::disconnect(c);
+    ASSERT_FALSE(preview.isNull()) << "no preview frame was shown";
+    EXPECT_EQ(block, 8);
+    EXPECT_EQ(preview.size(), QSize(kWidth / 8, kHeight / 8));
+    const QImage full = view->frame();
+    ASSERT_EQ(full.size(), QSize(kWidth, kHeight));
+    // Where the full render shows through, the overlay (lights, selection)
+    // is not drawn over it: only there is the preview compared.
+    const QImage seenFull = view->grab().toImage().convertToFormat(QImage::Format_RGB32);
+    const QRect r = view->imageRect();
+    const auto widgetPoint = [&](double x, double y) {
+        return QPoint(r.x() + int(x * r.width() / kWidth), r.y() + int(y * r.height() / kHeight));
+    };
+    int compared = 0, differentFromFull = 0;
+    for (int by = 0; by < preview.height(); ++by)
+        for (int bx = 0; bx < preview.width(); ++bx) {
+            const int x = 8 * bx + 4, y = 8 * by + 4;  // the block's middle pixel
+            EXPECT_EQ(preview.pixel(bx, by), full.pixel(x, y)) << "block " << bx << ", " << by;
+            // The middle pixel and one inside the block beside it.
+            for (const int px : {x, x - 3}) {
+                const QPoint at = widgetPoint(px + 0.5, y + 0.5);
+                if (seenFull.pixel(at) != full.pixel(px, y)) continue;  // under the overlay
+                ++compared;
+                differentFromFull += seen.pixel(at) != full.pixel(px, y);
+                EXPECT_EQ(seen.pixel(at), preview.pixel(bx, by))
+                    << "block " << bx << ", " << by << ", pixel " << px;
+            }
+        }
+    EXPECT_GT(compared, 2 * preview.width() * preview.height() * 9 / 10);
+    EXPECT_GT(differentFromFull, 0) << "the preview looks like the full render: not blocky";
+}
+
 TEST_F(MainWindowTest, Click_OnSpherePixel_SelectsThatSphere) {
     ScenePanel* panel = window->scenePanel();
     const Scene& s = doc->scene();
@@ -350,7 +401,7 @@ TEST_F(MainWindowTest, LargestScene_FirstFrameThenAnEditCancelsItAtOnce) {
         << "no frame of the 16384x16384 render";
     const double firstFrame = std::chrono::duration<double>(Clock::now() - start).count();
     // The view renders at most kMaxViewSize on the long side, whatever the scene says.
-    EXPECT_EQ(view->frame().size(), QSize(kMaxViewSize, kMaxViewSize));
+    EXPECT_EQ(log->lastCovers, QSize(kMaxViewSize, kMaxViewSize));
     Scene wide = doc->scene();
     wide.render.width = 16384;
     wide.render.height = 3;

@@ -128,18 +128,6 @@ struct Split {
     double cost = std::numeric_limits<double>::infinity();  // sum of half area times spheres
 };
 
-template <typename T>
-struct BinSum {
-    LaneBox<T> box;
-    int count = 0;
-
-    void add(const BinSum& b) {
-        box.grow(b.box);
-        count += b.count;
-    }
-    double cost() const { return double(box.halfArea()) * count; }
-};
-
 // The bins of one range along the three axes. Only the range's bins are set
 // to empty, not all kMaxBins: most ranges are small, and setting every bin
 // cost as much as binning their refs.
@@ -164,41 +152,48 @@ struct Bins {
             ++count[a][b];
         }
     }
-    BinSum<T> sum(int a, int b) const { return {{lo[a][b], hi[a][b]}, count[a][b]}; }
 };
 
+// The SAH cost of one side of a split; infinite when the side is empty, so
+// that no split leaving a side empty is chosen.
+template <typename T>
+double sideCost(const LaneBox<T>& box, int count) {
+    const double cost = double(box.halfArea()) * count;
+    return count == 0 ? std::numeric_limits<double>::infinity() : cost;
+}
+
 // The cheapest SAH split over all three axes, binned in one pass over the
-// range; axis -1 when the centres coincide.
+// range; axis -1 when the centres coincide. Every split is costed, with no
+// branch on empty bins (which bins are empty is a coin toss in the small
+// ranges that are most of a build, and those branches took half the sweep):
+// a split just after an empty bin costs exactly what the one before it does,
+// and the first of equal splits wins, axis by axis, bin by bin.
 template <typename T>
 Split bestSplit(const Ref<T>* refs, int count, const Binning<T>& map) {
     Bins<T> bins(map.bins);
     for (int i = 0; i < count; ++i) bins.add(refs[i], map(refs[i]));
+    const int n = map.bins;
+    double rightCost[kMaxBins][3];  // [b][a]: the cost of bins [b, n) along axis a
+    LaneBox<T> side[3];
+    int sideCount[3] = {0, 0, 0};
+    for (int b = n - 1; b > 0; --b)
+        for (int a = 0; a < 3; ++a) {
+            side[a].grow(bins.lo[a][b], bins.hi[a][b]);
+            sideCount[a] += bins.count[a][b];
+            rightCost[b][a] = sideCost(side[a], sideCount[a]);
+        }
+    double cost[3][kMaxBins];  // [a][b]: bins [0, b] against bins (b, n)
+    for (int a = 0; a < 3; ++a) side[a] = {}, sideCount[a] = 0;
+    for (int b = 0; b + 1 < n; ++b)
+        for (int a = 0; a < 3; ++a) {
+            side[a].grow(bins.lo[a][b], bins.hi[a][b]);
+            sideCount[a] += bins.count[a][b];
+            cost[a][b] = sideCost(side[a], sideCount[a]) + rightCost[b + 1][a];
+        }
     Split best;
-    for (int a = 0; a < 3; ++a) {
-        if (!map.usable[a]) continue;
-        // An empty bin changes neither side's cost: what the bin before it
-        // gave stands (a split after an empty bin costs what the split
-        // before it does, and the first of equal splits wins).
-        double rightCost[kMaxBins + 1];  // rightCost[b]: the cost of bins [b, bins); -1: empty
-        rightCost[map.bins] = -1.0;
-        BinSum<T> side;
-        for (int b = map.bins - 1; b > 0; --b) {
-            if (bins.count[a][b] == 0) {
-                rightCost[b] = rightCost[b + 1];
-                continue;
-            }
-            side.add(bins.sum(a, b));
-            rightCost[b] = side.cost();
-        }
-        side = {};
-        for (int b = 0; b + 1 < map.bins; ++b) {
-            if (bins.count[a][b] == 0) continue;
-            side.add(bins.sum(a, b));
-            if (rightCost[b + 1] < 0.0) continue;
-            const double cost = side.cost() + rightCost[b + 1];
-            if (cost < best.cost) best = {a, b, cost};
-        }
-    }
+    for (int a = 0; a < 3; ++a)
+        for (int b = 0; map.usable[a] && b + 1 < n; ++b)
+            if (cost[a][b] < best.cost) best = {a, b, cost[a][b]};
     return best;
 }
 

@@ -136,7 +136,7 @@ LaneBox<double> sphereBox(const glm::dvec3& c, double r) {
 // the spheres smaller than it together. Only the few largest are candidates,
 // so only they are sorted (largest first, ties in index order).
 template <typename T>
-std::vector<char> keptOut(const std::vector<glm::dvec3>& centres, const std::vector<double>& radii,
+std::vector<char> keptOut(std::span<const glm::dvec3> centres, std::span<const double> radii,
                           const BvhBuildOptions& options) {
     const int n = static_cast<int>(radii.size());
     std::vector<char> out(n, 0);
@@ -353,7 +353,7 @@ Subtree<T> buildTree(RefArray<T>& refs, const BvhBuildOptions& options, int thre
 // The refs of the spheres in the tree, in index order, made in parallel by
 // chunks (each chunk's place in the array counted first).
 template <typename T>
-RefArray<T> makeRefs(const std::vector<glm::dvec3>& centres, const std::vector<double>& radii,
+RefArray<T> makeRefs(std::span<const glm::dvec3> centres, std::span<const double> radii,
                      const std::vector<char>& out, int threads) {
     const int n = static_cast<int>(radii.size());
     std::vector<int> firstRef(chunkCount(n));  // where each chunk's refs begin
@@ -375,8 +375,8 @@ RefArray<T> makeRefs(const std::vector<glm::dvec3>& centres, const std::vector<d
 }  // namespace
 
 template <typename T>
-SphereBvh<T> buildSphereBvh(const std::vector<glm::dvec3>& centres,
-                            const std::vector<double>& radii, const BvhBuildOptions& options) {
+SphereBvh<T> buildSphereBvh(std::span<const glm::dvec3> centres, std::span<const double> radii,
+                            const BvhBuildOptions& options) {
     SphereBvh<T> bvh;
     const std::vector<char> out = keptOut<T>(centres, radii, options);
     for (int i = 0; i < static_cast<int>(radii.size()); ++i)
@@ -393,8 +393,8 @@ SphereBvh<T> buildSphereBvh(const std::vector<glm::dvec3>& centres,
 }
 
 template <typename T>
-bool refitSphereBvh(SphereBvh<T>& bvh, const std::vector<glm::dvec3>& centres,
-                    const std::vector<double>& radii) {
+bool refitSphereBvh(SphereBvh<T>& bvh, std::span<const glm::dvec3> centres,
+                    std::span<const double> radii) {
     const int threads = resolveThreadCount(0);
     std::atomic<bool> inTree{true};
     forChunks(static_cast<int>(bvh.leafSpheres.size()), threads, [&](int j) {
@@ -459,8 +459,8 @@ void fillLeafSpheres(SphereBvh<T>& bvh, const SphereSet<T>& spheres) {
 }  // namespace
 
 template <typename T>
-std::shared_ptr<const SphereBvh<T>> sphereBvhFor(const std::vector<glm::dvec3>& centres,
-                                                 const std::vector<double>& radii,
+std::shared_ptr<const SphereBvh<T>> sphereBvhFor(std::span<const glm::dvec3> centres,
+                                                 std::span<const double> radii,
                                                  const SphereSet<T>& spheres, BvhCache* cache) {
     if (!cache) {
         auto tree = std::make_shared<SphereBvh<T>>(buildSphereBvh<T>(centres, radii));
@@ -484,15 +484,14 @@ std::shared_ptr<const SphereBvh<T>> sphereBvhFor(const std::vector<glm::dvec3>& 
     return kept.tree;
 }
 
-#define WHITTED_BVH(T)                                                                           \
-    template SphereBvh<T> buildSphereBvh<T>(const std::vector<glm::dvec3>&,                      \
-                                            const std::vector<double>&, const BvhBuildOptions&); \
-    template bool refitSphereBvh<T>(SphereBvh<T>&, const std::vector<glm::dvec3>&,               \
-                                    const std::vector<double>&);                                 \
-    template double sahCost<T>(const SphereBvh<T>&);                                             \
-    template std::shared_ptr<const SphereBvh<T>> sphereBvhFor<T>(const std::vector<glm::dvec3>&, \
-                                                                 const std::vector<double>&,     \
-                                                                 const SphereSet<T>&, BvhCache*);
+#define WHITTED_BVH(T)                                                                            \
+    template SphereBvh<T> buildSphereBvh<T>(std::span<const glm::dvec3>, std::span<const double>, \
+                                            const BvhBuildOptions&);                              \
+    template bool refitSphereBvh<T>(SphereBvh<T>&, std::span<const glm::dvec3>,                   \
+                                    std::span<const double>);                                     \
+    template double sahCost<T>(const SphereBvh<T>&);                                              \
+    template std::shared_ptr<const SphereBvh<T>> sphereBvhFor<T>(                                 \
+        std::span<const glm::dvec3>, std::span<const double>, const SphereSet<T>&, BvhCache*);
 WHITTED_BVH(float)
 WHITTED_BVH(double)
 #undef WHITTED_BVH

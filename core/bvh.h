@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -83,8 +84,8 @@ inline constexpr int kMaxBvhDepth = 96;
 // A binned-SAH tree over spheres given by their centres and radii in double
 // (the prepared scene's frame). Sphere i of the tree is sphere i of the scene.
 template <typename T>
-SphereBvh<T> buildSphereBvh(const std::vector<glm::dvec3>& centres,
-                            const std::vector<double>& radii, const BvhBuildOptions& options = {});
+SphereBvh<T> buildSphereBvh(std::span<const glm::dvec3> centres, std::span<const double> radii,
+                            const BvhBuildOptions& options = {});
 
 // Recomputes every box of `bvh` for its spheres' new centres and radii,
 // keeping the tree's shape: after an edit that moved or resized spheres (or a
@@ -94,8 +95,8 @@ SphereBvh<T> buildSphereBvh(const std::vector<glm::dvec3>& centres,
 // as it was, when a sphere of the tree now lies beyond what a tree in T can
 // bound: build anew then.
 template <typename T>
-bool refitSphereBvh(SphereBvh<T>& bvh, const std::vector<glm::dvec3>& centres,
-                    const std::vector<double>& radii);
+bool refitSphereBvh(SphereBvh<T>& bvh, std::span<const glm::dvec3> centres,
+                    std::span<const double> radii);
 
 // The tree's SAH cost, not divided by the root's area (a sphere grown huge
 // also grows the root): the nodes' half areas, a leaf's times its spheres.
@@ -133,8 +134,8 @@ struct BvhCache {
 // Without a cache, built. Its leafSpheres are `spheres`' values, which must
 // be the same spheres as centres and radii.
 template <typename T>
-std::shared_ptr<const SphereBvh<T>> sphereBvhFor(const std::vector<glm::dvec3>& centres,
-                                                 const std::vector<double>& radii,
+std::shared_ptr<const SphereBvh<T>> sphereBvhFor(std::span<const glm::dvec3> centres,
+                                                 std::span<const double> radii,
                                                  const SphereSet<T>& spheres, BvhCache* cache);
 
 }  // namespace whitted

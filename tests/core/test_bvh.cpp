@@ -441,6 +441,31 @@ TEST(BvhBuild, HugeFloorStaysOutOfTheTree) {
 
 // Double trees keep their boxes in float (BvhNode): a sphere float cannot
 // bound stays out of the tree, and the rest are held by boxes rounded outward.
+// The huge spheres are found among many, whichever part of the scene they are
+// in (the build looks for them in chunks of spheres, on all threads), largest
+// first: a ball far larger than the field stays out, and so does one far
+// larger than everything smaller than it, but not one only as large as the field.
+TEST(BvhBuild, HugeSpheresAnywhereAmongManyStayOutOfTheTree) {
+    std::mt19937 random(testSeed(91));
+    std::uniform_real_distribution<double> coordinate(-50.0, 50.0);
+    std::vector<glm::dvec3> centres;
+    std::vector<double> radii;
+    for (int i = 0; i < 50000; ++i) {
+        centres.push_back({coordinate(random), coordinate(random), coordinate(random)});
+        radii.push_back(0.1);
+    }
+    radii[3] = 1e6;       // far larger than the field: out
+    radii[41000] = 1e4;   // far larger than the field without the first: out
+    radii[20000] = 60.0;  // about the field's size: in
+    for (int threads : {1, 2}) {
+        BvhBuildOptions options;
+        options.threads = threads;
+        const SphereBvh<float> bvh = buildSphereBvh<float>(centres, radii, options);
+        EXPECT_EQ(bvh.direct, (std::vector<std::int32_t>{3, 41000})) << threads << " threads";
+        EXPECT_EQ(bvh.leafSpheres.size(), 49998u) << threads << " threads";
+    }
+}
+
 TEST(BvhBuild, DoubleTreeKeepsWhatFloatCannotBoundOutOfTheTree) {
     std::vector<glm::dvec3> centres = {{1, 0.2, 2}, {-0.95, 0.31, 1.25}, {2e38, 0, 5}};
     std::vector<double> radii = {0.6, 0.6, 1.0};

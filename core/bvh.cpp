@@ -340,6 +340,10 @@ void buildJobs(const Builder<T>& builder, Subtree<T>& tree, const std::vector<Ra
     std::vector<Subtree<T>> parts(jobs.size());
     const std::vector<int> order = largestFirst(jobs);
     parallelFor(order, threads, [&](int k) {
+        // Room for the usual tree at once (a node for every two to three
+        // spheres), not by doubling: each growth copied and zeroed the nodes.
+        parts[k].nodes.reserve(jobs[k].size());
+        parts[k].spheres.reserve(jobs[k].size());
         parts[k].nodes.resize(1);
         builder.build(parts[k], {0, jobs[k].begin, jobs[k].end, jobs[k].depth});
     });

@@ -189,7 +189,9 @@ class TileRenderer {
     }
 
     // False when stopped part-way: the tile is then incomplete and not reported.
-    bool renderTile(const Pass& pass, const Tile& tile, Row& row, RayCounts& counts) {
+    // Out of line: the profiles of docs/performance.md collect from it.
+    __attribute__((noinline)) bool renderTile(const Pass& pass, const Tile& tile, Row& row,
+                                              RayCounts& counts) {
         if (pass.kind == PassKind::Preview) return renderPreviewTile(tile, counts);
         row.radiance.resize(tile.w);
         row.sums.resize(tile.w);

@@ -189,7 +189,7 @@ void binaryCounted(const SphereSet<float>& spheres, const SphereBvh<float>& bvh,
         ++c->nodes;
         c->boxes += 2;
     };
-    traverseBvh(bvh, slabs, tBest, r.active, leaf, inner);
+    traverseBvh(spheres, bvh, slabs, tBest, r.active, leaf, inner);
 }
 
 // ---------------------------------------------------------------------------

@@ -2,13 +2,15 @@
 // outward to T (bvh_split.h), in two phases: the top levels level by level,
 // each level's ranges on all cores, then the ranges below kJobSpheres as
 // independent jobs on all cores, spliced into one flat array of nodes in a
-// fixed order. Also the refit of a built tree and the cache that keeps one.
+// fixed order; or, for a lazy tree, each job when a ray first enters it
+// (lazyJobRoot()). Also the refit of a built tree and the cache that keeps one.
 #include "bvh.h"
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <numeric>
 
 #include "bvh_split.h"
@@ -298,19 +300,30 @@ class Builder {
     const BvhBuildOptions& options_;
 };
 
-// Copies a job's subtree into the tree: its root into the node that waited
-// for it, the rest from nodes[nodeBase + 1] and spheres[sphereBase] on.
+// Copies a job's subtree's nodes into `nodes`: its root into nodes[root], the
+// rest from nodes[nodeBase + 1] on, its leaves pointing from sphereBase on.
 template <typename T>
-void splice(Subtree<T>& tree, int node, const Subtree<T>& part, std::int32_t nodeBase,
-            std::int32_t sphereBase) {
+void spliceNodes(BvhNode* nodes, int root, const Subtree<T>& part, std::int32_t nodeBase,
+                 std::int32_t sphereBase) {
     const auto moved = [&](BvhNode n) {
         n.first += n.count > 0 ? sphereBase : nodeBase;
         return n;
     };
-    tree.nodes[node] = moved(part.nodes[0]);
-    for (std::size_t i = 1; i < part.nodes.size(); ++i)
-        tree.nodes[nodeBase + i] = moved(part.nodes[i]);
-    std::copy(part.spheres.begin(), part.spheres.end(), tree.spheres.begin() + sphereBase);
+    nodes[root] = moved(part.nodes[0]);
+    for (std::size_t i = 1; i < part.nodes.size(); ++i) nodes[nodeBase + i] = moved(part.nodes[i]);
+}
+
+// A job's subtree, on this thread. Room for the usual tree at once (a node
+// for every two to three spheres), not by doubling: each growth copied and
+// zeroed the nodes.
+template <typename T>
+Subtree<T> buildJob(const Builder<T>& builder, const Range& job) {
+    Subtree<T> part;
+    part.nodes.reserve(job.size());
+    part.spheres.reserve(job.size());
+    part.nodes.resize(1);
+    builder.build(part, {0, job.begin, job.end, job.depth});
+    return part;
 }
 
 // The top of the tree, level by level: the ranges of a level are divided in
@@ -341,14 +354,7 @@ void buildJobs(const Builder<T>& builder, Subtree<T>& tree, const std::vector<Ra
                int threads) {
     std::vector<Subtree<T>> parts(jobs.size());
     const std::vector<int> order = largestFirst(jobs);
-    parallelFor(order, threads, [&](int k) {
-        // Room for the usual tree at once (a node for every two to three
-        // spheres), not by doubling: each growth copied and zeroed the nodes.
-        parts[k].nodes.reserve(jobs[k].size());
-        parts[k].spheres.reserve(jobs[k].size());
-        parts[k].nodes.resize(1);
-        builder.build(parts[k], {0, jobs[k].begin, jobs[k].end, jobs[k].depth});
-    });
+    parallelFor(order, threads, [&](int k) { parts[k] = buildJob(builder, jobs[k]); });
     std::vector<std::int32_t> nodeBase(jobs.size()), sphereBase(jobs.size());
     std::size_t nodes = tree.nodes.size(), spheres = tree.spheres.size();
     for (std::size_t k = 0; k < jobs.size(); ++k) {
@@ -360,22 +366,11 @@ void buildJobs(const Builder<T>& builder, Subtree<T>& tree, const std::vector<Ra
     }
     tree.nodes.resize(nodes);
     tree.spheres.resize(spheres);
-    parallelFor(order, threads,
-                [&](int k) { splice(tree, jobs[k].node, parts[k], nodeBase[k], sphereBase[k]); });
-}
-
-template <typename T>
-Subtree<T> buildTree(RefArray<T>& refs, const BvhBuildOptions& options, int threads) {
-    Subtree<T> tree;
-    if (refs.empty()) return tree;
-    tree.nodes.resize(2);
-    tree.nodes[1] = kPadding;
-    const Builder<T> builder(refs, options);
-    const int count = static_cast<int>(refs.size());
-    const std::vector<Range> jobs = count < kJobSpheres ? std::vector<Range>{{0, 0, count, 0}}
-                                                        : buildTop(builder, tree, count, threads);
-    buildJobs(builder, tree, jobs, threads);
-    return tree;
+    parallelFor(order, threads, [&](int k) {
+        spliceNodes(tree.nodes.data(), jobs[k].node, parts[k], nodeBase[k], sphereBase[k]);
+        std::copy(parts[k].spheres.begin(), parts[k].spheres.end(),
+                  tree.spheres.begin() + sphereBase[k]);
+    });
 }
 
 // The refs of the spheres in the tree, in index order, made in parallel by
@@ -402,6 +397,73 @@ RefArray<T> makeRefs(std::span<const glm::dvec3> centres, std::span<const double
 
 }  // namespace
 
+// The jobs of a lazy tree, and what building one needs.
+template <typename T>
+struct LazyJobs {
+    struct Job {
+        Range range;
+        std::int32_t nodeBase;    // its nodes' block: its root, a padding node, the rest
+        std::int32_t sphereBase;  // its leaves' spheres' block
+    };
+    RefArray<T> refs;  // the jobs' ranges of them, still unsorted
+    BvhBuildOptions options;
+    std::vector<Job> jobs;
+    std::unique_ptr<std::once_flag[]> once;  // one for each job
+    std::atomic<int> built{0};
+};
+
+namespace {
+
+// The tree's nodes, with the jobs' subtrees built, or, lazily, waiting under
+// their nodes: those get their ranges' boxes and kLazyNode now, and each job
+// blocks of the arrays large enough for any tree of its spheres (two nodes a
+// sphere), which stay untouched pages, and so cost no memory, until the job
+// is built.
+template <typename T>
+void buildTree(SphereBvh<T>& bvh, RefArray<T>&& refs, const BvhBuildOptions& options, int threads) {
+    if (refs.empty()) return;
+    Subtree<T> tree;
+    tree.nodes.resize(2);
+    tree.nodes[1] = kPadding;
+    const Builder<T> builder(refs, options);
+    const int count = static_cast<int>(refs.size());
+    const std::vector<Range> jobs = count < kJobSpheres ? std::vector<Range>{{0, 0, count, 0}}
+                                                        : buildTop(builder, tree, count, threads);
+    if (!options.lazy || count < kJobSpheres) {
+        buildJobs(builder, tree, jobs, threads);
+        bvh.nodes = std::move(tree.nodes);
+        bvh.leafSpheres.resize(tree.spheres.size());
+        forChunks(static_cast<int>(tree.spheres.size()), threads,
+                  [&](int i) { bvh.leafSpheres[i].index = tree.spheres[i]; });
+        bvh.depth = tree.depth;
+        return;
+    }
+    auto waiting = std::make_shared<LazyJobs<T>>();
+    std::size_t nodes = tree.nodes.size(), spheres = 0;  // nodes: even, as a block must start
+    for (const Range& job : jobs) {
+        waiting->jobs.push_back(
+            {job, static_cast<std::int32_t>(nodes), static_cast<std::int32_t>(spheres)});
+        nodes += 2 * std::size_t(job.size());
+        spheres += job.size();
+    }
+    parallelFor(largestFirst(jobs), threads, [&](int k) {
+        BvhNode& node = tree.nodes[jobs[k].node];
+        storeBox(node, bvh_build::rangeBounds(refs.data() + jobs[k].begin, jobs[k].size()).box);
+        node.first = k;
+        node.count = kLazyNode;
+    });
+    tree.nodes.resize(nodes);
+    bvh.nodes = std::move(tree.nodes);
+    bvh.leafSpheres.resize(spheres);
+    bvh.depth = tree.depth;
+    waiting->refs = std::move(refs);
+    waiting->options = options;
+    waiting->once = std::make_unique<std::once_flag[]>(jobs.size());
+    bvh.lazy = std::move(waiting);
+}
+
+}  // namespace
+
 template <typename T>
 SphereBvh<T> buildSphereBvh(std::span<const glm::dvec3> centres, std::span<const double> radii,
                             const BvhBuildOptions& options) {
@@ -410,19 +472,42 @@ SphereBvh<T> buildSphereBvh(std::span<const glm::dvec3> centres, std::span<const
     const std::vector<char> out = keptOut<T>(centres, radii, options, threads);
     for (int i = 0; i < static_cast<int>(radii.size()); ++i)
         if (out[i]) bvh.direct.push_back(i);
-    RefArray<T> refs = makeRefs<T>(centres, radii, out, threads);
-    Subtree<T> tree = buildTree(refs, options, threads);
-    bvh.nodes = std::move(tree.nodes);
-    bvh.leafSpheres.resize(tree.spheres.size());
-    forChunks(static_cast<int>(tree.spheres.size()), threads,
-              [&](int i) { bvh.leafSpheres[i].index = tree.spheres[i]; });
-    bvh.depth = tree.depth;
+    buildTree(bvh, makeRefs<T>(centres, radii, out, threads), options, threads);
     return bvh;
+}
+
+template <typename T>
+int lazyJobRoot(const SphereBvh<T>& bvh, int job, const SphereSet<T>& spheres) {
+    LazyJobs<T>& lazy = *bvh.lazy;
+    const typename LazyJobs<T>::Job& j = lazy.jobs[job];
+    std::call_once(lazy.once[job], [&] {
+        const Subtree<T> part = buildJob(Builder<T>(lazy.refs, lazy.options), j.range);
+        // Readers hold the tree const, and read a job's blocks only after
+        // this returns: the once_flag orders these writes before their reads.
+        BvhNode* nodes = const_cast<BvhNode*>(bvh.nodes.data());
+        LeafSphere<T>* leaves = const_cast<LeafSphere<T>*>(bvh.leafSpheres.data());
+        spliceNodes(nodes, j.nodeBase, part, j.nodeBase + 1, j.sphereBase);
+        for (std::size_t i = 0; i < part.spheres.size(); ++i)
+            leaves[j.sphereBase + i] = spheres.leafSphere(part.spheres[i]);
+        ++lazy.built;
+    });
+    return j.nodeBase;
+}
+
+template <typename T>
+int lazyJobsBuilt(const SphereBvh<T>& bvh) {
+    return bvh.lazy ? bvh.lazy->built.load() : 0;
+}
+
+template <typename T>
+int lazyJobCount(const SphereBvh<T>& bvh) {
+    return bvh.lazy ? static_cast<int>(bvh.lazy->jobs.size()) : 0;
 }
 
 template <typename T>
 bool refitSphereBvh(SphereBvh<T>& bvh, std::span<const glm::dvec3> centres,
                     std::span<const double> radii) {
+    if (bvh.lazy) return false;  // its unbuilt subtrees have no nodes to refit
     const int threads = resolveThreadCount(0);
     std::atomic<bool> inTree{true};
     forChunks(static_cast<int>(bvh.leafSpheres.size()), threads, [&](int j) {
@@ -491,8 +576,10 @@ std::shared_ptr<const SphereBvh<T>> sphereBvhFor(std::span<const glm::dvec3> cen
                                                  std::span<const double> radii,
                                                  const SphereSet<T>& spheres, BvhCache* cache) {
     if (!cache) {
-        auto tree = std::make_shared<SphereBvh<T>>(buildSphereBvh<T>(centres, radii));
-        fillLeafSpheres(*tree, spheres);
+        BvhBuildOptions lazily;
+        lazily.lazy = true;
+        auto tree = std::make_shared<SphereBvh<T>>(buildSphereBvh<T>(centres, radii, lazily));
+        if (!tree->lazy) fillLeafSpheres(*tree, spheres);  // else each job fills its own
         return tree;
     }
     BvhCache::Entry<T>& kept = cache->entry<T>();
@@ -518,6 +605,9 @@ std::shared_ptr<const SphereBvh<T>> sphereBvhFor(std::span<const glm::dvec3> cen
     template bool refitSphereBvh<T>(SphereBvh<T>&, std::span<const glm::dvec3>,                   \
                                     std::span<const double>);                                     \
     template double sahCost<T>(const SphereBvh<T>&);                                              \
+    template int lazyJobRoot<T>(const SphereBvh<T>&, int, const SphereSet<T>&);                   \
+    template int lazyJobsBuilt<T>(const SphereBvh<T>&);                                           \
+    template int lazyJobCount<T>(const SphereBvh<T>&);                                            \
     template std::shared_ptr<const SphereBvh<T>> sphereBvhFor<T>(                                 \
         std::span<const glm::dvec3>, std::span<const double>, const SphereSet<T>&, BvhCache*);
 WHITTED_BVH(float)

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <span>
 #include <vector>
@@ -40,16 +41,32 @@ struct BvhNode {
     // were split along (the first child holds the lower centres). Leaf: its
     // spheres are SphereBvh::leafSpheres[first, first + count), count >= 1.
     // count == 0: nodes[1], which only pads the root's cache line.
+    // count == kLazyNode: a lazy tree's subtree not built until a ray needs it
+    // (BvhBuildOptions::lazy); `first` is its job, the box already its own.
     std::int32_t first;
     std::int32_t count;
 };
+
+inline constexpr std::int32_t kLazyNode = std::numeric_limits<std::int32_t>::min();
 
 // The tree's arrays: large ones come from mmap (large_buffer_allocator.h).
 template <typename T>
 using BvhArray = std::vector<T, LargeBufferAllocator<T>>;
 
+// What a lazy tree keeps to build its subtrees on demand (bvh.cpp).
+template <typename T>
+struct LazyJobs;
+
 template <typename T>
 struct SphereBvh {
+    // Moved, never copied: a lazy tree's subtrees are built into the arrays
+    // it was made with.
+    SphereBvh() = default;
+    SphereBvh(SphereBvh&&) = default;
+    SphereBvh& operator=(SphereBvh&&) = default;
+    SphereBvh(const SphereBvh&) = delete;
+    SphereBvh& operator=(const SphereBvh&) = delete;
+
     // nodes[0] is the root, nodes[1] padding; empty when no sphere is in the tree.
     // Siblings share a cache line (the array is cache-line aligned).
     BvhArray<BvhNode> nodes;
@@ -61,7 +78,11 @@ struct SphereBvh {
     // floor (their box would swell every node above them, and the margin with
     // it), and any whose box T cannot hold. In index order.
     std::vector<std::int32_t> direct;
-    int depth = 0;  // the longest path from the root to a leaf, in edges
+    int depth = 0;  // the longest path from the root to a leaf, in edges (of a
+                    // lazy tree: to its subtrees not yet built)
+    // Null for a tree built whole; else its subtrees still to build, each
+    // under a kLazyNode (bvh.cpp).
+    std::shared_ptr<LazyJobs<T>> lazy;
 };
 
 struct BvhBuildOptions {
@@ -75,6 +96,11 @@ struct BvhBuildOptions {
     // Threads building the lower levels; 0: one per core. The tree is the same
     // for any number.
     int threads = 0;
+    // Build only the top of the tree now, and each subtree of fewer than a few
+    // thousand spheres when a ray first enters it (lazyJobRoot()): a render
+    // of a million balls on a floor enters fewer than two thirds of them
+    // (docs/performance.md). The tree then walked is the whole tree's.
+    bool lazy = false;
 };
 
 // The deepest tree buildSphereBvh() makes: past depth 48 it splits at the
@@ -87,13 +113,25 @@ template <typename T>
 SphereBvh<T> buildSphereBvh(std::span<const glm::dvec3> centres, std::span<const double> radii,
                             const BvhBuildOptions& options = {});
 
+// The root of a lazy tree's subtree `job`, its nodes and leaves built first if
+// no ray has entered it yet, from `spheres` (the SphereSet the tree was made
+// for). Safe to call from several threads at once: one builds, the others wait.
+template <typename T>
+int lazyJobRoot(const SphereBvh<T>& bvh, int job, const SphereSet<T>& spheres);
+
+// How many of a lazy tree's subtrees have been built, and how many it has.
+template <typename T>
+int lazyJobsBuilt(const SphereBvh<T>& bvh);
+template <typename T>
+int lazyJobCount(const SphereBvh<T>& bvh);
+
 // Recomputes every box of `bvh` for its spheres' new centres and radii,
 // keeping the tree's shape: after an edit that moved or resized spheres (or a
 // camera move, which moves every sphere of the camera-centred frame), a pass
 // over the nodes instead of a build. The same spheres must be given (same
 // count, and the direct ones still there). Returns false, and leaves `bvh`
 // as it was, when a sphere of the tree now lies beyond what a tree in T can
-// bound: build anew then.
+// bound, or when `bvh` was built lazily: build anew then.
 template <typename T>
 bool refitSphereBvh(SphereBvh<T>& bvh, std::span<const glm::dvec3> centres,
                     std::span<const double> radii);
@@ -131,8 +169,8 @@ struct BvhCache {
 
 // The tree for these spheres: refit from `cache` when it holds one for as many
 // spheres that the refit does not wear out, else built (and kept there).
-// Without a cache, built. Its leafSpheres are `spheres`' values, which must
-// be the same spheres as centres and radii.
+// Without a cache, built lazily (BvhBuildOptions::lazy). Its leafSpheres are `spheres`' values,
+// which must be the same spheres as centres and radii.
 template <typename T>
 std::shared_ptr<const SphereBvh<T>> sphereBvhFor(std::span<const glm::dvec3> centres,
                                                  std::span<const double> radii,

@@ -137,7 +137,8 @@ struct BvhVisit {
     int node;
 };
 
-// Visits the leaves whose boxes the lanes' rays meet within [0, limit].
+// Visits the leaves whose boxes the lanes' rays meet within [0, limit],
+// building a lazy tree's subtrees as the lanes enter them (from `spheres`).
 // leaf(node, lanes) returns a mask of the lanes still looking; `limit` may
 // shrink meanwhile. inner() is called at each inner node entered (for
 // benchmarks/bench_node_width.cpp's counts; nothing in a render).
@@ -150,8 +151,8 @@ struct BvhVisit {
 // taken up. A lane passes exactly when boxLanes() at that moment would pass it.
 template <typename T, typename Leaf, typename Inner = void (*)()>
 inline void traverseBvh(
-    const SphereBvh<T>& bvh, const PacketSlabs<T>& slabs, const typename Simd<T>::type& limit,
-    unsigned lanes, Leaf&& leaf, Inner&& inner = [] {}) {
+    const SphereSet<T>& spheres, const SphereBvh<T>& bvh, const PacketSlabs<T>& slabs,
+    const typename Simd<T>::type& limit, unsigned lanes, Leaf&& leaf, Inner&& inner = [] {}) {
     using V = typename Simd<T>::type;
     BvhVisit<T> stack[kMaxBvhDepth + 1];  // a path's far children: at most its depth
     int top = 0;
@@ -164,6 +165,10 @@ inline void traverseBvh(
             lanes &= leaf(n, in);
             if (!lanes) return;
             in = 0;
+        }
+        if (in && n.count == kLazyNode) {
+            node = lazyJobRoot(bvh, n.first, spheres);  // a root with the same box
+            continue;
         }
         if (in) {
             inner();
@@ -269,7 +274,7 @@ __attribute__((noinline)) void bvhClosestHits(const SphereSet<T>& spheres, const
             closestUpdate(spheres, bvh.leafSpheres[i], r, lanes, tBest, kBest);
         return ~0u;
     };
-    traverseBvh(bvh, slabs, tBest, r.active, leaf);
+    traverseBvh(spheres, bvh, slabs, tBest, r.active, leaf);
 }
 
 // The spheres each lane's shadow ray crosses, to be multiplied in index order.
@@ -359,7 +364,7 @@ __attribute__((noinline)) typename Simd<T>::type bvhTransmittance(
         return ~found.opaque;
     };
     if (!bvh.nodes.empty() && (lanes & ~found.opaque)) {
-        traverseBvh(bvh, slabs, distance, lanes & ~found.opaque, leaf);
+        traverseBvh(spheres, bvh, slabs, distance, lanes & ~found.opaque, leaf);
     }
     V s = V{} + T(1);
     for (unsigned open = lanes & ~found.opaque & ~found.overflow; open; open &= open - 1) {

@@ -349,6 +349,68 @@ TEST(BvhBuild, SameTreeOnAnyNumberOfThreads) {
     }
 }
 
+// A render without a kept tree builds its subtrees as rays first enter them
+// (BvhBuildOptions::lazy), on whichever thread gets there first: the picture
+// must be the whole tree's, bit for bit, on any number of threads.
+TEST(BvhLazy, RendersTheWholeTreesImageOnAnyNumberOfThreads) {
+    for (const Precision precision : {Precision::Float, Precision::Double}) {
+        Scene scene = randomScene(20000, Layout::Field, testSeed(88), true);
+        scene.render.precision = precision;
+        scene.render.samplesPerPixel = 1;
+        scene.render.width = 160;
+        scene.render.height = 120;
+        // Double on two threads only: this test takes most of a minute
+        // under ThreadSanitizer.
+        for (int threads : precision == Precision::Float ? std::vector{1, 2, 3} : std::vector{2}) {
+            SCOPED_TRACE(std::string(precisionName(precision)) + ", " + std::to_string(threads) +
+                         " threads");
+            RenderOptions options;
+            options.threads = threads;
+            options.progressive = false;
+            const RenderResult lazy = render(scene, options);
+            BvhCache cache;  // a kept tree is built whole
+            options.bvhCache = &cache;
+            const RenderResult whole = render(scene, options);
+            ASSERT_EQ(cache.builds, 1);
+            ASSERT_EQ(lazy.image.rgb.size(), whole.image.rgb.size());
+            EXPECT_EQ(std::memcmp(lazy.image.rgb.data(), whole.image.rgb.data(),
+                                  lazy.image.rgb.size() * sizeof(float)),
+                      0);
+        }
+    }
+}
+
+// A camera that sees a small part of the scene builds few of its subtrees,
+// and the rays it traces find what the whole tree's find.
+TEST(BvhLazy, BuildsOnlyTheSubtreesRaysEnter) {
+    // Balls close enough that a ray stops at the first few, lit from beside
+    // the camera: the shadow rays go back the way the camera's came.
+    Scene scene = randomScene(20000, Layout::Overlapping, testSeed(89), false);
+    scene.lights.resize(1);
+    scene.camera.vfovDegrees = 4;
+    scene.render.width = 48;
+    scene.render.height = 48;
+    scene.render.samplesPerPixel = 1;
+    const PreparedScene<float> lazy = prepareScene<float>(scene);
+    ASSERT_TRUE(lazy.bvh && lazy.bvh->lazy);
+    const int jobs = lazyJobCount(*lazy.bvh);
+    EXPECT_GE(jobs, 8);
+    EXPECT_EQ(lazyJobsBuilt(*lazy.bvh), 0) << "nothing is built before a ray needs it";
+    BvhCache cache;
+    const PreparedScene<float> whole = prepareScene<float>(scene, &cache);
+    ASSERT_FALSE(whole.bvh->lazy);
+    std::vector<Vec<float>> a(48), b(48);
+    for (int y = 0; y < 48; ++y) {
+        RayCounts ca, cb;
+        traceCameraRow(lazy, y, 0, 48, 0, a.data(), ca);
+        traceCameraRow(whole, y, 0, 48, 0, b.data(), cb);
+        ASSERT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec<float>)), 0) << "row " << y;
+    }
+    std::printf("%d of %d subtrees built\n", lazyJobsBuilt(*lazy.bvh), jobs);
+    EXPECT_GT(lazyJobsBuilt(*lazy.bvh), 0);
+    EXPECT_LE(lazyJobsBuilt(*lazy.bvh), jobs / 2);
+}
+
 // Issue 12 item 5: after an edit that moves a few spheres or the camera (it
 // moves every sphere of the camera-centred frame), the render refits the kept
 // tree instead of building one, and the picture is still

@@ -168,10 +168,12 @@ double sideCost(const LaneBox<T>& box, int count) {
 // ranges that are most of a build, and those branches took half the sweep):
 // a split just after an empty bin costs exactly what the one before it does,
 // and the first of equal splits wins, axis by axis, bin by bin.
+// With a stride above 1, only every stride-th ref is binned: the costs are
+// then estimates, whose best split still leaves refs on both sides.
 template <typename T>
-Split bestSplit(const Ref<T>* refs, int count, const Binning<T>& map) {
+Split bestSplit(const Ref<T>* refs, int count, const Binning<T>& map, int stride = 1) {
     Bins<T> bins(map.bins);
-    for (int i = 0; i < count; ++i) bins.add(refs[i], map(refs[i]));
+    for (int i = 0; i < count; i += stride) bins.add(refs[i], map(refs[i]));
     const int n = map.bins;
     double rightCost[kMaxBins][3];  // [b][a]: the cost of bins [b, n) along axis a
     LaneBox<T> side[3];

@@ -246,6 +246,13 @@ TEST(MaterialSharing, CopyNames_CountOn_SharersCounted) {
     EXPECT_EQ(spheresUsing(s, "blue"), 1);
     EXPECT_EQ(numberedMaterialName(s, "blue"), "blue 3");
     EXPECT_EQ(numberedMaterialName(s, "blue 2"), "blue 3") << "not \"blue 2 2\"";
+    // Only a number after one space counts on; anything else gets " 2".
+    EXPECT_EQ(numberedMaterialName(s, "blue 41"), "blue 42");
+    EXPECT_EQ(numberedMaterialName(s, "blue  7"), "blue  7 2");
+    EXPECT_EQ(numberedMaterialName(s, "blue 7a"), "blue 7a 2");
+    EXPECT_EQ(numberedMaterialName(s, "blue 123456789"), "blue 123456789 2");
+    EXPECT_EQ(numberedMaterialName(s, " 5"), " 5 2");
+    EXPECT_EQ(numberedMaterialName(s, "glass\t 5"), "glass\t 5 2");
 }
 
 // Item 7: the sphere page shows its material and who shares it.

@@ -1,6 +1,8 @@
-// whitted-render: renders a scene file to an image (SPEC §7).
+// whitted-render: renders a scene file to an image (SPEC §7), or the frames
+// of a turntable, or one region of the image for a farm; `whitted-render
+// merge` puts regions back together (issue 14).
 // Exit codes: 0 success; 2 bad input (scene or flags); 1 any other failure.
-// On failure no output file is left behind.
+// On failure no output file is left behind (frames already finished stay).
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -9,13 +11,19 @@
 #include <iostream>
 #include <mutex>
 #include <optional>
+#include <sstream>
+#include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include "atomic_file.h"
+#include "camera_control.h"
 #include "image_io.h"
+#include "image_parts.h"
 #include "kernel_dispatch.h"
 #include "renderer.h"
 #include "scene_io.h"
@@ -37,6 +45,20 @@ struct Options {
     int threads = 0;
     std::string stats;
     bool quiet = false;
+    std::vector<int> region;  // X0, Y0, X1, Y1
+    int turntable = 0;        // frames of one full turn; 0: a still
+    std::string frames;       // A-B of the turntable's frames; empty: all
+};
+
+struct MergeOptions {
+    std::vector<std::string> parts;
+    std::string output;
+    bool quiet = false;
+};
+
+// A flag's value is refused: the message, and exit 2.
+struct BadInput : std::runtime_error {
+    using std::runtime_error::runtime_error;
 };
 
 // A one-line bar on stderr, shown only once a render has run for a second, so
@@ -120,8 +142,96 @@ void writeText(const fs::path& file, const std::string& text) {
     });
 }
 
+// The region flag as pixels of the image, checked against its size.
+std::optional<PixelRect> regionOf(const Options& o, const RenderSettings& r) {
+    if (o.region.empty()) return std::nullopt;
+    const int x0 = o.region[0], y0 = o.region[1], x1 = o.region[2], y1 = o.region[3];
+    if (!(0 <= x0 && x0 < x1 && x1 <= r.width && 0 <= y0 && y0 < y1 && y1 <= r.height))
+        throw BadInput("--region " + std::to_string(x0) + "," + std::to_string(y0) + "," +
+                       std::to_string(x1) + "," + std::to_string(y1) + ": not a part of the " +
+                       std::to_string(r.width) + "x" + std::to_string(r.height) +
+                       " image (X0,Y0,X1,Y1 with X0 < X1, Y0 < Y1)");
+    return PixelRect{x0, y0, x1 - x0, y1 - y0};
+}
+
+// The frames to render, first to last: {0, 0} for a still.
+std::pair<int, int> framesOf(const Options& o) {
+    if (o.turntable == 0) {
+        if (!o.frames.empty()) throw BadInput("--frames needs --turntable N");
+        return {0, 0};
+    }
+    if (o.frames.empty()) return {1, o.turntable};
+    int first = 0, last = 0;
+    char dash = 0, rest = 0;
+    std::istringstream in(o.frames);
+    if (!(in >> first >> dash >> last) || dash != '-' || in >> rest || first < 1 || last < first ||
+        last > o.turntable)
+        throw BadInput("--frames " + o.frames +
+                       ": not A-B with 1 <= A <= B <= " + std::to_string(o.turntable));
+    return {first, last};
+}
+
+// out.png for a still, out.0007.png for frame 7.
+fs::path frameFile(const fs::path& file, int frame) {
+    if (frame == 0) return file;
+    char number[16];
+    std::snprintf(number, sizeof number, ".%04d", frame);
+    fs::path named = file;
+    named.replace_filename(file.stem().string() + number + file.extension().string());
+    return named;
+}
+
+// One image: the scene as given, rendered (only its region, if any) and
+// written with its stats. Returns the exit code.
+int renderFrame(const Scene& scene, const Options& o, const std::optional<PixelRect>& region,
+                int frame) {
+    const fs::path output = frameFile(o.output, frame);
+    ProgressBar bar(!o.quiet);
+    RenderOptions options;
+    options.threads = o.threads;
+    options.progressive = false;  // nobody watches the preview here
+    options.region = region;
+    const RenderResult result =
+        render(scene, options, [&](const TileUpdate& t) { bar.update(t.progress.fraction); });
+    bar.finish();
+    const ImageMetadata metadata =
+        makeImageMetadata(scene.render, result.seconds, "whitted-render");
+    try {
+        if (region)
+            writeImagePart({cropImage(result.image, *region), *region, scene.render.width,
+                            scene.render.height, metadata},
+                           output, metadata);
+        else
+            writeImage(result.image, output, metadata);
+    } catch (const std::exception& e) {
+        std::cerr << "whitted-render: " << e.what() << "\n";
+        return kExitFailure;
+    }
+    if (!o.stats.empty()) {
+        const fs::path stats = frameFile(o.stats, frame);
+        try {
+            writeText(stats, statsJson(scene.render, result));
+        } catch (const std::exception& e) {
+            std::cerr << "whitted-render: " << stats.string() << ": " << e.what() << "\n";
+            std::error_code ignored;
+            fs::remove(output, ignored);  // a failed run leaves no output behind
+            return kExitFailure;
+        }
+    }
+    if (!o.quiet) {
+        std::fprintf(
+            stderr, "wrote %s: %dx%d, %d spp, depth %d, %s, %.3f s, %.1f Mrays/s, %s kernel\n",
+            output.c_str(), scene.render.width, scene.render.height, scene.render.samplesPerPixel,
+            scene.render.maxDepth, std::string(precisionName(scene.render.precision)).c_str(),
+            result.seconds, result.seconds > 0 ? result.rays.total() / result.seconds / 1e6 : 0.0,
+            activeKernelName().c_str());
+    }
+    return kExitOk;
+}
+
 int run(const Options& o) {
-    if (!imageFormatFor(o.output)) {
+    const auto format = imageFormatFor(o.output);
+    if (!format) {
         std::cerr << "whitted-render: " << o.output
                   << ": unknown image extension (use .png, .jpg, .tif, .exr or .hdr)\n";
         return kExitBadInput;
@@ -134,8 +244,15 @@ int run(const Options& o) {
         return kExitBadInput;
     }
     applyOverrides(o, scene.render);
-
+    std::optional<PixelRect> region;
+    std::pair<int, int> frames;
     try {
+        region = regionOf(o, scene.render);
+        if (region && format->format != ImageFormat::Exr)
+            throw BadInput(o.output +
+                           ": --region writes OpenEXR (.exr), which records where "
+                           "the region belongs");
+        frames = framesOf(o);
         // A WHITTED_KERNEL this CPU cannot run, or a WHITTED_ACCEL that names
         // no structure, is refused before rendering, as bad input.
         activeKernel();
@@ -144,39 +261,44 @@ int run(const Options& o) {
         std::cerr << "whitted-render: " << e.what() << "\n";
         return kExitBadInput;
     }
-    ProgressBar bar(!o.quiet);
-    RenderOptions options;
-    options.threads = o.threads;
-    options.progressive = false;  // nobody watches the preview here
-    const RenderResult result =
-        render(scene, options, [&](const TileUpdate& t) { bar.update(t.progress.fraction); });
-    bar.finish();
+    const Camera camera = scene.camera;
+    for (int frame = frames.first; frame <= frames.second; ++frame) {
+        if (frame > 0) scene.camera = turntableCamera(camera, frame, o.turntable);
+        if (const int code = renderFrame(scene, o, region, frame); code != kExitOk) return code;
+    }
+    return kExitOk;
+}
 
+// `whitted-render merge`: the parts read, checked to tile one picture, and
+// written as one image.
+int runMerge(const MergeOptions& o) {
+    if (!imageFormatFor(o.output)) {
+        std::cerr << "whitted-render: " << o.output
+                  << ": unknown image extension (use .png, .jpg, .tif, .exr or .hdr)\n";
+        return kExitBadInput;
+    }
+    std::vector<ImagePart> parts;
+    Image whole;
     try {
-        writeImage(result.image, o.output,
-                   makeImageMetadata(scene.render, result.seconds, "whitted-render"));
+        for (const std::string& file : o.parts) parts.push_back(readImagePart(file));
+        whole = mergeParts(parts, o.parts);
+    } catch (const std::exception& e) {
+        std::cerr << "whitted-render: merge: " << e.what() << "\n";
+        return kExitBadInput;
+    }
+    // The settings the parts record; the time, all of theirs together.
+    RenderSettings settings = parts[0].metadata.settings;
+    double seconds = 0.0;
+    for (const ImagePart& p : parts) seconds += p.metadata.renderSeconds;
+    try {
+        writeImage(whole, o.output, makeImageMetadata(settings, seconds, "whitted-render"));
     } catch (const std::exception& e) {
         std::cerr << "whitted-render: " << e.what() << "\n";
         return kExitFailure;
     }
-    if (!o.stats.empty()) {
-        try {
-            writeText(o.stats, statsJson(scene.render, result));
-        } catch (const std::exception& e) {
-            std::cerr << "whitted-render: " << o.stats << ": " << e.what() << "\n";
-            std::error_code ignored;
-            fs::remove(o.output, ignored);  // a failed run leaves no output behind
-            return kExitFailure;
-        }
-    }
-    if (!o.quiet) {
-        std::fprintf(
-            stderr, "wrote %s: %dx%d, %d spp, depth %d, %s, %.3f s, %.1f Mrays/s, %s kernel\n",
-            o.output.c_str(), scene.render.width, scene.render.height, scene.render.samplesPerPixel,
-            scene.render.maxDepth, std::string(precisionName(scene.render.precision)).c_str(),
-            result.seconds, result.seconds > 0 ? result.rays.total() / result.seconds / 1e6 : 0.0,
-            activeKernelName().c_str());
-    }
+    if (!o.quiet)
+        std::fprintf(stderr, "wrote %s: %dx%d from %zu parts\n", o.output.c_str(), whole.width,
+                     whole.height, parts.size());
     return kExitOk;
 }
 
@@ -185,11 +307,12 @@ int run(const Options& o) {
 int main(int argc, char** argv) {
     CLI::App app{"Render a Whitted scene file to an image.", "whitted-render"};
     Options o;
+    // Not marked required: `whitted-render merge` has neither (checked below).
     app.add_option("scene", o.scene, "Scene file (JSON, format whitted-scene v1)")
-        ->required()
         ->check(CLI::ExistingFile);
-    app.add_option("-o,--output", o.output, "Output image: .png .jpg .tif .exr or .hdr")
-        ->required();
+    app.add_option("-o,--output", o.output,
+                   "Output image: .png .jpg .tif .exr or .hdr; a turntable's frames get "
+                   "numbers before the extension (out.0001.png)");
     app.add_option("--width", o.width, "Image width in pixels")
         ->check(CLI::Range(1, kMaxImageSize));
     app.add_option("--height", o.height, "Image height in pixels")
@@ -202,9 +325,30 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 1024));
     app.add_option("--stats", o.stats, "Write render statistics as JSON to this file");
     app.add_flag("--quiet", o.quiet, "Print nothing but errors");
+    app.add_option("--region", o.region,
+                   "Render only pixels X0 <= x < X1, Y0 <= y < Y1 of the image, into an OpenEXR "
+                   "file that records where they belong (see merge)")
+        ->delimiter(',')
+        ->expected(4);
+    app.add_option("--turntable", o.turntable,
+                   "Render N frames, the eye turning about look_at once around the up axis")
+        ->check(CLI::Range(1, 99999));
+    app.add_option("--frames", o.frames, "Render only frames A-B of the turntable (1-based)");
+
+    MergeOptions m;
+    CLI::App* merge = app.add_subcommand(
+        "merge", "Put the regions of one picture (--region parts) together into one image");
+    merge->add_option("parts", m.parts, "The parts: OpenEXR files from --region")
+        ->required()
+        ->check(CLI::ExistingFile);
+    merge->add_option("-o,--output", m.output, "The whole image: .png .jpg .tif .exr or .hdr")
+        ->required();
+    merge->add_flag("--quiet", m.quiet, "Print nothing but errors");
 
     try {
         app.parse(argc, argv);
+        if (!*merge && o.scene.empty()) throw CLI::RequiredError("scene");
+        if (!*merge && o.output.empty()) throw CLI::RequiredError("--output");
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
@@ -213,7 +357,7 @@ int main(int argc, char** argv) {
         return kExitBadInput;
     }
     try {
-        return run(o);
+        return *merge ? runMerge(m) : run(o);
     } catch (const std::exception& e) {
         std::cerr << "whitted-render: " << e.what() << "\n";
         return kExitFailure;

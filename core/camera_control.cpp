@@ -53,6 +53,14 @@ Camera orbit(const Camera& c, double yaw, double pitch) {
     return out;
 }
 
+Camera turntableCamera(const Camera& c, int frame, int frames) {
+    if (frame == 1) return c;
+    const double angle = 2.0 * kPi * double(frame - 1) / double(frames);
+    Camera out = c;
+    out.position = c.lookAt + glm::rotate(c.position - c.lookAt, angle, glm::normalize(c.up));
+    return out;
+}
+
 Camera pan(const Camera& c, double right, double up) {
     const Frame f = frameOf(c);
     const Vec3 delta = (f.right * right + f.up * up) * f.distance;

@@ -38,6 +38,12 @@ Camera dollyToward(const Camera& c, const Vec3& target, double factor);
 // the distance to look_at (W/A/S/D/Q/E).
 Camera walk(const Camera& c, double right, double up, double forward);
 
+// Frame `frame` (1 to frames) of a turntable: the eye turned about look_at,
+// around the up axis, by frame - 1 of `frames` equal steps of one full turn.
+// Frame 1 is the camera itself. A pure function of its arguments, so every
+// machine of a farm renders the same frame.
+Camera turntableCamera(const Camera& c, int frame, int frames);
+
 // Narrows (factor < 1) or widens the vertical field of view, kept in [1, 170] degrees.
 Camera zoom(const Camera& c, double factor);
 

@@ -8,6 +8,11 @@
 
 namespace whitted {
 
+// A rectangle of pixels: columns [x, x + width), rows [y, y + height).
+struct PixelRect {
+    int x, y, width, height;
+};
+
 struct Image {
     int width = 0;
     int height = 0;

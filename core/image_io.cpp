@@ -54,15 +54,21 @@ ImageMetadata makeImageMetadata(const RenderSettings& s, double renderSeconds,
     return m;
 }
 
-void writeImage(const Image& image, const fs::path& file, const ImageMetadata& metadata) {
+namespace {
+
+ImageFormatInfo formatOrThrow(const fs::path& file) {
     const auto format = imageFormatFor(file);
     if (!format)
         throw ImageIoError(file.string() +
                            ": unknown image extension (use .png, .jpg, .tif, .exr or .hdr)");
-    if (image.width <= 0 || image.height <= 0) throw ImageIoError(file.string() + ": empty image");
+    return *format;
+}
 
+OIIO::ImageSpec imageSpec(const Image& image, const fs::path& file, const ImageFormatInfo& format,
+                          const ImageMetadata& metadata) {
+    if (image.width <= 0 || image.height <= 0) throw ImageIoError(file.string() + ": empty image");
     OIIO::ImageSpec spec(image.width, image.height, 3,
-                         format->isFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+                         format.isFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
     // Empty strings are left out: Debian's OpenImageIO asserts on an empty
     // ImageDescription when writing JPEG (iptc.cpp, encode_iptc_iim_one_tag).
     if (!metadata.software.empty()) spec.attribute("Software", metadata.software);
@@ -73,21 +79,15 @@ void writeImage(const Image& image, const fs::path& file, const ImageMetadata& m
     spec.attribute("whitted:max_depth", metadata.settings.maxDepth);
     spec.attribute("whitted:precision", std::string(precisionName(metadata.settings.precision)));
     spec.attribute("whitted:render_seconds", float(metadata.renderSeconds));
-    spec.attribute("oiio:ColorSpace", format->isFloat ? "Linear" : "sRGB");
-    if (format->format == ImageFormat::Jpeg) spec.attribute("CompressionQuality", 95);
+    spec.attribute("oiio:ColorSpace", format.isFloat ? "Linear" : "sRGB");
+    if (format.format == ImageFormat::Jpeg) spec.attribute("CompressionQuality", 95);
+    return spec;
+}
 
-    std::vector<std::uint8_t> bytes;
-    const void* pixels = image.rgb.data();
-    if (!format->isFloat) {
-        bytes.resize(image.rgb.size());
-        std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin(), srgbEncode8);
-        pixels = bytes.data();
-    }
-
-    // Encoded in memory first, then written with checked system calls: the
-    // format writers do not report a failed write (a full disk gave a
-    // truncated PNG and no error), and a truncated file must never replace a
-    // good one.
+// Encoded in memory first, then written with checked system calls: the
+// format writers do not report a failed write (a full disk gave a truncated
+// PNG and no error), and a truncated file must never replace a good one.
+void encodeAndReplace(const fs::path& file, const OIIO::ImageSpec& spec, const void* pixels) {
     std::vector<unsigned char> encoded;
     {
         OIIO::Filesystem::IOVecOutput memory(encoded);
@@ -110,12 +110,58 @@ void writeImage(const Image& image, const fs::path& file, const ImageMetadata& m
     }
 }
 
-Image readImage(const fs::path& file) {
+}  // namespace
+
+void writeImage(const Image& image, const fs::path& file, const ImageMetadata& metadata) {
+    const ImageFormatInfo format = formatOrThrow(file);
+    const OIIO::ImageSpec spec = imageSpec(image, file, format, metadata);
+    std::vector<std::uint8_t> bytes;
+    const void* pixels = image.rgb.data();
+    if (!format.isFloat) {
+        bytes.resize(image.rgb.size());
+        std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin(), srgbEncode8);
+        pixels = bytes.data();
+    }
+    encodeAndReplace(file, spec, pixels);
+}
+
+void writeImagePart(const ImagePart& part, const fs::path& file, const ImageMetadata& metadata) {
+    const ImageFormatInfo format = formatOrThrow(file);
+    if (format.format != ImageFormat::Exr)
+        throw ImageIoError(file.string() +
+                           ": a part of a picture is written as OpenEXR (.exr), which records "
+                           "where it belongs");
+    OIIO::ImageSpec spec = imageSpec(part.image, file, format, metadata);
+    spec.x = part.window.x;
+    spec.y = part.window.y;
+    spec.full_x = 0;
+    spec.full_y = 0;
+    spec.full_width = part.fullWidth;
+    spec.full_height = part.fullHeight;
+    encodeAndReplace(file, spec, part.image.rgb.data());
+}
+
+ImagePart readImagePart(const fs::path& file) {
     auto in = OIIO::ImageInput::open(file.string());
     if (!in) throw ImageIoError(file.string() + ": " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.nchannels < 3) throw ImageIoError(file.string() + ": fewer than 3 channels");
-    Image image(spec.width, spec.height);
+    ImagePart part;
+    part.image = Image(spec.width, spec.height);
+    part.window = {spec.x - spec.full_x, spec.y - spec.full_y, spec.width, spec.height};
+    part.fullWidth = spec.full_width;
+    part.fullHeight = spec.full_height;
+    ImageMetadata& m = part.metadata;
+    m.software = spec.get_string_attribute("Software");
+    m.description = spec.get_string_attribute("ImageDescription");
+    RenderSettings& r = m.settings;
+    r.width = spec.get_int_attribute("whitted:width", r.width);
+    r.height = spec.get_int_attribute("whitted:height", r.height);
+    r.samplesPerPixel = spec.get_int_attribute("whitted:samples_per_pixel", r.samplesPerPixel);
+    r.maxDepth = spec.get_int_attribute("whitted:max_depth", r.maxDepth);
+    r.precision =
+        parsePrecision(spec.get_string_attribute("whitted:precision")).value_or(r.precision);
+    m.renderSeconds = spec.get_float_attribute("whitted:render_seconds", 0.0f);
     const bool eightBit = spec.format == OIIO::TypeDesc::UINT8;
     std::vector<float> all(size_t(spec.width) * spec.height * spec.nchannels);
     std::vector<std::uint8_t> codes(eightBit ? all.size() : 0);
@@ -126,9 +172,13 @@ Image readImage(const fs::path& file) {
     for (size_t p = 0; p < size_t(spec.width) * spec.height; ++p)
         for (int c = 0; c < 3; ++c) {
             const size_t src = p * spec.nchannels + c;
-            image.rgb[p * 3 + c] = eightBit ? srgbDecode8(codes[src]) : all[src];
+            part.image.rgb[p * 3 + c] = eightBit ? srgbDecode8(codes[src]) : all[src];
         }
-    return image;
+    return part;
+}
+
+Image readImage(const fs::path& file) {
+    return readImagePart(file).image;
 }
 
 std::string openImageIOVersion() {

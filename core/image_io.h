@@ -56,6 +56,25 @@ void writeImage(const Image& image, const std::filesystem::path& file,
 // decoded from sRGB). Throws ImageIoError.
 Image readImage(const std::filesystem::path& file);
 
+// A window of a larger picture (a farm's region): `image` holds the pixels of
+// `window` in a picture of fullWidth x fullHeight.
+struct ImagePart {
+    Image image;
+    PixelRect window{0, 0, 0, 0};
+    int fullWidth = 0, fullHeight = 0;
+    ImageMetadata metadata;  // read back: the settings and time the file records
+};
+
+// Writes the part as OpenEXR, its data window the part's place in the full
+// picture (the display window), so the file says where it belongs. As
+// writeImage(), atomically; any other extension is refused (ImageIoError).
+void writeImagePart(const ImagePart& part, const std::filesystem::path& file,
+                    const ImageMetadata& metadata);
+
+// readImage() with where the pixels lie: an OpenEXR's data and display windows;
+// for any other file the whole picture.
+ImagePart readImagePart(const std::filesystem::path& file);
+
 // The version of the OpenImageIO library in use, "2.4.7" (for About boxes).
 std::string openImageIOVersion();
 

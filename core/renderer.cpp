@@ -6,6 +6,7 @@
 #include <limits>
 #include <mutex>
 #include <stdexcept>
+#include <string>
 #include <thread>
 
 #include "kernel_dispatch.h"
@@ -48,11 +49,27 @@ int previewBlockOf(const RenderOptions& o) {
     return block;
 }
 
+// The tiles of the region, clipped to it: the same tiles as the whole image's
+// where they lie inside it.
+std::vector<Tile> regionTiles(std::vector<Tile> tiles, const PixelRect& region) {
+    std::vector<Tile> clipped;
+    for (const Tile& t : tiles) {
+        const int x0 = std::max(t.x, region.x), x1 = std::min(t.x + t.w, region.x + region.width);
+        const int y0 = std::max(t.y, region.y), y1 = std::min(t.y + t.h, region.y + region.height);
+        if (x0 < x1 && y0 < y1) clipped.push_back({x0, y0, x1 - x0, y1 - y0});
+    }
+    return clipped;
+}
+
+double pixelsRendered(const RenderSettings& r, const RenderOptions& o) {
+    return o.region ? double(o.region->width) * o.region->height : double(r.width) * r.height;
+}
+
 std::vector<Pass> planPasses(const RenderSettings& r, const RenderOptions& o) {
-    const double pixels = double(r.width) * r.height;
+    const double pixels = pixelsRendered(r, o);
     std::vector<Pass> passes;
     const int spp = r.samplesPerPixel;
-    if (!o.progressive) {
+    if (!o.progressive || o.region) {
         passes.push_back({PassKind::Samples, 0, spp, pixels * spp});
         return passes;
     }
@@ -87,9 +104,10 @@ class TileRenderer {
         // first tile; a page costs memory only once a tile of it is rendered.
         if (passes.back().firstSample > 0) sums_ = Sums(size_t(s_.width) * s_.height);
         for (const Pass& p : passes) totalWork_ += p.work;
-        const std::vector<Tile> tiles =
-            spiralTiles(s_.width, s_.height, std::max(1, options_.tileSize));
-        const int threads = std::min<int>(resolveThreadCount(options_.threads), tiles.size());
+        std::vector<Tile> tiles = spiralTiles(s_.width, s_.height, std::max(1, options_.tileSize));
+        if (options_.region) tiles = regionTiles(std::move(tiles), *options_.region);
+        const int threads =
+            std::max(1, std::min<int>(resolveThreadCount(options_.threads), tiles.size()));
 
         RenderResult result;
         result.threads = threads;
@@ -122,7 +140,7 @@ class TileRenderer {
     void runPass(const Pass& pass, int index, int count, const std::vector<Tile>& tiles,
                  int threads) {
         std::atomic<size_t> next{0};
-        const double workPerPixel = pass.work / (double(s_.width) * s_.height);
+        const double workPerPixel = pass.work / pixelsRendered(settings_, options_);
         auto worker = [&] {
             RayCounts counts;
             Row row;  // the worker's own
@@ -289,6 +307,14 @@ RenderResult render(const Scene& scene, const RenderOptions& options, const Tile
                     const StopPredicate& shouldStop) {
     if (auto problem = options.sceneValidated ? std::nullopt : validateScene(scene))
         throw std::invalid_argument(problem->jsonPath + ": " + problem->reason);
+    if (const auto& g = options.region;
+        g && (g->width <= 0 || g->height <= 0 || g->x < 0 || g->y < 0 ||
+              g->x + g->width > scene.render.width || g->y + g->height > scene.render.height))
+        throw std::invalid_argument("the region " + std::to_string(g->x) + "," +
+                                    std::to_string(g->y) + "," + std::to_string(g->x + g->width) +
+                                    "," + std::to_string(g->y + g->height) +
+                                    " is not a part of the " + std::to_string(scene.render.width) +
+                                    "x" + std::to_string(scene.render.height) + " image");
     // Here, not in a worker: a WHITTED_KERNEL this CPU cannot run throws to the caller.
     activeKernel();
     const auto start = std::chrono::steady_clock::now();

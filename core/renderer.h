@@ -13,6 +13,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 
 #include "image.h"
 #include "scene.h"
@@ -35,6 +36,12 @@ struct RenderOptions {
     // Trees kept from the previous render, refit when only spheres moved
     // (bvh.h). The editor's render worker keeps one; one render at a time.
     BvhCache* bvhCache = nullptr;
+    // Only these pixels, in one pass of all their samples (no preview): each
+    // pixel's samples depend on the pixel alone, so the region equals that
+    // part of the whole render, bit for bit. The image keeps the render's
+    // full size, zero outside the region; its pages cost memory only where
+    // rendered. Unset: the whole image.
+    std::optional<PixelRect> region = std::nullopt;
 };
 
 enum class PassKind { Preview, Samples };
@@ -65,9 +72,6 @@ struct TileUpdate {
 // The tile's pixels of TileUpdate::image: its rectangle divided by the block,
 // rounded outward (the last block of a row or column may be partly outside the
 // render).
-struct PixelRect {
-    int x, y, width, height;
-};
 PixelRect tileBlocks(const TileUpdate& tile);
 
 // Writes the tile into a full-size image of the render, each block's pixel
@@ -96,8 +100,8 @@ struct RenderResult {
 int resolveThreadCount(int requested);
 
 // Renders the scene with its render settings. Throws std::invalid_argument for a
-// scene that validateScene() refuses, std::runtime_error when WHITTED_KERNEL
-// names a tracer kernel that is unknown or that this CPU cannot run.
+// scene that validateScene() refuses or a region not inside the image, std::runtime_error when
+// WHITTED_KERNEL names a tracer kernel that is unknown or that this CPU cannot run.
 RenderResult render(const Scene& scene, const RenderOptions& options = {},
                     const TileCallback& onTile = {}, const StopPredicate& shouldStop = {});
 

@@ -1,5 +1,7 @@
 // End-to-end tests of the whitted-render program (SPEC §7): exit codes, the image
 // and stats it writes, messages on stderr, and nothing left behind on failure.
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -234,6 +236,105 @@ TEST(WhittedRender, UnknownOutputExtension_ExitsTwoAndWritesNothing) {
         EXPECT_NE(r.err.find(name), std::string::npos) << r.err;
     }
     EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
+}
+
+// ---- frames and regions (issue 14) -------------------------------------------------
+
+bool samePixels(const Image& a, const Image& b) {
+    return a.width == b.width && a.height == b.height && a.rgb == b.rgb;
+}
+
+// Four regions rendered apart and merged: the whole render, bit for bit.
+TEST(WhittedRender, RegionsMergeIntoTheWholeRenderBitForBit) {
+    TempDir dir;
+    const std::vector<std::string> size = {"--width", "61", "--height", "37",
+                                           "--spp",   "2",  "--quiet"};
+    auto withSize = [&](std::vector<std::string> args) {
+        args.insert(args.end(), size.begin(), size.end());
+        return args;
+    };
+    ASSERT_EQ(runRender(dir, withSize({kSeed, "-o", (dir / "whole.exr").string()})).exitCode, 0);
+    std::vector<std::string> parts;
+    for (const char* region : {"0,0,30,20", "30,0,61,20", "0,20,40,37", "40,20,61,37"}) {
+        const fs::path part = dir / (std::string("part ") + region + ".exr");
+        const ProgramRun r =
+            runRender(dir, withSize({kSeed, "-o", part.string(), "--region", region}));
+        ASSERT_EQ(r.exitCode, 0) << region << "\n" << describe(r);
+        parts.push_back(part.string());
+    }
+    auto mergeArgs = [](std::vector<std::string> files, const fs::path& out) {
+        files.insert(files.begin(), "merge");
+        files.insert(files.end(), {"-o", out.string(), "--quiet"});
+        return files;
+    };
+    const ProgramRun merged = runRender(dir, mergeArgs(parts, dir / "merged.exr"));
+    ASSERT_EQ(merged.exitCode, 0) << describe(merged);
+    EXPECT_TRUE(samePixels(readImage(dir / "merged.exr"), readImage(dir / "whole.exr")));
+    // A region's file is the region only, and says where it belongs.
+    const ImagePart part = readImagePart(dir / "part 30,0,61,20.exr");
+    EXPECT_EQ(part.image.width, 31);
+    EXPECT_EQ(part.window.x, 30);
+    EXPECT_EQ(part.fullWidth, 61);
+
+    // Without one of the parts the merge refuses, naming the first missing pixel.
+    const fs::path gap = dir / "gap.png";
+    const ProgramRun refused = runRender(dir, mergeArgs({parts[0], parts[2], parts[3]}, gap));
+    EXPECT_EQ(refused.exitCode, 2) << describe(refused);
+    EXPECT_NE(refused.err.find("pixel (30, 0)"), std::string::npos) << refused.err;
+    EXPECT_FALSE(fs::exists(gap));
+}
+
+TEST(WhittedRender, BadRegionOrFrames_ExitTwoAndWriteNothing) {
+    TempDir dir;
+    const std::string exr = (dir / "o.exr").string(), png = (dir / "o.png").string();
+    const std::vector<std::vector<std::string>> cases = {
+        {"-o", exr, "--region", "0,0,700,10"},  // the seed is 640x480
+        {"-o", exr, "--region", "5,5,5,9"},
+        {"-o", exr, "--region", "1,2,3"},
+        {"-o", png, "--region", "0,0,8,8"},  // a region needs OpenEXR
+        {"-o", png, "--frames", "1-2"},      // frames need a turntable
+        {"-o", png, "--turntable", "3", "--frames", "2-4"},
+        {"-o", png, "--turntable", "3", "--frames", "2"},
+        {"-o", png, "--turntable", "0"},
+    };
+    for (auto args : cases) {
+        args.insert(args.begin(), kSeed);
+        const ProgramRun r = runRender(dir, args);
+        std::string label;
+        for (const auto& a : args) label += a + " ";
+        EXPECT_EQ(r.exitCode, 2) << label << describe(r);
+        EXPECT_FALSE(r.err.empty()) << label;
+    }
+    EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
+}
+
+// A turntable writes numbered frames; frame 1 is the still, and a frame
+// rendered alone (--frames) equals the same frame of the whole run.
+TEST(WhittedRender, TurntableWritesNumberedFramesAndFramesRenderAlike) {
+    TempDir dir;
+    const std::vector<std::string> size = {"--width", "40", "--height", "30", "--quiet"};
+    auto withSize = [&](std::vector<std::string> args) {
+        args.insert(args.end(), size.begin(), size.end());
+        return args;
+    };
+    ASSERT_EQ(runRender(dir, withSize({kSeed, "-o", (dir / "still.png").string()})).exitCode, 0);
+    const ProgramRun all =
+        runRender(dir, withSize({kSeed, "-o", (dir / "spin.exr").string(), "--turntable", "3"}));
+    ASSERT_EQ(all.exitCode, 0) << describe(all);
+    const ProgramRun some = runRender(dir, withSize({kSeed, "-o", (dir / "again.exr").string(),
+                                                     "--turntable", "3", "--frames", "3-3"}));
+    ASSERT_EQ(some.exitCode, 0) << describe(some);
+    EXPECT_EQ(test::joined(dir.entries()),
+              "[again.0003.exr, spin.0001.exr, spin.0002.exr, spin.0003.exr, still.png]");
+    const Image first = readImage(dir / "spin.0001.exr"), second = readImage(dir / "spin.0002.exr");
+    EXPECT_TRUE(samePixels(readImage(dir / "again.0003.exr"), readImage(dir / "spin.0003.exr")));
+    EXPECT_FALSE(samePixels(first, second)) << "the camera did not turn";
+    // The still as PNG against frame 1 as float, both through 8-bit sRGB.
+    const Image still = readImage(dir / "still.png");
+    int differing = 0;
+    for (std::size_t i = 0; i < still.rgb.size(); ++i)
+        differing += std::abs(still.rgb[i] - std::min(1.0f, std::max(0.0f, first.rgb[i]))) > 0.01f;
+    EXPECT_EQ(differing, 0);
 }
 
 // ---- other failures: exit 1 -------------------------------------------------------

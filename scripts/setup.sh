@@ -21,6 +21,8 @@ packages=(
   desktop-file-utils appstream shared-mime-info libxml2-utils dpkg-dev
   # the scene loader's fuzzer (tests/fuzz): clang with libFuzzer's runtime
   clang libclang-rt-14-dev
+  # the render farm's tests: a single-node Slurm (scripts/local-slurm.sh)
+  slurmctld slurmd slurm-client munge
 )
 
 missing=()

@@ -67,6 +67,13 @@ inline void writeFile(const std::filesystem::path& file, const std::string& text
     out << text;
 }
 
+// The string as one shell word, quoted so that the shell takes it literally.
+inline std::string shellQuote(const std::string& s) {
+    std::string out = "'";
+    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
 inline std::string joined(const std::vector<std::string>& names) {
     std::string out;
     for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;

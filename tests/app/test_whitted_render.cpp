@@ -22,11 +22,7 @@ using test::TempDir;
 
 const std::string kSeed = std::string(WHITTED_SCENES_DIR) + "/seed.json";
 
-std::string shellQuote(const std::string& s) {
-    std::string out = "'";
-    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
+using test::shellQuote;
 
 struct ProgramRun {
     int exitCode = -1;

@@ -171,16 +171,6 @@ std::pair<int, int> framesOf(const Options& o) {
     return {first, last};
 }
 
-// out.png for a still, out.0007.png for frame 7.
-fs::path frameFile(const fs::path& file, int frame) {
-    if (frame == 0) return file;
-    char number[16];
-    std::snprintf(number, sizeof number, ".%04d", frame);
-    fs::path named = file;
-    named.replace_filename(file.stem().string() + number + file.extension().string());
-    return named;
-}
-
 // One image: the scene as given, rendered (only its region, if any) and
 // written with its stats. Returns the exit code.
 int renderFrame(const Scene& scene, const Options& o, const std::optional<PixelRect>& region,

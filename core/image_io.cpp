@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
+#include <cstdio>
 #include <sstream>
 
 #include <system_error>
@@ -179,6 +180,15 @@ ImagePart readImagePart(const fs::path& file) {
 
 Image readImage(const fs::path& file) {
     return readImagePart(file).image;
+}
+
+fs::path frameFile(const fs::path& file, int frame) {
+    if (frame == 0) return file;
+    char number[16];
+    std::snprintf(number, sizeof number, ".%04d", frame);
+    fs::path named = file;
+    named.replace_filename(file.stem().string() + number + file.extension().string());
+    return named;
 }
 
 std::string openImageIOVersion() {

@@ -75,6 +75,10 @@ void writeImagePart(const ImagePart& part, const std::filesystem::path& file,
 // for any other file the whole picture.
 ImagePart readImagePart(const std::filesystem::path& file);
 
+// The file of frame `frame` of an animation: out.0007.png for frame 7 of
+// out.png; frame 0 is a still, the file itself.
+std::filesystem::path frameFile(const std::filesystem::path& file, int frame);
+
 // The version of the OpenImageIO library in use, "2.4.7" (for About boxes).
 std::string openImageIOVersion();
 

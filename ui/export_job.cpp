@@ -11,6 +11,9 @@
 #include <QPushButton>
 #include <QSpinBox>
 
+#include <algorithm>
+
+#include "camera_control.h"
 #include "image_io.h"
 #include "image_size_fields.h"
 #include "renderer.h"
@@ -67,6 +70,13 @@ ExportDialog::ExportDialog(const Scene& scene, const QString& directory, const Q
         precision_->addItem(QString::fromLatin1(name.data(), int(name.size())), int(value));
     precision_->setCurrentIndex(precision_->findData(int(r.precision)));
     form->addRow(tr("Precision"), precision_);
+    turntable_ = spin("exportTurntable", 0, 9999, 0);
+    turntable_->setSpecialValueText(tr("None: one image"));
+    turntable_->setSuffix(tr(" frames"));
+    turntable_->setToolTip(
+        tr("Frames of a turntable: the eye turns once about the point it looks at, and each "
+           "frame is written with its number before the extension (name.0001.png, …)."));
+    form->addRow(tr("Turntable"), turntable_);
 
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
     buttons->button(QDialogButtonBox::Ok)->setText(tr("Export"));
@@ -115,6 +125,7 @@ ExportSettings ExportDialog::settings() const {
     s.render.samplesPerPixel = samples_->value();
     s.render.maxDepth = depth_->value();
     s.render.precision = static_cast<Precision>(precision_->currentData().toInt());
+    s.turntableFrames = turntable_->value();
     return s;
 }
 
@@ -130,30 +141,52 @@ ExportJob::~ExportJob() {
 
 void ExportJob::start() {
     thread_ = std::thread([this] {
-        RenderOptions options;
-        options.progressive = false;       // nobody watches: the final image only
-        std::atomic<int> lastPercent{-1};  // tiles report from several threads
-        const RenderResult result = render(
-            scene_, options,
-            [&](const TileUpdate& t) {
-                const int percent = static_cast<int>(t.progress.fraction * 100);
-                if (lastPercent.exchange(percent) != percent) emit progress(percent);
-            },
-            [this] { return cancelled_.load(); });
-        if (!result.completed) {
-            emit finished(false, tr("Export cancelled."));
-            return;
-        }
-        try {
-            writeImage(result.image, settings_.path.toStdString(),
-                       makeImageMetadata(scene_.render, result.seconds, "whitted"));
-        } catch (const std::exception& e) {
-            emit finished(false, QString::fromStdString(e.what()));
-            return;
-        }
-        emit finished(
-            true, tr("Exported %1 in %2 s.").arg(settings_.path).arg(result.seconds, 0, 'f', 2));
+        const int frames = settings_.turntableFrames;
+        double seconds = 0.0;
+        for (int frame = frames > 0 ? 1 : 0; frame <= frames; ++frame)
+            if (!exportFrame(frame, seconds)) return;
+        if (frames == 0)
+            emit finished(true,
+                          tr("Exported %1 in %2 s.").arg(settings_.path).arg(seconds, 0, 'f', 2));
+        else
+            emit finished(true, tr("Exported %1 frames, %2 to %3, in %4 s.")
+                                    .arg(frames)
+                                    .arg(QString::fromStdString(
+                                        frameFile(settings_.path.toStdString(), 1).string()))
+                                    .arg(QString::fromStdString(
+                                        frameFile(settings_.path.toStdString(), frames).string()))
+                                    .arg(seconds, 0, 'f', 2));
     });
+}
+
+bool ExportJob::exportFrame(int frame, double& seconds) {
+    const int frames = std::max(1, settings_.turntableFrames);
+    Scene scene = scene_;
+    if (frame > 0) scene.camera = turntableCamera(scene_.camera, frame, frames);
+    RenderOptions options;
+    options.progressive = false;       // nobody watches: the final image only
+    std::atomic<int> lastPercent{-1};  // tiles report from several threads
+    const RenderResult result = render(
+        scene, options,
+        [&](const TileUpdate& t) {
+            const double done = (std::max(frame, 1) - 1 + t.progress.fraction) / frames;
+            const int percent = static_cast<int>(done * 100);
+            if (lastPercent.exchange(percent) != percent) emit progress(percent);
+        },
+        [this] { return cancelled_.load(); });
+    if (!result.completed) {
+        emit finished(false, tr("Export cancelled."));
+        return false;
+    }
+    try {
+        writeImage(result.image, frameFile(settings_.path.toStdString(), frame),
+                   makeImageMetadata(scene.render, result.seconds, "whitted"));
+    } catch (const std::exception& e) {
+        emit finished(false, QString::fromStdString(e.what()));
+        return false;
+    }
+    seconds += result.seconds;
+    return true;
 }
 
 }  // namespace whitted::ui

@@ -23,6 +23,9 @@ class ImageSizeFields;
 struct ExportSettings {
     QString path;
     RenderSettings render;
+    // 0: a still. N: a turntable of N frames, the eye turning once about
+    // look_at, written as path's name with 0001 to N before the extension.
+    int turntableFrames = 0;
 };
 
 class ExportDialog : public QDialog {
@@ -40,7 +43,7 @@ class ExportDialog : public QDialog {
     QLineEdit* path_;
     QComboBox* format_;
     ImageSizeFields* size_;
-    QSpinBox *samples_, *depth_;
+    QSpinBox *samples_, *depth_, *turntable_;
     QComboBox* precision_;
 };
 
@@ -61,6 +64,10 @@ class ExportJob : public QObject {
     void finished(bool ok, const QString& message);
 
   private:
+    // Renders and writes one image; false, having emitted finished(), when
+    // cancelled or failed.
+    bool exportFrame(int frame, double& seconds);
+
     Scene scene_;
     ExportSettings settings_;
     std::atomic<bool> cancelled_{false};

@@ -278,6 +278,43 @@ TEST_F(EditorCommandsTest, ExportSize_LockedToSceneAspect_UnlockedSaysFramingDif
     EXPECT_TRUE(note->isVisible());
 }
 
+// Issue 14, item 1: the export dialog offers a turntable; its frames are
+// numbered files, frame 1 the still the same dialog exports without one.
+TEST_F(EditorCommandsTest, ExportTurntable_WritesNumberedFramesTheFirstOfThemTheStill) {
+    Scene scene = doc->scene();
+    scene.render.width = 32;
+    scene.render.height = 24;
+    ExportDialog dialog(scene, QString::fromStdString(dir.path().string()), "spin");
+    auto* frames = dialog.findChild<QSpinBox*>(QStringLiteral("exportTurntable"));
+    ASSERT_NE(frames, nullptr);
+    EXPECT_EQ(dialog.settings().turntableFrames, 0) << "a still unless asked";
+    frames->setValue(3);
+    const auto exportWith = [&](const ExportSettings& settings) {
+        ExportJob job(scene, settings);
+        bool done = false, ok = false;
+        QString message;
+        QObject::connect(&job, &ExportJob::finished, [&](bool success, const QString& text) {
+            done = true;
+            ok = success;
+            message = text;
+        });
+        job.start();
+        EXPECT_TRUE(QTest::qWaitFor([&] { return done; }, 30000));
+        EXPECT_TRUE(ok) << message.toStdString();
+        return message;
+    };
+    const QString message = exportWith(dialog.settings());
+    EXPECT_TRUE(message.contains(QStringLiteral("3 frames"))) << message.toStdString();
+    ExportSettings still = dialog.settings();
+    still.turntableFrames = 0;
+    still.path = QString::fromStdString((dir.path() / "still.png").string());
+    exportWith(still);
+    EXPECT_EQ(test::joined(dir.entries()),
+              "[seed.json, spin.0001.png, spin.0002.png, spin.0003.png, still.png]");
+    EXPECT_EQ(readImage(dir.path() / "spin.0001.png"), readImage(dir.path() / "still.png"));
+    EXPECT_NE(readImage(dir.path() / "spin.0002.png"), readImage(dir.path() / "still.png"));
+}
+
 // Item 9: the Render tab picks a common size, one undo step, and the view frames it.
 TEST_F(EditorCommandsTest, RenderTabCommonSize_SetsSizeInOneStep_ViewTakesItsAspect) {
     auto* common = window->findChild<QComboBox*>(QStringLiteral("renderCommonSize"));

@@ -33,7 +33,8 @@ user=$(id -un)
 say() { echo "local-slurm: $*" >&2; }
 
 running() {  # running PIDFILE: the daemon of that pid file is alive
-    [[ -f $1 ]] && kill -0 "$(cat "$1")" 2>/dev/null
+    local pid
+    pid=$(cat "$1" 2>/dev/null) && kill -0 "$pid" 2>/dev/null
 }
 
 up() {  # the controller answers and the node is idle, mixed or allocated
@@ -130,13 +131,14 @@ stop_daemons() {
     local name
     for name in slurmd slurmctld munged; do
         local pidfile=$dir/$name.pid
-        running "$pidfile" || continue
-        kill "$(cat "$pidfile")" 2>/dev/null || true
+        local pid
+        pid=$(cat "$pidfile" 2>/dev/null) || continue
+        kill "$pid" 2>/dev/null || true
         for _ in $(seq 1 50); do
-            running "$pidfile" || break
+            kill -0 "$pid" 2>/dev/null || break
             sleep 0.1
         done
-        if running "$pidfile"; then kill -9 "$(cat "$pidfile")" 2>/dev/null || true; fi
+        if kill -0 "$pid" 2>/dev/null; then kill -9 "$pid" 2>/dev/null || true; fi
         rm -f "$pidfile"
     done
     [[ ${1:-} == quiet ]] || say "stopped"

@@ -1,9 +1,9 @@
-// Issue 14, item 4 (its first part): the single-node Slurm of
-// scripts/local-slurm.sh, started and stopped around these tests by the CTest
-// fixture local_slurm, runs what a farm submits. The regions of the seed as
-// an array job and a merge job that depends on it give the local render, bit
-// for bit; a failed task cancels the merge (kill_invalid_depend) and leaves
-// the output path untouched. whitted-farm (item 3) will submit these jobs.
+// Issue 14, items 3 and 4: the single-node Slurm of scripts/local-slurm.sh,
+// started and stopped around these tests by the CTest fixture local_slurm,
+// runs what whitted-farm submits, and what a farm relies on: the regions of
+// the seed as an array job and a merge job that depends on it give the local
+// render, bit for bit; a failed task cancels the merge (kill_invalid_depend)
+// and leaves the output path untouched.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -27,6 +27,7 @@ using test::TempDir;
 
 const std::string kSeed = std::string(WHITTED_SCENES_DIR) + "/seed.json";
 const std::string kRender = WHITTED_RENDER_EXE;
+const std::string kFarm = WHITTED_FARM_EXE;
 
 struct Shell {
     int exitCode = -1;
@@ -135,6 +136,99 @@ TEST(LocalSlurm, AFailedTaskCancelsTheMergeAndLeavesTheOutputAlone) {
     EXPECT_NE(test::readFile(dir / "task-1.log").find("--region 0,24,64,99"), std::string::npos)
         << test::readFile(dir / "task-1.log");
     EXPECT_EQ(test::readFile(merged), "the user's earlier image");
+}
+
+// ---- whitted-farm ------------------------------------------------------------------
+
+// whitted-farm with the arguments, its stdout and stderr together.
+Shell farm(const std::vector<std::string>& args) {
+    std::string command = shellQuote(kFarm);
+    for (const std::string& a : args) command.append(" ").append(shellQuote(a));
+    return shell(command + " 2>&1");
+}
+
+// The local render of the same command, for comparison.
+void renderLocally(const std::vector<std::string>& args) {
+    std::string command = shellQuote(kRender);
+    for (const std::string& a : args) command.append(" ").append(shellQuote(a));
+    ASSERT_EQ(std::system((command + " --quiet").c_str()), 0) << command;
+}
+
+const std::vector<std::string> kSmall = {"--width", "64", "--height", "48", "--spp", "2"};
+
+std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
+    args.insert(args.end(), more.begin(), more.end());
+    return args;
+}
+
+// A scene and an output whose paths have spaces, quotes and $ in them.
+TEST(WhittedFarm, TilesOnSlurmEqualTheLocalRender_PathsReachTheJobsIntact) {
+    TempDir dir;
+    const fs::path scene = dir / "my scene 'quoted' $HOME.json";
+    fs::copy_file(kSeed, scene);
+    const fs::path out = dir / "the $1 \"out\" image.png", local = dir / "local.png";
+    const Shell r =
+        farm(with({scene.string(), "-o", out.string(), "--tiles", "4", "--wait"}, kSmall));
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find("4 of 4 regions to render"), std::string::npos) << r.out;
+    renderLocally(with({scene.string(), "-o", local.string()}, kSmall));
+    EXPECT_TRUE(readImage(out).rgb == readImage(local).rgb);
+    // The same command again: nothing to do.
+    const Shell again =
+        farm(with({scene.string(), "-o", out.string(), "--tiles", "4", "--wait"}, kSmall));
+    EXPECT_EQ(again.exitCode, 0) << again.out;
+    EXPECT_NE(again.out.find("already done"), std::string::npos) << again.out;
+}
+
+TEST(WhittedFarm, TurntableFramesOnSlurmEqualTheLocalFrames) {
+    TempDir dir;
+    const Shell r = farm(
+        with({kSeed, "-o", (dir / "spin.png").string(), "--turntable", "3", "--wait"}, kSmall));
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    renderLocally(with({kSeed, "-o", (dir / "local.png").string(), "--turntable", "3"}, kSmall));
+    for (const char* n : {"0001", "0002", "0003"})
+        EXPECT_TRUE(readImage(dir / (std::string("spin.") + n + ".png")).rgb ==
+                    readImage(dir / (std::string("local.") + n + ".png")).rgb)
+            << n;
+}
+
+// A task cancelled while its jobs are held: the farm fails naming it with its
+// log, the output is not written; run again, it renders only that region.
+TEST(WhittedFarm, ACancelledTaskFails_TheRerunRendersOnlyWhatIsMissing) {
+    TempDir dir;
+    const fs::path out = dir / "out.png", work = dir / "out.png.farm";
+    const std::vector<std::string> args =
+        with({kSeed, "-o", out.string(), "--tiles", "4", "--wait"}, kSmall);
+    Shell failed;
+    std::thread first([&] { failed = farm(with(args, {"--sbatch-arg=--hold"})); });
+    std::string job;
+    for (int i = 0; i < 200 && job.empty(); ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        const Shell q = shell("squeue -h -n whitted-farm -o %F 2>/dev/null | head -n 1");
+        job = q.out.substr(0, q.out.find('\n'));
+    }
+    ASSERT_FALSE(job.empty()) << "the farm's array job never appeared";
+    EXPECT_EQ(shell("scancel " + job + "_2").exitCode, 0);
+    // Both held jobs released: a held merge is not cancelled for its failed
+    // dependency until it is.
+    const Shell merge = shell("squeue -h -n whitted-merge -o %F 2>/dev/null | head -n 1");
+    EXPECT_EQ(
+        shell("scontrol release " + job + "," + merge.out.substr(0, merge.out.find('\n'))).exitCode,
+        0);
+    first.join();
+    EXPECT_EQ(failed.exitCode, 1) << failed.out;
+    EXPECT_NE(failed.out.find("task 2 (job " + job + "_2)"), std::string::npos) << failed.out;
+    EXPECT_NE(failed.out.find("task-2.log"), std::string::npos) << failed.out;
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_FALSE(fs::exists(work / "part.2.exr"));
+
+    const auto kept = fs::last_write_time(work / "part.0.exr");
+    const Shell second = farm(args);
+    ASSERT_EQ(second.exitCode, 0) << second.out;
+    EXPECT_NE(second.out.find("1 of 4 regions to render"), std::string::npos) << second.out;
+    EXPECT_EQ(fs::last_write_time(work / "part.0.exr"), kept) << "a finished region rendered again";
+    renderLocally(with({kSeed, "-o", (dir / "local.png").string()}, kSmall));
+    EXPECT_TRUE(readImage(out).rgb == readImage(dir / "local.png").rgb);
 }
 
 }  // namespace

@@ -1,0 +1,301 @@
+// whitted-farm: renders a scene on a Slurm cluster (issue 14). The image's
+// regions (--tiles N) or a turntable's frames (--turntable N) become an array
+// job of whitted-render commands, and the regions a merge job that depends on
+// it (afterok); --wait follows them to the end. Re-running the same command
+// renders only what is missing. No scheduler of our own: sbatch, squeue and
+// scancel do it (app/farm/slurm.h).
+// Exit codes: 0 submitted (or, with --wait, rendered); 2 bad input; 1 a job
+// failed or Slurm refused; 130 interrupted (the jobs are cancelled).
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+
+#include "farm/plan.h"
+#include "farm/slurm.h"
+#include "image_io.h"
+#include "scene.h"
+#include "scene_io.h"
+
+namespace fs = std::filesystem;
+using namespace whitted;
+using namespace whitted::farm;
+
+namespace {
+
+constexpr int kExitOk = 0, kExitFailure = 1, kExitBadInput = 2, kExitInterrupted = 130;
+
+struct Options {
+    std::string scene, output, workDir, precision;
+    int tiles = 0, turntable = 0, maxRunning = 0;
+    std::optional<int> width, height, spp, depth;
+    std::vector<std::string> sbatchArgs;
+    bool wait = false, quiet = false;
+};
+
+std::atomic<bool> interrupted{false};
+
+extern "C" void onSignal(int) {
+    interrupted = true;
+}
+
+// whitted-render beside this program: the same path must work on every node.
+std::string renderProgram() {
+    return (fs::read_symlink("/proc/self/exe").parent_path() / "whitted-render").string();
+}
+
+RenderCommand renderCommand(const Options& o) {
+    RenderCommand c{renderProgram(), fs::absolute(o.scene).string(), {}};
+    const auto flag = [&](const char* name, const std::optional<int>& v) {
+        if (v) c.overrides.insert(c.overrides.end(), {name, std::to_string(*v)});
+    };
+    flag("--width", o.width);
+    flag("--height", o.height);
+    flag("--spp", o.spp);
+    flag("--depth", o.depth);
+    if (!o.precision.empty()) c.overrides.insert(c.overrides.end(), {"--precision", o.precision});
+    return c;
+}
+
+// What the tasks of this command are, with the scene file's size and time:
+// a work directory left by another command, or by another version of the
+// scene, holds parts that must not be reused.
+std::string fingerprint(const Plan& plan, const std::string& scene) {
+    std::ostringstream s;
+    for (const Task& t : plan.tasks)
+        for (const std::string& a : t.argv) s << a << '\0';
+    s << fs::file_size(scene) << '\0' << fs::last_write_time(scene).time_since_epoch().count();
+    return s.str();
+}
+
+// Forgets the finished tasks of another command: its parts are removed, its
+// frames will be rendered again.
+void startOverIfChanged(Plan& plan, const fs::path& work, const std::string& print, bool& fresh) {
+    const fs::path file = work / "command";
+    std::ifstream in(file, std::ios::binary);
+    const std::string before((std::istreambuf_iterator<char>(in)), {});
+    fresh = before != print;
+    if (!fresh) return;
+    for (const Task& t : plan.tasks)
+        if (t.output.parent_path() == work) fs::remove(t.output);
+    fs::create_directories(work);
+    std::ofstream(file, std::ios::binary | std::ios::trunc) << print;
+}
+
+std::string readLog(const fs::path& file);
+
+// Says which task failed and shows its log: the first task whose state is a
+// failure, or, when squeue no longer shows it (a task cancelled before it
+// ran), the first whose file is missing.
+void reportFailedTask(const Jobs& jobs, const Plan& plan,
+                      const std::map<std::string, std::string>& states, const fs::path& work) {
+    std::optional<int> failed;
+    std::string state = "did not finish";
+    for (int i : jobs.indices) {
+        const auto s = states.find(jobs.tasks + "_" + std::to_string(i));
+        if (s != states.end() && failedState(s->second)) {
+            failed = i;
+            state = s->second;
+            break;
+        }
+        if (!failed && !fs::exists(plan.tasks[i].output)) failed = i;
+    }
+    if (!failed) return;
+    const std::string task = std::to_string(*failed);
+    const fs::path log = work / ("task-" + task + ".log");
+    std::cerr << "\nwhitted-farm: task " << task << " (job " << jobs.tasks << "_" << task << ") "
+              << state << "; its log, " << log.string() << ":\n"
+              << readLog(log);
+}
+
+std::string readLog(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), {});
+    return text.empty() ? "(empty: the task never ran)\n" : text;
+}
+
+// Follows the jobs until the render is done (0) or a task fails (1), or the
+// user interrupts (130: the jobs are cancelled).
+int follow(const Jobs& jobs, const Plan& plan, const fs::path& work, const fs::path& output,
+           bool quiet) {
+    const int total = static_cast<int>(jobs.indices.size());
+    int shown = -1;
+    for (;;) {
+        if (interrupted) {
+            cancelJobs(jobs);
+            std::cerr << "\nwhitted-farm: interrupted; jobs cancelled\n";
+            return kExitInterrupted;
+        }
+        const auto states = jobStates(jobs);
+        int done = 0;
+        for (const auto& [id, state] : states) {
+            const std::size_t underscore = id.find('_');
+            if (underscore == std::string::npos || id.find('[') != std::string::npos) continue;
+            if (state == "COMPLETED") ++done;
+            if (!failedState(state)) continue;
+            reportFailedTask(jobs, plan, states, work);
+            cancelJobs(jobs);
+            return kExitFailure;
+        }
+        if (!quiet && done != shown) {
+            std::fprintf(stderr, "\rwhitted-farm: tasks done %d/%d", done, total);
+            std::fflush(stderr);
+            shown = done;
+        }
+        const auto merge = states.find(jobs.merge);
+        const bool tasksGone = !jobs.tasks.empty() && states.empty();
+        if (jobs.merge.empty() ? done == total || tasksGone
+                               : merge != states.end() && finishedState(merge->second)) {
+            if (!quiet) std::fputc('\n', stderr);
+            bool complete = fs::exists(output);
+            for (const Task& t : plan.tasks) complete = complete || fs::exists(t.output);
+            if (!jobs.merge.empty() && merge->second != "COMPLETED") {
+                bool tasksDone = true;
+                for (int i : jobs.indices)
+                    tasksDone = tasksDone && fs::exists(plan.tasks[i].output);
+                if (tasksDone)
+                    std::cerr << "whitted-farm: the merge " << merge->second << "; its log:\n"
+                              << readLog(work / "merge.log");
+                else
+                    reportFailedTask(jobs, plan, states, work);
+                return kExitFailure;
+            }
+            for (const Task& t : plan.tasks)
+                if (!fs::exists(t.output)) complete = false;
+            if (!complete) {
+                std::cerr << "whitted-farm: the jobs ended, but not every file is there\n";
+                return kExitFailure;
+            }
+            if (!quiet)
+                std::cerr << "whitted-farm: wrote "
+                          << (plan.merge ? output.string()
+                                         : plan.tasks.front().output.string() + " to " +
+                                               plan.tasks.back().output.string())
+                          << "\n";
+            return kExitOk;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    }
+}
+
+int run(const Options& o) {
+    if (!imageFormatFor(o.output)) {
+        std::cerr << "whitted-farm: " << o.output
+                  << ": unknown image extension (use .png, .jpg, .tif, .exr or .hdr)\n";
+        return kExitBadInput;
+    }
+    Scene scene;
+    try {
+        scene = loadScene(o.scene);
+    } catch (const SceneError& e) {
+        std::cerr << "whitted-farm: " << e.what() << "\n";
+        return kExitBadInput;
+    }
+    const int width = o.width.value_or(scene.render.width);
+    const int height = o.height.value_or(scene.render.height);
+    if (o.tiles > width * height) {
+        std::cerr << "whitted-farm: --tiles " << o.tiles << ": more than the image's pixels\n";
+        return kExitBadInput;
+    }
+    const fs::path output = fs::absolute(o.output);
+    const fs::path work =
+        o.workDir.empty() ? fs::path(output.string() + ".farm") : fs::absolute(o.workDir);
+    const RenderCommand command = renderCommand(o);
+    Plan plan = o.turntable > 0
+                    ? turntablePlan(command, output, o.turntable)
+                    : regionPlan(command, output, work, width, height, std::max(1, o.tiles));
+    bool fresh = false;
+    startOverIfChanged(plan, work, fingerprint(plan, o.scene), fresh);
+    if (fresh && o.turntable > 0)
+        for (const Task& t : plan.tasks) fs::remove(t.output);  // another command's frames
+    if (!fresh && fs::exists(output) && plan.merge) {
+        if (!o.quiet) std::cerr << "whitted-farm: " << output.string() << " is already done\n";
+        return kExitOk;
+    }
+    SubmitOptions submitOptions{work, o.sbatchArgs, o.maxRunning};
+    Jobs jobs;
+    try {
+        jobs = submit(plan, submitOptions);
+    } catch (const std::exception& e) {
+        std::cerr << "whitted-farm: " << e.what() << "\n";
+        return kExitFailure;
+    }
+    if (jobs.tasks.empty() && jobs.merge.empty()) {
+        if (!o.quiet) std::cerr << "whitted-farm: every frame is already done\n";
+        return kExitOk;
+    }
+    if (!o.quiet)
+        std::cerr << "whitted-farm: " << jobs.indices.size() << " of " << plan.tasks.size()
+                  << (o.turntable > 0 ? " frames" : " regions") << " to render"
+                  << (jobs.tasks.empty() ? "" : ", job " + jobs.tasks)
+                  << (jobs.merge.empty() ? "" : "; merge, job " + jobs.merge) << "\n";
+    if (!o.wait) return kExitOk;
+    return follow(jobs, plan, work, output, o.quiet);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "Render a Whitted scene on a Slurm cluster: the image's regions, or a "
+        "turntable's frames, as an array job.",
+        "whitted-farm"};
+    Options o;
+    app.add_option("scene", o.scene, "Scene file (JSON, format whitted-scene v1)")
+        ->required()
+        ->check(CLI::ExistingFile);
+    app.add_option("-o,--output", o.output, "Output image (a turntable's: OUT.0001.png, ...)")
+        ->required();
+    auto* tiles = app.add_option("--tiles", o.tiles, "Render the image as N regions, one task each")
+                      ->check(CLI::Range(1, 65536));
+    app.add_option("--turntable", o.turntable, "Render N frames of a turntable, one task each")
+        ->check(CLI::Range(1, 99999))
+        ->excludes(tiles);
+    app.add_flag("--wait", o.wait,
+                 "Follow the jobs to the end; exit 1, showing the log, if a task fails");
+    app.add_option("--width", o.width, "Image width in pixels")
+        ->check(CLI::Range(1, kMaxImageSize));
+    app.add_option("--height", o.height, "Image height in pixels")
+        ->check(CLI::Range(1, kMaxImageSize));
+    app.add_option("--spp", o.spp, "Samples per pixel")->check(CLI::Range(1, kMaxSamplesPerPixel));
+    app.add_option("--depth", o.depth, "Maximum recursion depth")->check(CLI::Range(0, kMaxDepth));
+    app.add_option("--precision", o.precision, "Arithmetic of the tracer")
+        ->check(CLI::IsMember({"float", "double"}));
+    app.add_option("--max-running", o.maxRunning, "At most K tasks at once (sbatch --array=...%K)")
+        ->check(CLI::Range(1, 100000));
+    app.add_option("--sbatch-arg", o.sbatchArgs,
+                   "Pass an option on to sbatch, e.g. --sbatch-arg=--partition=gpu");
+    app.add_option("--work-dir", o.workDir,
+                   "Where parts and logs go, on a file system every node shares "
+                   "(default: OUT.farm beside the output)");
+    app.add_flag("--quiet", o.quiet, "Print nothing but errors");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "whitted-farm: " << e.what() << "\nRun with --help for usage.\n";
+        return kExitBadInput;
+    }
+    std::signal(SIGINT, onSignal);
+    std::signal(SIGTERM, onSignal);
+    try {
+        return run(o);
+    } catch (const std::exception& e) {
+        std::cerr << "whitted-farm: " << e.what() << "\n";
+        return kExitFailure;
+    }
+}

@@ -1,6 +1,6 @@
 # Installing (`cmake --install build --prefix P`) and packaging (`cpack -G DEB`
 # in the build directory) as a desktop program, in the FHS layout:
-#   bin/                     whitted, whitted-render, whitted-numerics, whitted-tradeoff,
+#   bin/                     whitted, whitted-render, whitted-farm, whitted-numerics, whitted-tradeoff,
 #                            whitted-field
 #   share/applications/      the .desktop file (opens scene files in the editor)
 #   share/metainfo/          AppStream metadata
@@ -13,7 +13,7 @@ include(GNUInstallDirs)
 set(WHITTED_APP_ID io.github.whitted.Whitted)
 set(WHITTED_RESOURCES ${PROJECT_SOURCE_DIR}/resources)
 
-install(TARGETS whitted whitted-render whitted-numerics whitted-tradeoff whitted-field
+install(TARGETS whitted whitted-render whitted-farm whitted-numerics whitted-tradeoff whitted-field
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(FILES ${WHITTED_RESOURCES}/${WHITTED_APP_ID}.desktop
         DESTINATION ${CMAKE_INSTALL_DATADIR}/applications)

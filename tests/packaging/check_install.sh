@@ -18,7 +18,7 @@ expect() {
     missing=1
   fi
 }
-for program in whitted whitted-render whitted-numerics whitted-tradeoff whitted-field; do
+for program in whitted whitted-render whitted-farm whitted-numerics whitted-tradeoff whitted-field; do
   expect "bin/$program"
 done
 expect "share/applications/$app.desktop"

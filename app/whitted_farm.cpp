@@ -24,9 +24,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli_input.h"
 #include "farm/plan.h"
 #include "farm/slurm.h"
 #include "image_io.h"
+#include "render_flags.h"
 #include "scene.h"
 #include "scene_io.h"
 
@@ -39,9 +41,9 @@ namespace {
 constexpr int kExitOk = 0, kExitFailure = 1, kExitBadInput = 2, kExitInterrupted = 130;
 
 struct Options {
-    std::string scene, output, workDir, precision;
+    std::string scene, output, workDir;
     int tiles = 0, turntable = 0, maxRunning = 0;
-    std::optional<int> width, height, spp, depth;
+    RenderFlags render;  // passed on to every task
     std::vector<std::string> sbatchArgs;
     bool wait = false, quiet = false;
 };
@@ -58,16 +60,7 @@ std::string renderProgram() {
 }
 
 RenderCommand renderCommand(const Options& o) {
-    RenderCommand c{renderProgram(), fs::absolute(o.scene).string(), {}};
-    const auto flag = [&](const char* name, const std::optional<int>& v) {
-        if (v) c.overrides.insert(c.overrides.end(), {name, std::to_string(*v)});
-    };
-    flag("--width", o.width);
-    flag("--height", o.height);
-    flag("--spp", o.spp);
-    flag("--depth", o.depth);
-    if (!o.precision.empty()) c.overrides.insert(c.overrides.end(), {"--precision", o.precision});
-    return c;
+    return {renderProgram(), fs::absolute(o.scene).string(), renderFlagArguments(o.render)};
 }
 
 // What the tasks of this command are, with the scene file's size and time:
@@ -192,20 +185,12 @@ int follow(const Jobs& jobs, const Plan& plan, const fs::path& work, const fs::p
 }
 
 int run(const Options& o) {
-    if (!imageFormatFor(o.output)) {
-        std::cerr << "whitted-farm: " << o.output
-                  << ": unknown image extension (use .png, .jpg, .tif, .exr or .hdr)\n";
-        return kExitBadInput;
-    }
-    Scene scene;
-    try {
-        scene = loadScene(o.scene);
-    } catch (const SceneError& e) {
-        std::cerr << "whitted-farm: " << e.what() << "\n";
-        return kExitBadInput;
-    }
-    const int width = o.width.value_or(scene.render.width);
-    const int height = o.height.value_or(scene.render.height);
+    if (!outputFormatOrSay("whitted-farm", o.output)) return kExitBadInput;
+    std::optional<Scene> loaded = sceneOrSay("whitted-farm", o.scene);
+    if (!loaded) return kExitBadInput;
+    Scene& scene = *loaded;
+    applyRenderFlags(o.render, scene.render);
+    const int width = scene.render.width, height = scene.render.height;
     if (o.tiles > width * height) {
         std::cerr << "whitted-farm: --tiles " << o.tiles << ": more than the image's pixels\n";
         return kExitBadInput;
@@ -266,14 +251,7 @@ int main(int argc, char** argv) {
         ->excludes(tiles);
     app.add_flag("--wait", o.wait,
                  "Follow the jobs to the end; exit 1, showing the log, if a task fails");
-    app.add_option("--width", o.width, "Image width in pixels")
-        ->check(CLI::Range(1, kMaxImageSize));
-    app.add_option("--height", o.height, "Image height in pixels")
-        ->check(CLI::Range(1, kMaxImageSize));
-    app.add_option("--spp", o.spp, "Samples per pixel")->check(CLI::Range(1, kMaxSamplesPerPixel));
-    app.add_option("--depth", o.depth, "Maximum recursion depth")->check(CLI::Range(0, kMaxDepth));
-    app.add_option("--precision", o.precision, "Arithmetic of the tracer")
-        ->check(CLI::IsMember({"float", "double"}));
+    addRenderFlags(app, o.render);
     app.add_option("--max-running", o.maxRunning, "At most K tasks at once (sbatch --array=...%K)")
         ->check(CLI::Range(1, 100000));
     app.add_option("--sbatch-arg", o.sbatchArgs,

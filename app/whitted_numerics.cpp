@@ -14,6 +14,7 @@
 #include <CLI/CLI.hpp>
 
 #include "atomic_file.h"
+#include "cli_input.h"
 #include "image_io.h"
 #include "numerics/heat_map.h"
 #include "numerics/measure.h"
@@ -160,13 +161,9 @@ void printSummary(const std::vector<RangeSummary>& ranges, const fs::path& repor
 }
 
 int run(const Options& o) {
-    Scene base;
-    try {
-        base = loadScene(o.scene);
-    } catch (const SceneError& e) {
-        std::cerr << "whitted-numerics: " << e.what() << "\n";
-        return kExitBadInput;
-    }
+    std::optional<Scene> loaded = sceneOrSay("whitted-numerics", o.scene);
+    if (!loaded) return kExitBadInput;
+    Scene& base = *loaded;
     base.render.width = o.width;
     base.render.height = o.height;
 

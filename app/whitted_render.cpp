@@ -22,9 +22,11 @@
 
 #include "atomic_file.h"
 #include "camera_control.h"
+#include "cli_input.h"
 #include "image_io.h"
 #include "image_parts.h"
 #include "kernel_dispatch.h"
+#include "render_flags.h"
 #include "renderer.h"
 #include "scene_io.h"
 
@@ -40,8 +42,7 @@ constexpr int kExitBadInput = 2;
 struct Options {
     std::string scene;
     std::string output;
-    std::optional<int> width, height, spp, depth;
-    std::optional<std::string> precision;
+    RenderFlags render;  // overrides of the scene's settings
     int threads = 0;
     std::string stats;
     bool quiet = false;
@@ -104,14 +105,6 @@ class ProgressBar {
     double lastDraw_ = -1.0;
     const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
-
-void applyOverrides(const Options& o, RenderSettings& r) {
-    if (o.width) r.width = *o.width;
-    if (o.height) r.height = *o.height;
-    if (o.spp) r.samplesPerPixel = *o.spp;
-    if (o.depth) r.maxDepth = *o.depth;
-    if (o.precision) r.precision = *parsePrecision(*o.precision);
-}
 
 std::string statsJson(const RenderSettings& r, const RenderResult& result) {
     const RayCounts& rays = result.rays;
@@ -220,20 +213,12 @@ int renderFrame(const Scene& scene, const Options& o, const std::optional<PixelR
 }
 
 int run(const Options& o) {
-    const auto format = imageFormatFor(o.output);
-    if (!format) {
-        std::cerr << "whitted-render: " << o.output
-                  << ": unknown image extension (use .png, .jpg, .tif, .exr or .hdr)\n";
-        return kExitBadInput;
-    }
-    Scene scene;
-    try {
-        scene = loadScene(o.scene);
-    } catch (const SceneError& e) {
-        std::cerr << "whitted-render: " << e.what() << "\n";
-        return kExitBadInput;
-    }
-    applyOverrides(o, scene.render);
+    const auto format = outputFormatOrSay("whitted-render", o.output);
+    if (!format) return kExitBadInput;
+    std::optional<Scene> loaded = sceneOrSay("whitted-render", o.scene);
+    if (!loaded) return kExitBadInput;
+    Scene& scene = *loaded;
+    applyRenderFlags(o.render, scene.render);
     std::optional<PixelRect> region;
     std::pair<int, int> frames;
     try {
@@ -262,11 +247,7 @@ int run(const Options& o) {
 // `whitted-render merge`: the parts read, checked to tile one picture, and
 // written as one image.
 int runMerge(const MergeOptions& o) {
-    if (!imageFormatFor(o.output)) {
-        std::cerr << "whitted-render: " << o.output
-                  << ": unknown image extension (use .png, .jpg, .tif, .exr or .hdr)\n";
-        return kExitBadInput;
-    }
+    if (!outputFormatOrSay("whitted-render", o.output)) return kExitBadInput;
     std::vector<ImagePart> parts;
     Image whole;
     try {
@@ -303,14 +284,7 @@ int main(int argc, char** argv) {
     app.add_option("-o,--output", o.output,
                    "Output image: .png .jpg .tif .exr or .hdr; a turntable's frames get "
                    "numbers before the extension (out.0001.png)");
-    app.add_option("--width", o.width, "Image width in pixels")
-        ->check(CLI::Range(1, kMaxImageSize));
-    app.add_option("--height", o.height, "Image height in pixels")
-        ->check(CLI::Range(1, kMaxImageSize));
-    app.add_option("--spp", o.spp, "Samples per pixel")->check(CLI::Range(1, kMaxSamplesPerPixel));
-    app.add_option("--depth", o.depth, "Maximum recursion depth")->check(CLI::Range(0, kMaxDepth));
-    app.add_option("--precision", o.precision, "Arithmetic of the tracer")
-        ->check(CLI::IsMember({"float", "double"}));
+    addRenderFlags(app, o.render);
     app.add_option("--threads", o.threads, "Worker threads (default: all cores)")
         ->check(CLI::Range(1, 1024));
     app.add_option("--stats", o.stats, "Write render statistics as JSON to this file");

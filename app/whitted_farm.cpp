@@ -6,6 +6,7 @@
 // scancel do it (app/farm/slurm.h).
 // Exit codes: 0 submitted (or, with --wait, rendered); 2 bad input; 1 a job
 // failed or Slurm refused; 130 interrupted (the jobs are cancelled).
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -14,6 +15,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -74,18 +76,23 @@ std::string fingerprint(const Plan& plan, const std::string& scene) {
     return s.str();
 }
 
-// Forgets the finished tasks of another command: its parts are removed, its
-// frames will be rendered again.
-void startOverIfChanged(Plan& plan, const fs::path& work, const std::string& print, bool& fresh) {
+// Forgets the finished tasks of another command, whose parts or frames
+// must be rendered again, and remembers this one's. True when it did.
+bool startOverIfChanged(const Plan& plan, const fs::path& work, const std::string& print) {
     const fs::path file = work / "command";
     std::ifstream in(file, std::ios::binary);
     const std::string before((std::istreambuf_iterator<char>(in)), {});
-    fresh = before != print;
-    if (!fresh) return;
-    for (const Task& t : plan.tasks)
-        if (t.output.parent_path() == work) fs::remove(t.output);
+    if (before == print) return false;
+    for (const Task& t : plan.tasks) fs::remove(t.output);
     fs::create_directories(work);
     std::ofstream(file, std::ios::binary | std::ios::trunc) << print;
+    return true;
+}
+
+// Whether every one of these tasks has written its file.
+bool filesWritten(const Plan& plan, const std::vector<int>& tasks) {
+    return std::all_of(tasks.begin(), tasks.end(),
+                       [&](int i) { return fs::exists(plan.tasks[i].output); });
 }
 
 std::string readLog(const fs::path& file);
@@ -153,22 +160,17 @@ int follow(const Jobs& jobs, const Plan& plan, const fs::path& work, const fs::p
         if (jobs.merge.empty() ? done == total || tasksGone
                                : merge != states.end() && finishedState(merge->second)) {
             if (!quiet) std::fputc('\n', stderr);
-            bool complete = fs::exists(output);
-            for (const Task& t : plan.tasks) complete = complete || fs::exists(t.output);
             if (!jobs.merge.empty() && merge->second != "COMPLETED") {
-                bool tasksDone = true;
-                for (int i : jobs.indices)
-                    tasksDone = tasksDone && fs::exists(plan.tasks[i].output);
-                if (tasksDone)
+                if (filesWritten(plan, jobs.indices))
                     std::cerr << "whitted-farm: the merge " << merge->second << "; its log:\n"
                               << readLog(work / "merge.log");
                 else
                     reportFailedTask(jobs, plan, states, work);
                 return kExitFailure;
             }
-            for (const Task& t : plan.tasks)
-                if (!fs::exists(t.output)) complete = false;
-            if (!complete) {
+            std::vector<int> all(plan.tasks.size());
+            std::iota(all.begin(), all.end(), 0);
+            if (!filesWritten(plan, all) || (plan.merge && !fs::exists(output))) {
                 std::cerr << "whitted-farm: the jobs ended, but not every file is there\n";
                 return kExitFailure;
             }
@@ -199,13 +201,10 @@ int run(const Options& o) {
     const fs::path work =
         o.workDir.empty() ? fs::path(output.string() + ".farm") : fs::absolute(o.workDir);
     const RenderCommand command = renderCommand(o);
-    Plan plan = o.turntable > 0
-                    ? turntablePlan(command, output, o.turntable)
-                    : regionPlan(command, output, work, width, height, std::max(1, o.tiles));
-    bool fresh = false;
-    startOverIfChanged(plan, work, fingerprint(plan, o.scene), fresh);
-    if (fresh && o.turntable > 0)
-        for (const Task& t : plan.tasks) fs::remove(t.output);  // another command's frames
+    const Plan plan = o.turntable > 0
+                          ? turntablePlan(command, output, o.turntable)
+                          : regionPlan(command, output, work, width, height, std::max(1, o.tiles));
+    const bool fresh = startOverIfChanged(plan, work, fingerprint(plan, o.scene));
     if (!fresh && fs::exists(output) && plan.merge) {
         if (!o.quiet) std::cerr << "whitted-farm: " << output.string() << " is already done\n";
         return kExitOk;

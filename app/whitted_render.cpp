@@ -138,13 +138,13 @@ void writeText(const fs::path& file, const std::string& text) {
 // The region flag as pixels of the image, checked against its size.
 std::optional<PixelRect> regionOf(const Options& o, const RenderSettings& r) {
     if (o.region.empty()) return std::nullopt;
-    const int x0 = o.region[0], y0 = o.region[1], x1 = o.region[2], y1 = o.region[3];
-    if (!(0 <= x0 && x0 < x1 && x1 <= r.width && 0 <= y0 && y0 < y1 && y1 <= r.height))
-        throw BadInput("--region " + std::to_string(x0) + "," + std::to_string(y0) + "," +
-                       std::to_string(x1) + "," + std::to_string(y1) + ": not a part of the " +
+    const PixelRect region{o.region[0], o.region[1], o.region[2] - o.region[0],
+                           o.region[3] - o.region[1]};
+    if (!insidePicture(region, r.width, r.height))
+        throw BadInput("--region " + cornersText(region) + ": not a part of the " +
                        std::to_string(r.width) + "x" + std::to_string(r.height) +
                        " image (X0,Y0,X1,Y1 with X0 < X1, Y0 < Y1)");
-    return PixelRect{x0, y0, x1 - x0, y1 - y0};
+    return region;
 }
 
 // The frames to render, first to last: {0, 0} for a still.

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "large_buffer_allocator.h"
@@ -12,6 +13,18 @@ namespace whitted {
 struct PixelRect {
     int x, y, width, height;
 };
+
+// Whether the rectangle holds a pixel and lies within a width x height picture.
+inline bool insidePicture(const PixelRect& r, int width, int height) {
+    return r.width > 0 && r.height > 0 && r.x >= 0 && r.y >= 0 && r.x + r.width <= width &&
+           r.y + r.height <= height;
+}
+
+// "X0,Y0,X1,Y1", as whitted-render's --region takes it.
+inline std::string cornersText(const PixelRect& r) {
+    return std::to_string(r.x) + "," + std::to_string(r.y) + "," + std::to_string(r.x + r.width) +
+           "," + std::to_string(r.y + r.height);
+}
 
 struct Image {
     int width = 0;

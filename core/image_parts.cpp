@@ -7,11 +7,6 @@ namespace whitted {
 
 namespace {
 
-std::string describe(const PixelRect& w) {
-    return std::to_string(w.x) + "," + std::to_string(w.y) + "," + std::to_string(w.x + w.width) +
-           "," + std::to_string(w.y + w.height);
-}
-
 std::string sizeOf(int width, int height) {
     return std::to_string(width) + "x" + std::to_string(height);
 }
@@ -27,9 +22,9 @@ void checkParts(const std::vector<ImagePart>& parts, const std::vector<std::stri
                                         sizeOf(p.fullWidth, p.fullHeight) + " picture, not of " +
                                         sizeOf(width, height) + " as " + names[0]);
         const PixelRect& w = p.window;
-        if (w.width <= 0 || w.height <= 0 || w.x < 0 || w.y < 0 || w.x + w.width > width ||
-            w.y + w.height > height || p.image.width != w.width || p.image.height != w.height)
-            throw std::invalid_argument(names[i] + ": its window " + describe(w) +
+        if (!insidePicture(w, width, height) || p.image.width != w.width ||
+            p.image.height != w.height)
+            throw std::invalid_argument(names[i] + ": its window " + cornersText(w) +
                                         " is not inside its " + sizeOf(width, height) + " picture");
     }
 }

@@ -308,13 +308,10 @@ RenderResult render(const Scene& scene, const RenderOptions& options, const Tile
     if (auto problem = options.sceneValidated ? std::nullopt : validateScene(scene))
         throw std::invalid_argument(problem->jsonPath + ": " + problem->reason);
     if (const auto& g = options.region;
-        g && (g->width <= 0 || g->height <= 0 || g->x < 0 || g->y < 0 ||
-              g->x + g->width > scene.render.width || g->y + g->height > scene.render.height))
-        throw std::invalid_argument("the region " + std::to_string(g->x) + "," +
-                                    std::to_string(g->y) + "," + std::to_string(g->x + g->width) +
-                                    "," + std::to_string(g->y + g->height) +
-                                    " is not a part of the " + std::to_string(scene.render.width) +
-                                    "x" + std::to_string(scene.render.height) + " image");
+        g && !insidePicture(*g, scene.render.width, scene.render.height))
+        throw std::invalid_argument("the region " + cornersText(*g) + " is not a part of the " +
+                                    std::to_string(scene.render.width) + "x" +
+                                    std::to_string(scene.render.height) + " image");
     // Here, not in a worker: a WHITTED_KERNEL this CPU cannot run throws to the caller.
     activeKernel();
     const auto start = std::chrono::steady_clock::now();

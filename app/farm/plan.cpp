@@ -42,10 +42,7 @@ Plan regionPlan(const RenderCommand& command, const fs::path& output, const fs::
     for (const PixelRect& r : tileRegions(width, height, tiles)) {
         const fs::path part = work / ("part." + std::to_string(plan.tasks.size()) + ".exr");
         Task task{renderArgs(command, part), part};
-        task.argv.insert(
-            task.argv.end(),
-            {"--region", std::to_string(r.x) + "," + std::to_string(r.y) + "," +
-                             std::to_string(r.x + r.width) + "," + std::to_string(r.y + r.height)});
+        task.argv.insert(task.argv.end(), {"--region", cornersText(r)});
         plan.tasks.push_back(task);
         merge.argv.push_back(part.string());
     }

@@ -418,7 +418,6 @@ struct LazyJobs {
     // Set once a job is built: std::call_once itself sets up thread-local
     // state on every call, 1.6% of a render's time at a million spheres.
     std::unique_ptr<std::atomic<bool>[]> ready;
-    std::atomic<int> built{0};
 };
 
 namespace {
@@ -500,7 +499,6 @@ int lazyJobRoot(const SphereBvh<T>& bvh, int job, const SphereSet<T>& spheres) {
         spliceNodes(nodes, j.nodeBase, part, j.nodeBase + 1, j.sphereBase);
         for (std::size_t i = 0; i < part.spheres.size(); ++i)
             leaves[j.sphereBase + i] = spheres.leafSphere(part.spheres[i]);
-        ++lazy.built;
         lazy.ready[job].store(true, std::memory_order_release);
     });
     return j.nodeBase;
@@ -508,7 +506,10 @@ int lazyJobRoot(const SphereBvh<T>& bvh, int job, const SphereSet<T>& spheres) {
 
 template <typename T>
 int lazyJobsBuilt(const SphereBvh<T>& bvh) {
-    return bvh.lazy ? bvh.lazy->built.load() : 0;
+    if (!bvh.lazy) return 0;
+    const LazyJobs<T>& lazy = *bvh.lazy;
+    return static_cast<int>(std::count_if(lazy.ready.get(), lazy.ready.get() + lazy.jobs.size(),
+                                          [](const std::atomic<bool>& r) { return r.load(); }));
 }
 
 template <typename T>

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -10,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
@@ -72,6 +74,24 @@ inline std::string shellQuote(const std::string& s) {
     std::string out = "'";
     for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
     return out + "'";
+}
+
+struct ShellRun {
+    int exitCode = -1;  // -1: it could not start, or a signal ended it
+    std::string out;    // its standard output (append " 2>&1" for stderr too)
+};
+
+// `command` run by the shell, its standard output captured.
+inline ShellRun runShell(const std::string& command) {
+    ShellRun r;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return {-1, "cannot start: " + command};
+    char buffer[4096];
+    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;)
+        r.out.append(buffer, n);
+    const int status = pclose(pipe);
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
 }
 
 inline std::string joined(const std::vector<std::string>& names) {

@@ -29,22 +29,8 @@ const std::string kSeed = std::string(WHITTED_SCENES_DIR) + "/seed.json";
 const std::string kRender = WHITTED_RENDER_EXE;
 const std::string kFarm = WHITTED_FARM_EXE;
 
-struct Shell {
-    int exitCode = -1;
-    std::string out;
-};
-
-Shell shell(const std::string& command) {
-    Shell r;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return r;
-    char buffer[4096];
-    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;)
-        r.out.append(buffer, n);
-    const int status = pclose(pipe);
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
+using Shell = test::ShellRun;
+constexpr auto shell = test::runShell;
 
 // Submits a batch job running `script` (a shell command); its id.
 std::string submit(const std::vector<std::string>& flags, const std::string& script) {

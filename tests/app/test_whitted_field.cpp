@@ -23,41 +23,25 @@ using whitted::test::TempDir;
 
 namespace {
 
-struct ProgramRun {
-    int exitCode = -1;
-    std::string output;  // stdout and stderr
-};
-
-// `command` through the shell, its output captured.
-ProgramRun run(std::string command) {
-    command.append(" 2>&1");
-    ProgramRun r;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return {-1, "cannot start: " + command};
-    char buffer[256];
-    while (std::fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
-    const int status = pclose(pipe);
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
+// `command` through the shell, its stdout and stderr together.
+test::ShellRun run(std::string command) {
+    return test::runShell(command.append(" 2>&1"));
 }
 
 std::string quoted(const fs::path& p) {
-    std::string q = p.string();
-    q.insert(q.begin(), '\'');
-    q.push_back('\'');
-    return q;
+    return test::shellQuote(p.string());
 }
 
 // Appended piece by piece: GCC 12 warns falsely (-Wrestrict, bug 105329) on
 // "literal" + std::string chains at -O3.
-ProgramRun field(const std::string& flags, const fs::path& out) {
+test::ShellRun field(const std::string& flags, const fs::path& out) {
     std::string command = "'" WHITTED_FIELD_EXE "' ";
     command.append(flags).append(" -o ").append(quoted(out));
     return run(command);
 }
 
 // A float TIFF, so that equal files mean equal pixels.
-ProgramRun renderTiff(const std::string& env, const fs::path& scene, const fs::path& out) {
+test::ShellRun renderTiff(const std::string& env, const fs::path& scene, const fs::path& out) {
     std::string command = env;
     command.append(" '" WHITTED_RENDER_EXE "' ").append(quoted(scene));
     command.append(" --quiet --width 96 --height 64 -o ").append(quoted(out));
@@ -68,8 +52,8 @@ ProgramRun renderTiff(const std::string& env, const fs::path& scene, const fs::p
 
 TEST(WhittedField, Output_LoadsWithCountBallsOfFiveMaterialsAndAFloor) {
     TempDir dir;
-    const ProgramRun r = field("50 --seed 7", dir / "f.json");
-    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const test::ShellRun r = field("50 --seed 7", dir / "f.json");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
     const Scene scene = loadScene(dir / "f.json");
     ASSERT_EQ(scene.spheres.size(), 51u);
     std::set<std::string> used;
@@ -101,8 +85,8 @@ TEST(WhittedField, BadFlags_ExitTwoAndWriteNothing) {
 // The README's command for the shipped example remakes it byte for byte.
 TEST(WhittedField, ShippedFieldScene_IsTheGeneratorsOutput) {
     TempDir dir;
-    const ProgramRun r = field("2500 --half-width 12 --length 40 --near 0", dir / "field.json");
-    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const test::ShellRun r = field("2500 --half-width 12 --length 40 --near 0", dir / "field.json");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
     EXPECT_TRUE(test::readFile(dir / "field.json") ==
                 test::readFile(WHITTED_SCENES_DIR "/field.json"))
         << "scenes/field.json is not what whitted-field makes with these flags";
@@ -110,8 +94,8 @@ TEST(WhittedField, ShippedFieldScene_IsTheGeneratorsOutput) {
 
 TEST(WhittedField, ShippedFieldScene_RendersWithWhittedRender) {
     TempDir dir;
-    const ProgramRun r = renderTiff("", WHITTED_SCENES_DIR "/field.json", dir / "field.tif");
-    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const test::ShellRun r = renderTiff("", WHITTED_SCENES_DIR "/field.json", dir / "field.tif");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
     const Image image = readImage(dir / "field.tif");
     EXPECT_EQ(image.width, 96);
     EXPECT_EQ(image.height, 64);

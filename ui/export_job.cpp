@@ -142,9 +142,10 @@ ExportJob::~ExportJob() {
 void ExportJob::start() {
     thread_ = std::thread([this] {
         const int frames = settings_.turntableFrames;
+        const Camera camera = scene_.camera;  // the turntable's frames turn about it
         double seconds = 0.0;
         for (int frame = frames > 0 ? 1 : 0; frame <= frames; ++frame)
-            if (!exportFrame(frame, seconds)) return;
+            if (!exportFrame(frame, camera, seconds)) return;
         if (frames == 0)
             emit finished(true,
                           tr("Exported %1 in %2 s.").arg(settings_.path).arg(seconds, 0, 'f', 2));
@@ -159,15 +160,14 @@ void ExportJob::start() {
     });
 }
 
-bool ExportJob::exportFrame(int frame, double& seconds) {
+bool ExportJob::exportFrame(int frame, const Camera& camera, double& seconds) {
     const int frames = std::max(1, settings_.turntableFrames);
-    Scene scene = scene_;
-    if (frame > 0) scene.camera = turntableCamera(scene_.camera, frame, frames);
+    if (frame > 0) scene_.camera = turntableCamera(camera, frame, frames);
     RenderOptions options;
     options.progressive = false;       // nobody watches: the final image only
     std::atomic<int> lastPercent{-1};  // tiles report from several threads
     const RenderResult result = render(
-        scene, options,
+        scene_, options,
         [&](const TileUpdate& t) {
             const double done = (std::max(frame, 1) - 1 + t.progress.fraction) / frames;
             const int percent = static_cast<int>(done * 100);
@@ -180,7 +180,7 @@ bool ExportJob::exportFrame(int frame, double& seconds) {
     }
     try {
         writeImage(result.image, frameFile(settings_.path.toStdString(), frame),
-                   makeImageMetadata(scene.render, result.seconds, "whitted"));
+                   makeImageMetadata(scene_.render, result.seconds, "whitted"));
     } catch (const std::exception& e) {
         emit finished(false, QString::fromStdString(e.what()));
         return false;

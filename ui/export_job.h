@@ -64,9 +64,10 @@ class ExportJob : public QObject {
     void finished(bool ok, const QString& message);
 
   private:
-    // Renders and writes one image; false, having emitted finished(), when
+    // Renders and writes one image, frame `frame` of the turntable about
+    // `camera` (0: a still); false, having emitted finished(), when
     // cancelled or failed.
-    bool exportFrame(int frame, double& seconds);
+    bool exportFrame(int frame, const Camera& camera, double& seconds);
 
     Scene scene_;
     ExportSettings settings_;

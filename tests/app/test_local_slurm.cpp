@@ -178,6 +178,24 @@ TEST(WhittedFarm, TurntableFramesOnSlurmEqualTheLocalFrames) {
             << n;
 }
 
+// The id of the job of that name whose working directory is `work`, once it
+// is queued (at most 20 s); empty if it never is.
+std::string jobRunningIn(const std::string& name, const fs::path& work) {
+    std::string suffix = " ";  // appended, not " " + ...: GCC 12 warns falsely (-Wrestrict)
+    suffix.append(work.string()).append("\n");
+    for (int i = 0; i < 200; ++i) {
+        const Shell q = shell("squeue -h -n " + name + " -o '%F %Z' 2>/dev/null");
+        for (std::size_t at = 0, end; (end = q.out.find('\n', at)) != std::string::npos;
+             at = end + 1) {
+            const std::string line = q.out.substr(at, end + 1 - at);
+            if (line.size() > suffix.size() && line.ends_with(suffix))
+                return line.substr(0, line.size() - suffix.size());
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    return {};
+}
+
 // A task cancelled while its jobs are held: the farm fails naming it with its
 // log, the output is not written; run again, it renders only that region.
 TEST(WhittedFarm, ACancelledTaskFails_TheRerunRendersOnlyWhatIsMissing) {
@@ -187,20 +205,19 @@ TEST(WhittedFarm, ACancelledTaskFails_TheRerunRendersOnlyWhatIsMissing) {
         with({kSeed, "-o", out.string(), "--tiles", "4", "--wait"}, kSmall);
     Shell failed;
     std::thread first([&] { failed = farm(with(args, {"--sbatch-arg=--hold"})); });
-    std::string job;
-    for (int i = 0; i < 200 && job.empty(); ++i) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
-        const Shell q = shell("squeue -h -n whitted-farm -o %F 2>/dev/null | head -n 1");
-        job = q.out.substr(0, q.out.find('\n'));
+    // This farm's jobs, by their work directory: the other farm tests may be
+    // running theirs at the same time under the same names.
+    const std::string job = jobRunningIn("whitted-farm", work);
+    const std::string merge = jobRunningIn("whitted-merge", work);
+    if (job.empty() || merge.empty()) {  // cancel what did appear, so the farm returns
+        shell("scancel " + job + " " + merge);
+        first.join();
+        FAIL() << "the farm's held jobs never appeared:\n" << failed.out;
     }
-    ASSERT_FALSE(job.empty()) << "the farm's array job never appeared";
     EXPECT_EQ(shell("scancel " + job + "_2").exitCode, 0);
     // Both held jobs released: a held merge is not cancelled for its failed
     // dependency until it is.
-    const Shell merge = shell("squeue -h -n whitted-merge -o %F 2>/dev/null | head -n 1");
-    EXPECT_EQ(
-        shell("scontrol release " + job + "," + merge.out.substr(0, merge.out.find('\n'))).exitCode,
-        0);
+    EXPECT_EQ(shell("scontrol release " + job + "," + merge).exitCode, 0);
     first.join();
     EXPECT_EQ(failed.exitCode, 1) << failed.out;
     EXPECT_NE(failed.out.find("task 2 (job " + job + "_2)"), std::string::npos) << failed.out;

@@ -7,8 +7,8 @@
 #include <string>
 #include <string_view>
 
-#include "image_io.h"
-#include "scene_io.h"
+#include "image/image_io.h"
+#include "scene/scene_io.h"
 
 namespace whitted {
 

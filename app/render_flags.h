@@ -9,7 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "scene.h"
+#include "scene/scene.h"
 
 namespace whitted {
 

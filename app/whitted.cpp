@@ -3,7 +3,7 @@
 #include <QCommandLineParser>
 #include <QIcon>
 
-#include "main_window.h"
+#include "editor/main_window.h"
 
 int main(int argc, char** argv) {
     QApplication app(argc, argv);

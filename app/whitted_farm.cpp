@@ -29,10 +29,10 @@
 #include "cli_input.h"
 #include "farm/plan.h"
 #include "farm/slurm.h"
-#include "image_io.h"
+#include "image/image_io.h"
 #include "render_flags.h"
-#include "scene.h"
-#include "scene_io.h"
+#include "scene/scene.h"
+#include "scene/scene_io.h"
 
 namespace fs = std::filesystem;
 using namespace whitted;

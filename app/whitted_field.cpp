@@ -8,7 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "scene_io.h"
+#include "scene/scene_io.h"
 #include "sphere_field.h"
 
 int main(int argc, char** argv) {

@@ -13,16 +13,16 @@
 
 #include <CLI/CLI.hpp>
 
-#include "atomic_file.h"
+#include "base/atomic_file.h"
 #include "cli_input.h"
-#include "image_io.h"
-#include "numerics/heat_map.h"
+#include "image/image_io.h"
+#include "numerics/difference_picture.h"
 #include "numerics/measure.h"
 #include "numerics/ranges.h"
 #include "numerics/report.h"
 #include "numerics/sweep_plan.h"
-#include "renderer.h"
-#include "scene_io.h"
+#include "scene/scene_io.h"
+#include "tracer/renderer.h"
 
 namespace fs = std::filesystem;
 using namespace whitted;
@@ -130,7 +130,8 @@ std::vector<Picture> writePictures(const Scene& base, const References& refs,
             const ImageMetadata meta = makeImageMetadata(sceneAt(base, point).render,
                                                          m.result.seconds, "whitted-numerics");
             writeImage(m.image, dir / (stem + ".png"), meta);
-            writeImage(heatMap(m.image, refs.doubleImage), dir / (stem + "-diff.png"), meta);
+            writeImage(differencePicture(m.image, refs.doubleImage), dir / (stem + "-diff.png"),
+                       meta);
             p.imageFile = std::string(kImageDir) + "/" + stem + ".png";
             p.heatFile = std::string(kImageDir) + "/" + stem + "-diff.png";
         }

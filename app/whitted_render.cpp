@@ -20,15 +20,15 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "atomic_file.h"
-#include "camera_control.h"
+#include "base/atomic_file.h"
+#include "camera/camera_control.h"
 #include "cli_input.h"
-#include "image_io.h"
-#include "image_parts.h"
-#include "kernel_dispatch.h"
+#include "image/image_io.h"
+#include "image/image_parts.h"
 #include "render_flags.h"
-#include "renderer.h"
-#include "scene_io.h"
+#include "scene/scene_io.h"
+#include "tracer/kernel_dispatch.h"
+#include "tracer/renderer.h"
 
 namespace fs = std::filesystem;
 using namespace whitted;

@@ -27,11 +27,11 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "atomic_file.h"
-#include "depth_truncation.h"
-#include "image_io.h"
-#include "scene_io.h"
-#include "tradeoff.h"
+#include "analysis/depth_truncation.h"
+#include "analysis/tradeoff.h"
+#include "base/atomic_file.h"
+#include "image/image_io.h"
+#include "scene/scene_io.h"
 #include "tradeoff/plots.h"
 #include "tradeoff/progress.h"
 #include "tradeoff/report.h"

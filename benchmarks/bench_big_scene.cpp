@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "big_scene.h"
-#include "main_window.h"
-#include "scene_io.h"
+#include "editor/main_window.h"
+#include "scene/scene_io.h"
 
 namespace {
 

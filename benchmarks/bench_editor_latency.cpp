@@ -17,8 +17,8 @@
 #include <cstdlib>
 #include <vector>
 
-#include "render_worker.h"
-#include "scene_io.h"
+#include "scene/scene_io.h"
+#include "viewport/render_worker.h"
 
 namespace {
 

@@ -48,11 +48,11 @@
 #include <vector>
 
 #include "bench_args.h"
-#include "bvh.h"
-#include "bvh_traverse.h"
-#include "ray_packet.h"
 #include "sphere_field.h"
-#include "tracer.h"
+#include "tracer/bvh.h"
+#include "tracer/bvh_traverse.h"
+#include "tracer/ray_packet.h"
+#include "tracer/tracer.h"
 
 #if __has_include(<valgrind/callgrind.h>)
 #include <valgrind/callgrind.h>

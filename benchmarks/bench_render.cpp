@@ -13,10 +13,10 @@
 
 #include <string>
 
-#include "kernel_dispatch.h"
 #include "plain_tracer.h"
-#include "renderer.h"
-#include "scene_io.h"
+#include "scene/scene_io.h"
+#include "tracer/kernel_dispatch.h"
+#include "tracer/renderer.h"
 
 namespace {
 

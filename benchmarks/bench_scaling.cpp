@@ -27,12 +27,12 @@
 #include <vector>
 
 #include "bench_args.h"
-#include "bvh.h"
-#include "image_error.h"
-#include "image_io.h"
-#include "kernel_dispatch.h"
-#include "renderer.h"
+#include "image/image_error.h"
+#include "image/image_io.h"
 #include "sphere_field.h"
+#include "tracer/bvh.h"
+#include "tracer/kernel_dispatch.h"
+#include "tracer/renderer.h"
 #ifdef WHITTED_HAVE_EMBREE
 #include <embree3/rtcore_config.h>
 

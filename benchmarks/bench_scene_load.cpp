@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "big_scene.h"
-#include "scene_io.h"
+#include "scene/scene_io.h"
 
 extern char** environ;
 

@@ -6,7 +6,7 @@
 #include <random>
 #include <string>
 
-#include "scene_io.h"
+#include "scene/scene_io.h"
 
 namespace whitted::bench {
 

@@ -13,7 +13,7 @@
 #include <thread>
 #include <vector>
 
-#include "camera.h"
+#include "tracer/camera.h"
 
 namespace whitted {
 

@@ -6,8 +6,8 @@
 // handles (it speckles on the seed floor in float) and nothing else uses it.
 #pragma once
 
-#include "image.h"
-#include "scene.h"
+#include "image/image.h"
+#include "scene/scene.h"
 
 namespace whitted::bench {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "image_io.h"
+#include "image/image_io.h"
 
 namespace whitted::farm {
 

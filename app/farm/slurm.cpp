@@ -4,7 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "atomic_file.h"
+#include "base/atomic_file.h"
 #include "process.h"
 
 namespace whitted::farm {

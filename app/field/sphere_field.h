@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-#include "scene.h"
+#include "scene/scene.h"
 
 namespace whitted {
 

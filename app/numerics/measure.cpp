@@ -4,9 +4,9 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "image_compare.h"
-#include "renderer.h"
-#include "scene_io.h"
+#include "image/image_compare.h"
+#include "scene/scene_io.h"
+#include "tracer/renderer.h"
 
 namespace whitted::numerics {
 

@@ -5,8 +5,8 @@
 #include <optional>
 #include <string>
 
-#include "image.h"
-#include "scene.h"
+#include "image/image.h"
+#include "scene/scene.h"
 #include "sweep_plan.h"
 
 namespace whitted::numerics {

@@ -118,7 +118,7 @@ void method(std::string& md, const ReportContext& c) {
         "position; the offsets are whole numbers, multiples of the checker period 1 "
         "(2 × 0.5), so the pattern is unchanged.\n\n";
     md +=
-        "Per point, from `compareImages()` (core/image_compare.h, the count the tests and "
+        "Per point, from `compareImages()` (core/image/image_compare.h, the count the tests and "
         "the editor use): per pixel, the largest channel difference of the sRGB-encoded "
         "display values, where 1/255 is one 8-bit step and a NaN or infinite channel counts "
         "as the largest difference, 1.\n\n"
@@ -179,7 +179,7 @@ void readingNotes(std::string& md) {
         "nothing until squared lengths leave the precision's normal range (float: 1.2e-38 "
         "to 3.4e38; double: 2.2e-308 to 1.8e308). Beyond, the floor's radius squared "
         "overflows, or the smallest lengths' squares lose their digits. The editor warns "
-        "when a float scene lies outside the measured float range (core/float_range.cpp), "
+        "when a float scene lies outside the measured float range (core/analysis/float_range.cpp), "
         "and offers to switch to double.\n"
         "- **Offset**: positions are taken relative to the camera, in double, before the "
         "tracer rounds them to its precision, so moving a scene costs only what its own "

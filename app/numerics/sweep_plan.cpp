@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "scene_transform.h"
+#include "scene/scene_transform.h"
 
 namespace whitted::numerics {
 

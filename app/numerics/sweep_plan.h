@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "scene.h"
+#include "scene/scene.h"
 
 namespace whitted::numerics {
 

@@ -1,13 +1,13 @@
 // The trade-off and progressive plots of one scene, as PlotSpecs for
-// ui/tradeoff_plot (drawn offscreen by whitted-tradeoff).
+// ui/plot/scatter_plot.h (drawn offscreen by whitted-tradeoff).
 #pragma once
 
 #include <QString>
 
 #include <vector>
 
-#include "tradeoff.h"
-#include "tradeoff_plot.h"
+#include "analysis/tradeoff.h"
+#include "plot/scatter_plot.h"
 
 namespace whitted::tradeoff {
 

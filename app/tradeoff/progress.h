@@ -5,7 +5,7 @@
 
 #include <chrono>
 
-#include "tradeoff.h"
+#include "analysis/tradeoff.h"
 
 namespace whitted::tradeoff {
 

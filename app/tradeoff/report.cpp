@@ -98,7 +98,7 @@ std::string sceneSection(const SceneSummary& s) {
         md << "![" << s.name << ": progressive refinement](" << s.directory
            << "/progressive.png)\n\n";
         md << "A pass of k samples holds the first k samples of the final pass's pattern "
-              "(core/sampling.h: a sample depends on the count), which cover the pixel less "
+              "(core/tracer/sampling.h: a sample depends on the count), which cover the pixel less "
               "evenly than a pattern made for k: its error lies above that of a one-shot render "
               "with k samples, the grid's point in the last column, and meets it at the last "
               "pass.\n\n";
@@ -221,7 +221,8 @@ std::string report(const std::vector<SceneSummary>& scenes, const std::string& c
     md << "Each scene is rendered over a grid of samples per pixel, max_depth, precision and "
           "resolution scale; every point's time is the median of its runs, and its error is "
           "measured against a double-precision reference with many samples and a depth past "
-          "the scene's longest chain (core/tradeoff.h). RMSE and PSNR are given for the 8-bit "
+          "the scene's longest chain (core/analysis/tradeoff.h). RMSE and PSNR are given for the "
+          "8-bit "
           "sRGB image (what a viewer sees, peak 255) and PSNR for the linear image (peak 1); "
           "the largest difference is in 8-bit steps.\n\n";
     const std::vector<PresetChoice> presets = choosePresets(scenes);
@@ -267,7 +268,7 @@ std::string report(const std::vector<SceneSummary>& scenes, const std::string& c
                << fixed(f.largest, 0) << " |";
         md << "\n";
     }
-    md << "\nAs core/render_presets.h spells them:\n\n```cpp\n"
+    md << "\nAs core/analysis/render_presets.h spells them:\n\n```cpp\n"
           "inline constexpr std::array<RenderPreset, 3> kRenderPresets{{\n";
     for (const PresetChoice& p : presets)
         md << "    {\"" << p.name << "\", " << p.samplesPerPixel << ", " << p.maxDepth << ", "

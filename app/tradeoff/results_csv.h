@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "tradeoff.h"
+#include "analysis/tradeoff.h"
 
 namespace whitted::tradeoff {
 

@@ -13,9 +13,9 @@
 
 #include <gtest/gtest.h>
 
-#include "image_io.h"
-#include "scene_io.h"
-#include "test_support.h"
+#include "image/image_io.h"
+#include "scene/scene_io.h"
+#include "support/test_support.h"
 
 namespace fs = std::filesystem;
 using namespace whitted;

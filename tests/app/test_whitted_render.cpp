@@ -11,8 +11,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "image_io.h"
-#include "test_support.h"
+#include "image/image_io.h"
+#include "support/test_support.h"
 
 namespace whitted {
 namespace {

@@ -1,4 +1,4 @@
-# Fails when a per-instruction-set kernel object (core/tracer_kernel.cpp built
+# Fails when a per-instruction-set kernel object (core/tracer/tracer_kernel.cpp built
 # with WHITTED_ISA=<isa>) defines a global symbol outside whitted::isa_<isa>.
 # Such a symbol is an inline function or template the linker may merge with a
 # copy from another object: an AVX2 copy could then run on the baseline path

@@ -1,4 +1,4 @@
-// Tests for core/bvh.* and core/bvh_traverse.h: the tree holds every sphere
+// Tests for core/bvh.* and core/tracer/bvh_traverse.h: the tree holds every sphere
 // once inside nested boxes, and rays traced through it find exactly what brute
 // force finds, down to the last bit of every pixel, in float and double.
 // Random cases print their seed; WHITTED_TEST_SEED replays one.
@@ -16,11 +16,11 @@
 
 #include <gtest/gtest.h>
 
-#include "bvh.h"
-#include "bvh_traverse.h"
-#include "kernel_dispatch.h"
-#include "renderer.h"
-#include "tracer.h"
+#include "tracer/bvh.h"
+#include "tracer/bvh_traverse.h"
+#include "tracer/kernel_dispatch.h"
+#include "tracer/renderer.h"
+#include "tracer/tracer.h"
 
 namespace whitted {
 namespace {

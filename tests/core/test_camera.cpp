@@ -1,9 +1,9 @@
-// Tests for core/camera.h: the basis and the pixel-to-direction mapping of SPEC §1.
+// Tests for core/tracer/camera.h: the basis and the pixel-to-direction mapping of SPEC §1.
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "camera.h"
+#include "tracer/camera.h"
 
 namespace whitted {
 namespace {

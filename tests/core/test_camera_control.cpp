@@ -5,11 +5,11 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
-#include "camera.h"
-#include "camera_control.h"
-#include "scene_io.h"
-#include "tracer.h"
-#include "view_projection.h"
+#include "camera/camera_control.h"
+#include "camera/view_projection.h"
+#include "scene/scene_io.h"
+#include "tracer/camera.h"
+#include "tracer/tracer.h"
 
 namespace whitted {
 namespace {

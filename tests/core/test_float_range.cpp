@@ -3,9 +3,9 @@
 // k in [-20, 14] and wrong at 10^15 and 10^-25.
 #include <gtest/gtest.h>
 
-#include "float_range.h"
-#include "scene_io.h"
-#include "scene_transform.h"
+#include "analysis/float_range.h"
+#include "scene/scene_io.h"
+#include "scene/scene_transform.h"
 
 namespace whitted {
 namespace {

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "scene_io.h"
+#include "scene/scene_io.h"
 
 namespace whitted {
 namespace {

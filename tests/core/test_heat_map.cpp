@@ -4,9 +4,9 @@
 
 #include <gtest/gtest.h>
 
-#include "heat_map.h"
-#include "image_compare.h"
-#include "srgb.h"
+#include "image/heat_map.h"
+#include "image/image_compare.h"
+#include "image/srgb.h"
 
 namespace whitted {
 namespace {

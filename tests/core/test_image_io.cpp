@@ -8,9 +8,9 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
-#include "image_io.h"
-#include "srgb.h"
-#include "test_support.h"
+#include "image/image_io.h"
+#include "image/srgb.h"
+#include "support/test_support.h"
 
 namespace whitted {
 namespace {

@@ -12,12 +12,12 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
-#include "camera_control.h"
-#include "image_io.h"
-#include "image_parts.h"
-#include "renderer.h"
-#include "scene_io.h"
-#include "test_support.h"
+#include "camera/camera_control.h"
+#include "image/image_io.h"
+#include "image/image_parts.h"
+#include "scene/scene_io.h"
+#include "support/test_support.h"
+#include "tracer/renderer.h"
 
 namespace whitted {
 namespace {

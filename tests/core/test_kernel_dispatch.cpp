@@ -14,11 +14,11 @@
 
 #include <gtest/gtest.h>
 
-#include "image_io.h"
-#include "kernel_dispatch.h"
-#include "renderer.h"
-#include "scene_io.h"
-#include "test_support.h"
+#include "image/image_io.h"
+#include "scene/scene_io.h"
+#include "support/test_support.h"
+#include "tracer/kernel_dispatch.h"
+#include "tracer/renderer.h"
 
 namespace whitted {
 namespace {

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "large_buffer_allocator.h"
+#include "base/large_buffer_allocator.h"
 
 namespace whitted {
 namespace {

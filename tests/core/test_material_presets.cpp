@@ -5,8 +5,8 @@
 #include <set>
 #include <string>
 
-#include "material_presets.h"
-#include "scene_io.h"
+#include "scene/material_presets.h"
+#include "scene/scene_io.h"
 
 namespace whitted {
 namespace {

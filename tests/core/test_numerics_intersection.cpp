@@ -40,7 +40,7 @@
 
 #include <gtest/gtest.h>
 
-#include "numerics_support.h"
+#include "support/numerics_support.h"
 
 namespace whitted {
 namespace {

@@ -1,7 +1,7 @@
 // Numerics tests (issue 4): the seed scene must look the same however it is
 // scaled or moved, and float must agree with double on it.
 //
-// Every comparison uses compareImages() (core/image_compare.h): per pixel the
+// Every comparison uses compareImages() (core/image/image_compare.h): per pixel the
 // largest channel difference after the sRGB curve, so "within 1/255" means one
 // step of an 8-bit display value. Thresholds are the issue's:
 //  - scaled by 2^k, k in [-20, 20]: bit-identical (exact scaling; any difference
@@ -29,10 +29,10 @@
 
 #include <gtest/gtest.h>
 
-#include "image_compare.h"
-#include "image_io.h"
-#include "numerics_support.h"
-#include "scene_transform.h"
+#include "image/image_compare.h"
+#include "image/image_io.h"
+#include "scene/scene_transform.h"
+#include "support/numerics_support.h"
 
 namespace whitted {
 namespace {

@@ -12,7 +12,7 @@
 //    scene of that sphere alone reports nothing;
 //  - a shadow ray to a light outside the sphere, in the outer half-space of the
 //    tangent plane (opaque sphere): S == 1 exactly, through packetTransmittance as
-//    tracer.cpp forms shadow rays (tests/core/numerics_support.h);
+//    tracer.cpp forms shadow rays (tests/support/numerics_support.h);
 //  - going inwards (intoOrigin true): a hit on the sphere with t > 0 whose exact
 //    point p + t d (quad, world frame) lies within K eps (r + |p - camera|) of the
 //    scene's sphere, K = 16 as in test_numerics_intersection.cpp. The bound scales
@@ -26,7 +26,7 @@
 
 #include <gtest/gtest.h>
 
-#include "numerics_support.h"
+#include "support/numerics_support.h"
 
 namespace whitted {
 namespace {

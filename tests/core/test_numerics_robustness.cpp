@@ -17,8 +17,8 @@
 
 #include <gtest/gtest.h>
 
-#include "numerics_support.h"
-#include "scene_transform.h"
+#include "scene/scene_transform.h"
+#include "support/numerics_support.h"
 
 namespace whitted {
 namespace {

@@ -14,9 +14,9 @@
 
 #include <gtest/gtest.h>
 
-#include "image_compare.h"
-#include "precision_compare.h"
-#include "scene_io.h"
+#include "analysis/precision_compare.h"
+#include "image/image_compare.h"
+#include "scene/scene_io.h"
 
 namespace whitted {
 namespace {

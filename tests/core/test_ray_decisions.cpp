@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "ray_decisions.h"
-#include "renderer.h"
-#include "scene_io.h"
+#include "analysis/ray_decisions.h"
+#include "scene/scene_io.h"
+#include "tracer/renderer.h"
 
 namespace whitted {
 namespace {

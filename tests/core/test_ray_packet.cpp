@@ -6,9 +6,9 @@
 
 #include <gtest/gtest.h>
 
-#include "ray_packet.h"
-#include "sphere_intersect.h"
-#include "tracer.h"
+#include "tracer/ray_packet.h"
+#include "tracer/sphere_intersect.h"
+#include "tracer/tracer.h"
 
 namespace whitted {
 namespace {

@@ -15,8 +15,8 @@
 
 #include <gtest/gtest.h>
 
-#include "renderer.h"
-#include "scene_io.h"
+#include "scene/scene_io.h"
+#include "tracer/renderer.h"
 
 namespace whitted {
 namespace {

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "sampling.h"
+#include "tracer/sampling.h"
 
 namespace whitted {
 namespace {

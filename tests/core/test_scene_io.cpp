@@ -16,8 +16,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "scene_io.h"
-#include "test_support.h"
+#include "scene/scene_io.h"
+#include "support/test_support.h"
 
 namespace whitted {
 namespace {

@@ -1,4 +1,4 @@
-// Tests for core/sphere_intersect.h: both roots against hand-computed values,
+// Tests for core/tracer/sphere_intersect.h: both roots against hand-computed values,
 // misses, origins inside, tangents, and the precision cases the header promises
 // (the seed's huge floor in float, far small spheres).
 #include <cmath>
@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "sphere_intersect.h"
+#include "tracer/sphere_intersect.h"
 
 namespace whitted {
 namespace {

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "srgb.h"
+#include "image/srgb.h"
 
 namespace whitted {
 namespace {

@@ -16,8 +16,8 @@
 
 #include <gtest/gtest.h>
 
-#include "renderer.h"
-#include "tracer.h"
+#include "tracer/renderer.h"
+#include "tracer/tracer.h"
 
 namespace whitted {
 

@@ -6,12 +6,12 @@
 
 #include <cmath>
 
-#include "depth_truncation.h"
-#include "image_compare.h"
-#include "renderer.h"
-#include "scene_io.h"
-#include "srgb.h"
-#include "tradeoff.h"
+#include "analysis/depth_truncation.h"
+#include "analysis/tradeoff.h"
+#include "image/image_compare.h"
+#include "image/srgb.h"
+#include "scene/scene_io.h"
+#include "tracer/renderer.h"
 
 namespace whitted {
 namespace {

@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include "scene_io.h"
+#include "scene/scene_io.h"
 
 namespace whitted {
 namespace {

@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "scene_io.h"
+#include "scene/scene_io.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);

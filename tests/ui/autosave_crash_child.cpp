@@ -7,8 +7,8 @@
 
 #include <cstdio>
 
-#include "autosave.h"
-#include "main_window.h"
+#include "document/autosave.h"
+#include "editor/main_window.h"
 
 int main(int argc, char** argv) {
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");

@@ -15,11 +15,11 @@
 
 #include <filesystem>
 
-#include "autosave.h"
-#include "gui_test_main.h"
-#include "main_window.h"
-#include "scene_io.h"
-#include "test_support.h"
+#include "document/autosave.h"
+#include "editor/main_window.h"
+#include "scene/scene_io.h"
+#include "support/gui_test_main.h"
+#include "support/test_support.h"
 
 namespace whitted::ui {
 namespace {

@@ -28,17 +28,17 @@
 #include <functional>
 #include <memory>
 
-#include "export_job.h"
-#include "gui_test_main.h"
-#include "help_dialogs.h"
-#include "image_io.h"
-#include "kernel_dispatch.h"
-#include "main_window.h"
-#include "render_view.h"
-#include "scene_io.h"
-#include "scene_panel.h"
-#include "test_support.h"
-#include "tradeoff_view.h"
+#include "editor/export_job.h"
+#include "editor/help_dialogs.h"
+#include "editor/main_window.h"
+#include "image/image_io.h"
+#include "panels/scene_panel.h"
+#include "scene/scene_io.h"
+#include "support/gui_test_main.h"
+#include "support/test_support.h"
+#include "tracer/kernel_dispatch.h"
+#include "tradeoff_dock/tradeoff_view.h"
+#include "viewport/render_view.h"
 
 namespace whitted::ui {
 namespace {

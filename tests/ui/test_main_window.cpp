@@ -28,20 +28,20 @@
 #include <thread>
 #include <vector>
 
-#include "camera_control.h"
-#include "color_button.h"
-#include "export_job.h"
-#include "gui_test_main.h"
-#include "image_convert.h"
-#include "image_io.h"
-#include "main_window.h"
-#include "main_window_fixture.h"
-#include "number_field.h"
-#include "render_view.h"
-#include "renderer.h"
-#include "scene_io.h"
-#include "scene_panel.h"
-#include "test_support.h"
+#include "camera/camera_control.h"
+#include "editor/export_job.h"
+#include "editor/main_window.h"
+#include "image/image_io.h"
+#include "panels/color_button.h"
+#include "panels/number_field.h"
+#include "panels/scene_panel.h"
+#include "scene/scene_io.h"
+#include "support/gui_test_main.h"
+#include "support/main_window_fixture.h"
+#include "support/test_support.h"
+#include "tracer/renderer.h"
+#include "viewport/image_convert.h"
+#include "viewport/render_view.h"
 
 namespace whitted::ui {
 namespace {

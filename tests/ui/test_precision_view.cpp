@@ -17,16 +17,16 @@
 #include <memory>
 #include <string>
 
-#include "float_range.h"
-#include "float_range_warning.h"
-#include "heat_map_view.h"
-#include "image_convert.h"
-#include "main_window.h"
-#include "precision_compare.h"
-#include "precision_view.h"
-#include "scene_io.h"
-#include "scene_transform.h"
-#include "test_support.h"
+#include "analysis/float_range.h"
+#include "analysis/precision_compare.h"
+#include "editor/float_range_warning.h"
+#include "editor/main_window.h"
+#include "precision_dock/heat_map_view.h"
+#include "precision_dock/precision_view.h"
+#include "scene/scene_io.h"
+#include "scene/scene_transform.h"
+#include "support/test_support.h"
+#include "viewport/image_convert.h"
 
 namespace whitted::ui {
 namespace {
@@ -235,7 +235,7 @@ TEST_F(PrecisionViewTest, FloatRangeWarning_HiddenForTheSeed) {
     EXPECT_FALSE(window->floatRangeWarning()->isVisibleTo(window.get()));
 }
 
-// Needs the real thresholds of core/float_range.cpp (measured by issue 4's sweep):
+// Needs the real thresholds of core/analysis/float_range.cpp (measured by issue 4's sweep):
 // while floatRangeProblem() is a placeholder that finds no problem anywhere, it skips.
 TEST_F(PrecisionViewTest, FloatRangeWarning_SceneScaledBy1e30_ClickSwitchesToDoubleUndoable) {
     const Scene far = scaledScene(doc->scene(), 1e30);

@@ -20,18 +20,18 @@
 #include <ostream>
 #include <string>
 
-#include "camera_control.h"
-#include "color_button.h"
-#include "edit_messages.h"
-#include "gui_test_main.h"
-#include "main_window.h"
-#include "material_presets.h"
-#include "material_sharing.h"
-#include "number_field.h"
-#include "render_view.h"
-#include "scene_io.h"
-#include "scene_panel.h"
-#include "test_support.h"
+#include "camera/camera_control.h"
+#include "document/edit_messages.h"
+#include "editor/main_window.h"
+#include "panels/color_button.h"
+#include "panels/material_sharing.h"
+#include "panels/number_field.h"
+#include "panels/scene_panel.h"
+#include "scene/material_presets.h"
+#include "scene/scene_io.h"
+#include "support/gui_test_main.h"
+#include "support/test_support.h"
+#include "viewport/render_view.h"
 
 // Failures print a QString as its text.
 inline void PrintTo(const QString& text, std::ostream* os) {

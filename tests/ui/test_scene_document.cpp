@@ -10,8 +10,8 @@
 #include <iostream>
 #include <random>
 
-#include "scene_document.h"
-#include "scene_io.h"
+#include "document/scene_document.h"
+#include "scene/scene_io.h"
 
 namespace whitted::ui {
 namespace {

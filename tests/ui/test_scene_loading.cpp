@@ -15,10 +15,10 @@
 #include <utility>
 #include <vector>
 
-#include "gui_test_main.h"
-#include "main_window.h"
-#include "scene_io.h"
-#include "test_support.h"
+#include "editor/main_window.h"
+#include "scene/scene_io.h"
+#include "support/gui_test_main.h"
+#include "support/test_support.h"
 
 namespace whitted::ui {
 namespace {

@@ -29,15 +29,15 @@
 #include <memory>
 #include <string>
 
-#include "image_error.h"
-#include "main_window.h"
-#include "plot_widget.h"
-#include "render_presets.h"
-#include "scene_io.h"
-#include "settings_prediction.h"
-#include "test_support.h"
-#include "tradeoff.h"
-#include "tradeoff_view.h"
+#include "analysis/render_presets.h"
+#include "analysis/tradeoff.h"
+#include "editor/main_window.h"
+#include "image/image_error.h"
+#include "plot/plot_widget.h"
+#include "scene/scene_io.h"
+#include "support/test_support.h"
+#include "tradeoff_dock/settings_prediction.h"
+#include "tradeoff_dock/tradeoff_view.h"
 
 namespace whitted::ui {
 namespace {

@@ -14,11 +14,11 @@
 #include <cmath>
 #include <optional>
 
-#include "camera_control.h"
-#include "gui_test_main.h"
-#include "main_window_fixture.h"
-#include "scene_panel.h"
-#include "view_overlay.h"
+#include "camera/camera_control.h"
+#include "panels/scene_panel.h"
+#include "support/gui_test_main.h"
+#include "support/main_window_fixture.h"
+#include "viewport/view_overlay.h"
 
 namespace whitted::ui {
 namespace {

@@ -1,0 +1,55 @@
+#include "image/heat_map.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include "image/image_compare.h"
+
+namespace whitted {
+
+namespace {
+
+// Matplotlib's inferno (CC0) at entries 0, 32, 64, 96, 128, 160, 191, 223 and 255 of
+// its 256, sRGB-encoded; the first stop is pure black instead of (0.001, 0.000, 0.014).
+constexpr std::array<glm::vec3, 9> kInferno{{
+    {0.000000f, 0.000000f, 0.000000f},
+    {0.129285f, 0.047293f, 0.290788f},
+    {0.341500f, 0.062325f, 0.429425f},
+    {0.540920f, 0.134729f, 0.415123f},
+    {0.735683f, 0.215906f, 0.330245f},
+    {0.894305f, 0.353399f, 0.193584f},
+    {0.977092f, 0.550850f, 0.039050f},
+    {0.976108f, 0.789974f, 0.196018f},
+    {0.988362f, 0.998364f, 0.644924f},
+}};
+
+// The inverse of the sRGB curve (srgb.h has it only for 8-bit codes).
+float srgbDecode(float encoded) {
+    return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
+}
+
+}  // namespace
+
+glm::vec3 heatMapColour(float difference) {
+    if (!(difference > 0.0f)) return kInferno[0];
+    const float x = std::min(difference / kHeatMapSaturation, 1.0f) * (kInferno.size() - 1);
+    const int i = std::min(static_cast<int>(x), static_cast<int>(kInferno.size()) - 2);
+    const float f = x - static_cast<float>(i);
+    return kInferno[i] + f * (kInferno[i + 1] - kInferno[i]);
+}
+
+Image heatMap(const Image& a, const Image& b) {
+    if (a.width != b.width || a.height != b.height)
+        throw std::invalid_argument("heatMap: the images differ in size");
+    Image out(a.width, a.height);
+    const std::size_t pixels = std::size_t(a.width) * std::size_t(a.height);
+    for (std::size_t p = 0; p < pixels; ++p) {
+        const glm::vec3 c = heatMapColour(displayDifference(&a.rgb[3 * p], &b.rgb[3 * p]));
+        for (int k = 0; k < 3; ++k) out.rgb[3 * p + k] = srgbDecode(c[k]);
+    }
+    return out;
+}
+
+}  // namespace whitted

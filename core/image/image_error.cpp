@@ -1,0 +1,51 @@
+#include "image/image_error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "image/image_compare.h"
+#include "image/srgb.h"
+
+namespace whitted {
+
+namespace {
+
+double psnr(double mse, double peak) {
+    if (mse == 0.0) return std::numeric_limits<double>::infinity();
+    return 10.0 * std::log10(peak * peak / mse);
+}
+
+}  // namespace
+
+ErrorStats measureError(const Image& image, const Image& reference) {
+    double sumLinear = 0.0, sumSrgb = 0.0;
+    float largest = 0.0f;
+    const int w = reference.width, h = reference.height;
+    for (int y = 0; y < h; ++y) {
+        // The image pixel covering this reference pixel, as a stretched view shows it.
+        const int iy = std::min(image.height - 1, int(std::int64_t(y) * image.height / h));
+        for (int x = 0; x < w; ++x) {
+            const int ix = std::min(image.width - 1, int(std::int64_t(x) * image.width / w));
+            const float* a = image.pixel(ix, iy);
+            const float* b = reference.pixel(x, y);
+            for (int c = 0; c < 3; ++c) {
+                const double d = double(a[c]) - double(b[c]);
+                sumLinear += std::isfinite(d) ? d * d : 1.0;
+                const double d8 = double(srgbEncode8(a[c])) - double(srgbEncode8(b[c]));
+                sumSrgb += d8 * d8;
+            }
+            largest = std::max(largest, displayDifference(a, b));
+        }
+    }
+    const double n = 3.0 * double(w) * double(h);
+    ErrorStats e;
+    e.rmseLinear = std::sqrt(sumLinear / n);
+    e.psnrLinear = psnr(sumLinear / n, 1.0);
+    e.rmseSrgb8 = std::sqrt(sumSrgb / n);
+    e.psnrSrgb8 = psnr(sumSrgb / n, 255.0);
+    e.largest = double(largest) * 255.0;
+    return e;
+}
+
+}  // namespace whitted

@@ -1,0 +1,85 @@
+// Image files through OpenImageIO (SPEC §5): 8-bit formats get the sRGB curve
+// and clamping, float formats stay linear. Writes are atomic.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "image/image.h"
+#include "scene/scene.h"
+
+namespace whitted {
+
+enum class ImageFormat { Png, Jpeg, Tiff, Exr, Hdr };
+
+struct ImageFormatInfo {
+    ImageFormat format;
+    std::string_view name;        // for menus and messages
+    std::string_view extensions;  // space-separated, lower case, with the dot
+    bool isFloat;                 // linear float pixels; otherwise 8-bit sRGB
+};
+
+// PNG and JPEG: 8-bit sRGB. TIFF and OpenEXR: 32-bit float. Radiance HDR: RGBE.
+const std::vector<ImageFormatInfo>& imageFormats();
+
+// The format for a file name's extension (case-insensitive), or nothing.
+std::optional<ImageFormatInfo> imageFormatFor(const std::filesystem::path& file);
+
+// What the file records about how it was made.
+struct ImageMetadata {
+    std::string software = "whitted";
+    std::string description;  // human-readable render settings and time
+    RenderSettings settings;
+    double renderSeconds = 0.0;
+};
+
+// Builds the description line from the settings and time.
+ImageMetadata makeImageMetadata(const RenderSettings& settings, double renderSeconds,
+                                std::string software);
+
+class ImageIoError : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
+
+// Writes the image in the format of the file's extension. On any failure throws
+// ImageIoError naming the file, and leaves no file (and no partial file) behind;
+// an existing file of that name is only replaced once the new one is complete.
+void writeImage(const Image& image, const std::filesystem::path& file,
+                const ImageMetadata& metadata);
+
+// Reads any image OpenImageIO knows as linear RGB floats (8-bit files are
+// decoded from sRGB). Throws ImageIoError.
+Image readImage(const std::filesystem::path& file);
+
+// A window of a larger picture (a farm's region): `image` holds the pixels of
+// `window` in a picture of fullWidth x fullHeight.
+struct ImagePart {
+    Image image;
+    PixelRect window{0, 0, 0, 0};
+    int fullWidth = 0, fullHeight = 0;
+    ImageMetadata metadata;  // read back: the settings and time the file records
+};
+
+// Writes the part as OpenEXR, its data window the part's place in the full
+// picture (the display window), so the file says where it belongs. As
+// writeImage(), atomically; any other extension is refused (ImageIoError).
+void writeImagePart(const ImagePart& part, const std::filesystem::path& file,
+                    const ImageMetadata& metadata);
+
+// readImage() with where the pixels lie: an OpenEXR's data and display windows;
+// for any other file the whole picture.
+ImagePart readImagePart(const std::filesystem::path& file);
+
+// The file of frame `frame` of an animation: out.0007.png for frame 7 of
+// out.png; frame 0 is a still, the file itself.
+std::filesystem::path frameFile(const std::filesystem::path& file, int frame);
+
+// The version of the OpenImageIO library in use, "2.4.7" (for About boxes).
+std::string openImageIOVersion();
+
+}  // namespace whitted

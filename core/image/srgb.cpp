@@ -1,0 +1,85 @@
+#include "image/srgb.h"
+
+#include <array>
+#include <cmath>
+#include <cstring>
+
+namespace whitted {
+
+float srgbEncode(float linear) {
+    if (!(linear > 0.0f)) return 0.0f;
+    if (linear >= 1.0f) return 1.0f;
+    if (linear <= 0.0031308f) return 12.92f * linear;
+    return 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+}
+
+namespace {
+
+std::uint8_t encodeByFormula(float linear) {
+    return static_cast<std::uint8_t>(std::lround(srgbEncode(linear) * 255.0f));
+}
+
+// thresholds[k]: the smallest float whose code is above k. Found by bisection
+// on the formula itself, so the tables give exactly the formula's codes; the
+// editor converts every frame with them, and std::pow per channel would cost
+// 30 ms for a 1280x720 frame.
+std::array<float, 255> makeThresholds() {
+    std::array<float, 255> t{};
+    for (int k = 0; k < 255; ++k) {
+        // Non-negative floats order like their bit patterns.
+        std::uint32_t lo = 0, hi = 0x3f800000;  // 0.0f, 1.0f: code(1) = 255 > k
+        while (lo < hi) {
+            const std::uint32_t mid = lo + (hi - lo) / 2;
+            float x;
+            std::memcpy(&x, &mid, sizeof x);
+            if (encodeByFormula(x) > k)
+                hi = mid;
+            else
+                lo = mid + 1;
+        }
+        std::memcpy(&t[k], &lo, sizeof(float));
+    }
+    return t;
+}
+
+const std::array<float, 255> kThresholds = makeThresholds();
+
+// The code of the smallest float in each bucket of 2^16 bit patterns (the top
+// 7 bits of the mantissa): a bucket spans 0.8 % of its values, at most two
+// codes near 1.0, so a lookup and a step or two give the exact code.
+constexpr int kBucketShift = 16;
+constexpr int kBuckets = (0x3f800000 >> kBucketShift) + 1;
+
+std::array<std::uint8_t, kBuckets> makeBucketCodes() {
+    std::array<std::uint8_t, kBuckets> codes{};
+    for (int b = 0; b < kBuckets; ++b) {
+        const std::uint32_t bits = static_cast<std::uint32_t>(b) << kBucketShift;
+        float x;
+        std::memcpy(&x, &bits, sizeof x);
+        int code = 0;
+        while (code < 255 && x >= kThresholds[code]) ++code;
+        codes[b] = static_cast<std::uint8_t>(code);
+    }
+    return codes;
+}
+
+const std::array<std::uint8_t, kBuckets> kBucketCodes = makeBucketCodes();
+
+}  // namespace
+
+std::uint8_t srgbEncode8(float linear) {
+    if (!(linear > 0.0f)) return 0;  // NaN too
+    if (linear >= 1.0f) return 255;
+    std::uint32_t bits;
+    std::memcpy(&bits, &linear, sizeof bits);
+    int code = kBucketCodes[bits >> kBucketShift];
+    while (code < 255 && linear >= kThresholds[code]) ++code;
+    return static_cast<std::uint8_t>(code);
+}
+
+float srgbDecode8(std::uint8_t code) {
+    const float c = code / 255.0f;
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+}  // namespace whitted

@@ -1,0 +1,250 @@
+// Scene text to Scene without a DOM of the whole file: the SAX handler below
+// builds a DOM of the small top-level values only; each element of the lists
+// (materials, lights, spheres) is recorded as its SAX events
+// (scene_json_element.h), read into its struct and dropped, so a file of a
+// million spheres never holds more than one sphere's events. Every refusal is
+// the one reading the whole DOM gave, in the same order: JSON syntax anywhere
+// first, then structure in Reader::read's order (scene_json_reader.h), then
+// validateScene() for the semantic rules.
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/scene_io.h"
+#include "scene/scene_json.h"
+#include "scene/scene_json_element.h"
+#include "scene/scene_json_reader.h"
+
+namespace whitted {
+namespace {
+
+using detail::Lists;
+using detail::Reader;
+using detail::Streamed;
+using nlohmann::json;
+
+enum class ListKind { None, Materials, Lights, Spheres };
+
+ListKind listNamed(std::string_view key) {
+    if (key == "materials") return ListKind::Materials;
+    if (key == "lights") return ListKind::Lights;
+    if (key == "spheres") return ListKind::Spheres;
+    return ListKind::None;
+}
+
+// Builds the DOM like json::parse, except for the lists' elements (see the
+// top of the file), and remembers where in the document it is, so that a
+// number too large for a double (1e999, the only way JSON can spell infinity)
+// is refused with its JSON path like every other bad value.
+class StreamingSax {
+  public:
+    StreamingSax(json& root, Lists& lists, const Reader& reader, const std::string& file)
+        : dom_(root, true), lists_(lists), reader_(reader), file_(file) {}
+
+    bool null() {
+        return scalar([](auto& d) { return d.null(); });
+    }
+    bool boolean(bool v) {
+        return scalar([v](auto& d) { return d.boolean(v); });
+    }
+    bool number_integer(json::number_integer_t v) {
+        return scalar([v](auto& d) { return d.number_integer(v); });
+    }
+    bool number_unsigned(json::number_unsigned_t v) {
+        return scalar([v](auto& d) { return d.number_unsigned(v); });
+    }
+    bool number_float(json::number_float_t v, const json::string_t& s) {
+        return scalar([&](auto& d) { return d.number_float(v, s); });
+    }
+    bool string(json::string_t& v) {
+        return scalar([&](auto& d) { return d.string(v); });
+    }
+    bool binary(json::binary_t& v) {
+        return scalar([&](auto& d) { return d.binary(v); });
+    }
+    bool start_object(std::size_t n) {
+        open(false);
+        return forward([n](auto& d) { return d.start_object(n); });
+    }
+    bool key(json::string_t& k) {
+        frames_.back().key = k;
+        // A repeated top-level key replaces the earlier value, as in a DOM.
+        if (frames_.size() == 1) reset(listNamed(k));
+        return forward([&](auto& d) { return d.key(k); });
+    }
+    bool end_object() {
+        frames_.pop_back();
+        return close([](auto& d) { return d.end_object(); });
+    }
+    bool start_array(std::size_t n) {
+        if (frames_.size() == 1 && !frames_.back().isArray) {
+            const ListKind kind = listNamed(frames_.back().key);
+            if (kind != ListKind::None) {
+                value();
+                frames_.push_back({true, {}, -1});
+                list_ = kind;
+                if (kind == ListKind::Spheres) reserveSpheres();
+                return dom_.start_array(n);  // stays empty: the elements go to lists_
+            }
+        }
+        open(true);
+        return forward([n](auto& d) { return d.start_array(n); });
+    }
+    bool end_array() {
+        frames_.pop_back();
+        if (list_ != ListKind::None && !inElement_ && frames_.size() == 1) {
+            list_ = ListKind::None;
+            return dom_.end_array();
+        }
+        return close([](auto& d) { return d.end_array(); });
+    }
+    bool parse_error(std::size_t, const std::string&, const nlohmann::json::exception& e) {
+        std::string what = e.what();  // "[json.exception.parse_error.101] parse error at ..."
+        const auto pos = what.find("] ");
+        if (pos != std::string::npos) what = what.substr(pos + 2);
+        if (e.id == 406) {  // number overflow: the value that failed is the next one here
+            if (!frames_.empty() && frames_.back().isArray) ++frames_.back().index;
+            throw SceneError(file_, path(), "must be a finite number (" + what + ")");
+        }
+        throw SceneError(file_, "", "invalid JSON: " + what);
+    }
+
+  private:
+    struct Frame {
+        bool isArray;
+        std::string key;
+        long index;
+    };
+
+    // A value directly inside a streamed list starts an element of its own.
+    bool startsElement() const {
+        return list_ != ListKind::None && !inElement_ && frames_.size() == 2;
+    }
+
+    template <typename F>
+    bool forward(F&& event) {
+        return inElement_ ? event(element_) : event(dom_);
+    }
+
+    template <typename F>
+    bool scalar(F&& event) {
+        const bool alone = startsElement();
+        value();
+        if (alone) inElement_ = true;
+        const bool ok = forward(event);
+        if (alone) finishElement();
+        return ok;
+    }
+
+    void open(bool isArray) {
+        const bool element = startsElement();
+        value();
+        frames_.push_back({isArray, {}, -1});
+        if (element) inElement_ = true;
+    }
+
+    template <typename F>
+    bool close(F&& event) {
+        const bool ok = forward(event);
+        if (inElement_ && frames_.size() == 2) finishElement();
+        return ok;
+    }
+
+    // Growing the vector of a million spheres by doubling cost a tenth of the
+    // loading time in moves and fresh pages. The estimate assumes the shortest
+    // line sceneToJson() writes for a sphere of short names; reserved pages
+    // that stay unused are never touched, so they cost address space only.
+    void reserveSpheres() {
+        constexpr std::uintmax_t kShortestSavedSphere = 100;
+        lists_.spheres.items.reserve(std::size_t(lists_.textBytes / kShortestSavedSphere));
+    }
+
+    void reset(ListKind kind) {
+        if (kind == ListKind::Materials) lists_.materials = {};
+        if (kind == ListKind::Lights) lists_.lights = {};
+        if (kind == ListKind::Spheres) lists_.spheres = {};
+    }
+
+    void finishElement() {
+        if (list_ == ListKind::Spheres && !lists_.spheres.error) {
+            Sphere sphere;
+            if (element_.readCanonicalSphere(sphere))
+                lists_.spheres.items.push_back(std::move(sphere));
+            else
+                readElement(lists_.spheres, &Reader::readSphere);
+        }
+        if (list_ == ListKind::Materials) readElement(lists_.materials, &Reader::readMaterial);
+        if (list_ == ListKind::Lights) readElement(lists_.lights, &Reader::readLight);
+        element_.clear();
+        inElement_ = false;
+    }
+
+    template <typename T>
+    void readElement(Streamed<T>& list, Reader::ReadOne<T> readOne) {
+        if (list.error) return;
+        const std::string path = frames_[0].key + "[" + std::to_string(frames_[1].index) + "]";
+        try {
+            T item;
+            (reader_.*readOne)(element_.toJson(), path, item);
+            list.items.push_back(std::move(item));
+        } catch (const SceneError& e) {
+            list.error = e;
+        }
+    }
+
+    void value() {
+        if (!frames_.empty() && frames_.back().isArray) ++frames_.back().index;
+    }
+
+    std::string path() const {
+        std::string p;
+        for (const Frame& f : frames_) {
+            if (f.isArray) {
+                p += "[" + std::to_string(f.index) + "]";
+            } else {
+                if (!p.empty()) p += ".";
+                p += f.key;
+            }
+        }
+        return p;
+    }
+
+    nlohmann::detail::json_sax_dom_parser<json> dom_;
+    detail::ElementEvents element_;  // an element of a streamed list, while inside one
+    bool inElement_ = false;
+    ListKind list_ = ListKind::None;
+    Lists& lists_;
+    const Reader& reader_;
+    const std::string& file_;
+    std::vector<Frame> frames_;
+};
+
+template <typename... Input>
+Scene parse(const std::string& sourceName, std::uintmax_t textBytes, Input&&... input) {
+    const Reader reader(sourceName);
+    json root;
+    Lists lists;
+    lists.textBytes = textBytes;
+    StreamingSax sax(root, lists, reader, sourceName);
+    json::sax_parse(std::forward<Input>(input)..., &sax);
+    Scene scene = reader.read(root, lists);
+    if (auto problem = validateScene(scene))
+        throw SceneError(sourceName, problem->jsonPath, problem->reason);
+    return scene;
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& text, const std::string& sourceName) {
+    return parse(sourceName, text.size(), text);
+}
+
+Scene detail::parseScene(ChunkedText& text, const std::string& sourceName) {
+    return parse(sourceName, text.size(), ChunkIterator(text), ChunkIterator());
+}
+
+}  // namespace whitted

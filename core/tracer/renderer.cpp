@@ -1,0 +1,321 @@
+#include "tracer/renderer.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <limits>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <thread>
+
+#include "scene/scene_io.h"
+#include "tracer/kernel_dispatch.h"
+
+namespace whitted {
+namespace {
+
+struct Tile {
+    int x, y, w, h;
+};
+
+struct Pass {
+    PassKind kind;
+    int firstSample, lastSample;  // samples [first, last) of every pixel
+    double work;                  // relative cost, for the progress fraction
+};
+
+// Centre-out order: the middle of the image, where people look, arrives first.
+std::vector<Tile> spiralTiles(int width, int height, int size) {
+    std::vector<Tile> tiles;
+    for (int y = 0; y < height; y += size)
+        for (int x = 0; x < width; x += size)
+            tiles.push_back({x, y, std::min(size, width - x), std::min(size, height - y)});
+    auto distance = [&](const Tile& t) {
+        const double dx = t.x + t.w * 0.5 - width * 0.5, dy = t.y + t.h * 0.5 - height * 0.5;
+        return dx * dx + dy * dy;
+    };
+    std::stable_sort(tiles.begin(), tiles.end(),
+                     [&](const Tile& a, const Tile& b) { return distance(a) < distance(b); });
+    return tiles;
+}
+
+// The preview's block edge: a divisor of the tile edge, so that tiles hold
+// whole blocks and no block is traced twice.
+int previewBlockOf(const RenderOptions& o) {
+    const int tile = std::max(1, o.tileSize);
+    int block = std::clamp(o.previewBlock, 1, tile);
+    while (tile % block != 0) --block;
+    return block;
+}
+
+// The tiles of the region, clipped to it: the same tiles as the whole image's
+// where they lie inside it.
+std::vector<Tile> regionTiles(std::vector<Tile> tiles, const PixelRect& region) {
+    std::vector<Tile> clipped;
+    for (const Tile& t : tiles) {
+        const int x0 = std::max(t.x, region.x), x1 = std::min(t.x + t.w, region.x + region.width);
+        const int y0 = std::max(t.y, region.y), y1 = std::min(t.y + t.h, region.y + region.height);
+        if (x0 < x1 && y0 < y1) clipped.push_back({x0, y0, x1 - x0, y1 - y0});
+    }
+    return clipped;
+}
+
+double pixelsRendered(const RenderSettings& r, const RenderOptions& o) {
+    return o.region ? double(o.region->width) * o.region->height : double(r.width) * r.height;
+}
+
+std::vector<Pass> planPasses(const RenderSettings& r, const RenderOptions& o) {
+    const double pixels = pixelsRendered(r, o);
+    std::vector<Pass> passes;
+    const int spp = r.samplesPerPixel;
+    if (!o.progressive || o.region) {
+        passes.push_back({PassKind::Samples, 0, spp, pixels * spp});
+        return passes;
+    }
+    const int block = previewBlockOf(o);
+    if (block > 1 && (r.width > block || r.height > block))
+        passes.push_back({PassKind::Preview, 0, 0, pixels / (double(block) * block)});
+    for (int done = 0; done < spp;) {
+        const int next = done == 0 ? 1 : std::min(spp, done * 2);
+        passes.push_back({PassKind::Samples, done, next, pixels * (next - done)});
+        done = next;
+    }
+    return passes;
+}
+
+template <typename T>
+class TileRenderer {
+  public:
+    TileRenderer(const Scene& scene, const RenderOptions& options, const TileCallback& onTile,
+                 const StopPredicate& shouldStop)
+        : s_(prepareScene<T>(scene, options.bvhCache)),
+          options_(options),
+          onTile_(onTile),
+          shouldStop_(shouldStop),
+          settings_(scene.render),
+          block_(previewBlockOf(options)) {}
+
+    RenderResult run() {
+        const std::vector<Pass> passes = planPasses(settings_, options_);
+        // Sums survive between passes only when a pixel gets its samples in
+        // several passes. 24 bytes a pixel (6 GB at 16384x16384): taken from
+        // zero pages, so nothing is written, and no time spent, before the
+        // first tile; a page costs memory only once a tile of it is rendered.
+        if (passes.back().firstSample > 0) sums_ = Sums(size_t(s_.width) * s_.height);
+        for (const Pass& p : passes) totalWork_ += p.work;
+        std::vector<Tile> tiles = spiralTiles(s_.width, s_.height, std::max(1, options_.tileSize));
+        if (options_.region) tiles = regionTiles(std::move(tiles), *options_.region);
+        const int threads =
+            std::max(1, std::min<int>(resolveThreadCount(options_.threads), tiles.size()));
+
+        RenderResult result;
+        result.threads = threads;
+        for (size_t p = 0; p < passes.size() && !stopped_; ++p) {
+            // Each image only when its first pass starts: the full-size one
+            // (11 MB at 1280x720) once the preview is out.
+            if (passes[p].kind == PassKind::Preview)
+                preview_ =
+                    Image((s_.width + block_ - 1) / block_, (s_.height + block_ - 1) / block_);
+            else if (image_.rgb.empty())
+                image_ = Image(s_.width, s_.height);
+            runPass(passes[p], int(p), int(passes.size()), tiles, threads);
+            if (!stopped_ && passes[p].kind == PassKind::Samples)
+                result.samples = passes[p].lastSample;
+        }
+        if (image_.rgb.empty()) image_ = Image(s_.width, s_.height);  // stopped in the preview
+        result.completed = !stopped_;
+        result.rays = rays_;
+        result.image = std::move(image_);
+        return result;
+    }
+
+  private:
+    bool stopRequested() {
+        if (stopped_.load(std::memory_order_relaxed)) return true;
+        if (shouldStop_ && shouldStop_()) stopped_ = true;
+        return stopped_;
+    }
+
+    void runPass(const Pass& pass, int index, int count, const std::vector<Tile>& tiles,
+                 int threads) {
+        std::atomic<size_t> next{0};
+        const double workPerPixel = pass.work / pixelsRendered(settings_, options_);
+        auto worker = [&] {
+            RayCounts counts;
+            Row row;  // the worker's own
+            for (;;) {
+                if (stopRequested()) break;
+                const size_t t = next.fetch_add(1);
+                if (t >= tiles.size()) break;
+                const Tile& tile = tiles[t];
+                if (!renderTile(pass, tile, row, counts)) break;
+                const double done = workDone_.fetch_add(workPerPixel * tile.w * tile.h) +
+                                    workPerPixel * tile.w * tile.h;
+                if (onTile_) {
+                    RenderProgress progress{index,
+                                            count,
+                                            pass.kind,
+                                            pass.kind == PassKind::Preview ? 0 : pass.lastSample,
+                                            std::min(1.0, done / totalWork_),
+                                            int(tiles.size())};
+                    const bool preview = pass.kind == PassKind::Preview;
+                    onTile_(TileUpdate{preview ? preview_ : image_, tile.x, tile.y, tile.w, tile.h,
+                                       progress, preview ? block_ : 1});
+                }
+            }
+            std::lock_guard lock(raysMutex_);
+            rays_ += counts;
+        };
+        std::vector<std::thread> helpers;
+        for (int i = 1; i < threads; ++i) helpers.emplace_back(worker);
+        worker();
+        for (auto& h : helpers) h.join();
+    }
+
+    // A worker's buffers for one row of a tile, kept from tile to tile.
+    struct Row {
+        std::vector<Vec<T>> radiance;
+        std::vector<glm::dvec3> sums;
+    };
+
+    // The image is float whatever the precision: radiance beyond the largest
+    // float (a light of intensity 1e300 in double, or sums that overflowed to
+    // infinity) is stored as the largest float, never as infinity.
+    template <typename V>
+    static void storePixel(float* out, const V& radiance) {
+        constexpr double kLargest = std::numeric_limits<float>::max();
+        for (int c = 0; c < 3; ++c) out[c] = float(std::min(double(radiance[c]), kLargest));
+    }
+
+    // A sum of n samples over n. Dividing by a power of two and multiplying by
+    // its inverse round the same exact quotient, so those passes (every one of
+    // a progressive render but perhaps the last) multiply: a division per
+    // channel was the largest cost of the tile loop after tracing.
+    static void storeMean(float* out, const glm::dvec3& sum, int n) {
+        if ((n & (n - 1)) == 0)
+            storePixel(out, sum * (1.0 / double(n)));
+        else
+            storePixel(out, sum / double(n));
+    }
+
+    // A one-sample pass stores the samples as they come: what the sums would
+    // hold, 0.0 + sample (which turns a -0.0 into +0.0), over 1.
+    void storeSamples(const Vec<T>* radiance, int x, int y, int w) {
+        float* out = image_.pixel(x, y);
+        for (int i = 0; i < w; ++i) storePixel(out + 3 * i, 0.0 + glm::dvec3(radiance[i]));
+    }
+
+    // False when stopped part-way: the tile is then incomplete and not reported.
+    // Out of line: the profiles of docs/performance.md collect from it.
+    __attribute__((noinline)) bool renderTile(const Pass& pass, const Tile& tile, Row& row,
+                                              RayCounts& counts) {
+        if (pass.kind == PassKind::Preview) return renderPreviewTile(tile, counts);
+        row.radiance.resize(tile.w);
+        row.sums.resize(tile.w);
+        const bool oneSample = pass.firstSample == 0 && pass.lastSample == 1 && sums_.empty();
+        for (int y = tile.y; y < tile.y + tile.h; ++y) {
+            if (stopRequested()) return false;
+            if (oneSample) {
+                traceCameraRow(s_, y, tile.x, tile.w, 0, row.radiance.data(), counts);
+                storeSamples(row.radiance.data(), tile.x, y, tile.w);
+            } else {
+                renderRow(pass, tile, y, row, counts);
+            }
+        }
+        return true;
+    }
+
+    void renderRow(const Pass& pass, const Tile& tile, int y, Row& row, RayCounts& counts) {
+        std::vector<glm::dvec3>& sums = row.sums;
+        const Vec<T>* radiance = row.radiance.data();
+        const size_t at = size_t(y) * s_.width + tile.x;
+        if (pass.firstSample > 0)
+            std::copy_n(sums_.begin() + at, tile.w, sums.begin());
+        else
+            std::fill(sums.begin(), sums.end(), glm::dvec3(0.0));
+        // Sample by sample across the row: each pixel still sums its samples
+        // in index order, as a one-shot render does.
+        for (int n = pass.firstSample; n < pass.lastSample; ++n) {
+            traceCameraRow(s_, y, tile.x, tile.w, n, row.radiance.data(), counts);
+            for (int i = 0; i < tile.w; ++i) sums[i] += glm::dvec3(radiance[i]);
+        }
+        if (!sums_.empty()) std::copy_n(sums.begin(), tile.w, sums_.begin() + at);
+        for (int i = 0; i < tile.w; ++i)
+            storeMean(image_.pixel(tile.x + i, y), sums[i], pass.lastSample);
+    }
+
+    // One camera ray through the middle of each block, stored as the
+    // preview's pixel of that block.
+    bool renderPreviewTile(const Tile& tile, RayCounts& counts) {
+        for (int by = tile.y; by < tile.y + tile.h; by += block_) {
+            if (stopRequested()) return false;
+            const int bh = std::min(block_, tile.y + tile.h - by);
+            for (int bx = tile.x; bx < tile.x + tile.w; bx += block_) {
+                const int bw = std::min(block_, tile.x + tile.w - bx);
+                const Vec<T> c =
+                    tracePixelSample(s_, bx + bw / 2, by + bh / 2, T(0.5), T(0.5), counts);
+                storePixel(preview_.pixel(bx / block_, by / block_), c);
+            }
+        }
+        return true;
+    }
+
+    const PreparedScene<T> s_;
+    const RenderOptions& options_;
+    const TileCallback& onTile_;
+    const StopPredicate& shouldStop_;
+    const RenderSettings settings_;
+    const int block_;  // the preview's block edge
+    Image preview_;    // one pixel per block
+    Image image_;
+    using Sums = std::vector<glm::dvec3, LargeBufferAllocator<glm::dvec3>>;
+    Sums sums_;
+    std::atomic<bool> stopped_{false};
+    std::atomic<double> workDone_{0.0};
+    double totalWork_ = 0.0;
+    std::mutex raysMutex_;
+    RayCounts rays_;
+};
+
+}  // namespace
+
+PixelRect tileBlocks(const TileUpdate& tile) {
+    const int b = tile.block;
+    const int x = tile.x / b, y = tile.y / b;
+    return {x, y, (tile.x + tile.width + b - 1) / b - x, (tile.y + tile.height + b - 1) / b - y};
+}
+
+void copyTile(const TileUpdate& tile, Image& into) {
+    for (int y = tile.y; y < tile.y + tile.height; ++y) {
+        float* out = into.pixel(tile.x, y);
+        if (tile.block == 1) {
+            std::copy_n(tile.image.pixel(tile.x, y), 3 * tile.width, out);
+            continue;
+        }
+        for (int x = tile.x; x < tile.x + tile.width; ++x, out += 3)
+            std::copy_n(tile.image.pixel(x / tile.block, y / tile.block), 3, out);
+    }
+}
+
+RenderResult render(const Scene& scene, const RenderOptions& options, const TileCallback& onTile,
+                    const StopPredicate& shouldStop) {
+    if (auto problem = options.sceneValidated ? std::nullopt : validateScene(scene))
+        throw std::invalid_argument(problem->jsonPath + ": " + problem->reason);
+    if (const auto& g = options.region;
+        g && !insidePicture(*g, scene.render.width, scene.render.height))
+        throw std::invalid_argument("the region " + cornersText(*g) + " is not a part of the " +
+                                    std::to_string(scene.render.width) + "x" +
+                                    std::to_string(scene.render.height) + " image");
+    // Here, not in a worker: a WHITTED_KERNEL this CPU cannot run throws to the caller.
+    activeKernel();
+    const auto start = std::chrono::steady_clock::now();
+    RenderResult result = scene.render.precision == Precision::Double
+                              ? TileRenderer<double>(scene, options, onTile, shouldStop).run()
+                              : TileRenderer<float>(scene, options, onTile, shouldStop).run();
+    result.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace whitted

@@ -1,0 +1,106 @@
+// The progressive tile renderer: the image is cut into tiles that a pool of
+// threads renders pass by pass, centre-out within each pass:
+//   1. a coarse preview, one camera ray per block of previewBlock^2 pixels;
+//   2. full resolution at one sample per pixel;
+//   3. more samples, doubling each pass, up to samples_per_pixel.
+// Every sample is a pure function of (pixel, sample index), and each pixel's
+// samples are summed in index order, so the final image is bit-identical to a
+// one-shot render whatever the thread count, tile size, tile order or pass split.
+//
+// Meant to be driven from the caller's own thread (the editor's worker, the
+// CLI's main thread): render() blocks, uses the calling thread as one of its
+// workers, and returns within one tile row of work once shouldStop says so.
+#pragma once
+
+#include <functional>
+#include <optional>
+
+#include "base/parallel_for.h"  // resolveThreadCount, for RenderOptions::threads
+#include "image/image.h"
+#include "scene/scene.h"
+#include "tracer/tracer.h"
+
+namespace whitted {
+
+struct RenderOptions {
+    int threads = 0;          // worker threads including the caller; 0: all cores
+    int tileSize = 32;        // tile edge in pixels
+    bool progressive = true;  // false: a single pass of all samples, no preview
+    // Pixels per preview block edge; 1 disables the preview. A block never
+    // straddles two tiles: render() uses the largest divisor of tileSize not
+    // above it.
+    int previewBlock = 8;
+    // The caller has checked the scene with validateScene() or validateEdit()
+    // (the editor's document does, on every edit), so render() need not check
+    // it again: at 100,000 spheres that second check was a tenth of an edit.
+    bool sceneValidated = false;
+    // Trees kept from the previous render, refit when only spheres moved
+    // (bvh.h). The editor's render worker keeps one; one render at a time.
+    BvhCache* bvhCache = nullptr;
+    // Only these pixels, in one pass of all their samples (no preview): each
+    // pixel's samples depend on the pixel alone, so the region equals that
+    // part of the whole render, bit for bit. The image keeps the render's
+    // full size, zero outside the region; its pages cost memory only where
+    // rendered. Unset: the whole image.
+    std::optional<PixelRect> region = std::nullopt;
+};
+
+enum class PassKind { Preview, Samples };
+
+struct RenderProgress {
+    int pass = 0;       // 0-based index of the current pass
+    int passCount = 0;  // passes in this render
+    PassKind kind = PassKind::Samples;
+    int samples = 0;        // samples per pixel in the tile once this pass is done (0: preview)
+    double fraction = 0.0;  // share of the whole render's work finished, in [0, 1]
+    int tilesInPass = 0;    // tiles the pass reports, each exactly once
+};
+
+// A finished tile: the rectangle [x, x+width) x [y, y+height) of the render.
+// `image` is the whole picture being refined, one pixel of it to each block of
+// `block` x `block` render pixels: block 1 in a samples pass; in the preview,
+// the preview block, so that the preview neither writes nor hands over a
+// full-size image (at 1280x720 that traffic was most of its time). Only the
+// tile's blocks changed (tileBlocks()), and they stay untouched until the
+// callback returns, so the callback may copy them.
+struct TileUpdate {
+    const Image& image;
+    int x, y, width, height;
+    RenderProgress progress;
+    int block = 1;
+};
+
+// The tile's pixels of TileUpdate::image: its rectangle divided by the block,
+// rounded outward (the last block of a row or column may be partly outside the
+// render).
+PixelRect tileBlocks(const TileUpdate& tile);
+
+// Writes the tile into a full-size image of the render, each block's pixel
+// repeated over the block.
+void copyTile(const TileUpdate& tile, Image& into);
+
+// Called from the worker threads, possibly several at once: keep it short and
+// thread-safe (copy the tile, post a message).
+using TileCallback = std::function<void(const TileUpdate&)>;
+// Asked before every tile row by every worker; must be thread-safe and cheap.
+using StopPredicate = std::function<bool()>;
+
+struct RenderResult {
+    Image image;
+    RayCounts rays;
+    double seconds = 0.0;  // wall time of render(), preparation included
+    int threads = 1;       // worker threads used
+    // Samples per pixel in every pixel of `image`. 0: stopped before one
+    // full-size pass was complete; `image` then holds the full-size tiles
+    // finished, and zero elsewhere (the preview is only in the tile reports).
+    int samples = 0;
+    bool completed = false;  // false when stopped early
+};
+
+// Renders the scene with its render settings. Throws std::invalid_argument for a
+// scene that validateScene() refuses or a region not inside the image, std::runtime_error when
+// WHITTED_KERNEL names a tracer kernel that is unknown or that this CPU cannot run.
+RenderResult render(const Scene& scene, const RenderOptions& options = {},
+                    const TileCallback& onTile = {}, const StopPredicate& shouldStop = {});
+
+}  // namespace whitted

@@ -1,0 +1,226 @@
+#include "tracer/tracer.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "base/parallel_for.h"
+#include "base/uninitialised_allocator.h"
+#include "scene/scene_io.h"
+#include "tracer/kernel_dispatch.h"
+#include "tracer/renderer.h"
+#include "tracer/sampling.h"
+#include "tracer/tracer_kernel.h"
+
+namespace whitted {
+
+namespace {
+
+// Colours, intensities and specular weights as T, at most sqrt(largest T) / 16
+// (1.1e18 in float, 8e152 in double): a product of two of them, and the sums of
+// a few such products, stay finite, so no infinity can meet a zero and make a
+// NaN (a light of intensity 1e300 on a material whose red is 0).
+template <typename T>
+T boundedInput(double v) {
+    static const double kLargest = std::sqrt(double(std::numeric_limits<T>::max())) / 16.0;
+    return T(std::min(v, kLargest));
+}
+
+template <typename T>
+Vec<T> boundedInput(const Vec3& v) {
+    return {boundedInput<T>(v.x), boundedInput<T>(v.y), boundedInput<T>(v.z)};
+}
+
+std::atomic<Acceleration> forcedAcceleration{Acceleration::automatic};
+
+Acceleration environmentAcceleration() {
+    static const Acceleration choice = [] {
+        const char* v = std::getenv("WHITTED_ACCEL");
+        const std::string name = v ? v : "";
+        if (name.empty() || name == "auto") return Acceleration::automatic;
+        if (name == "brute") return Acceleration::bruteForce;
+        if (name == "bvh") return Acceleration::bvh;
+        throw std::runtime_error("WHITTED_ACCEL: unknown value '" + name +
+                                 "' (auto, brute or bvh)");
+    }();
+    return choice;
+}
+
+}  // namespace
+
+void useAcceleration(Acceleration choice) {
+    forcedAcceleration = choice;
+}
+
+bool bvhChosen(int spheres) {
+    Acceleration choice = forcedAcceleration;
+    if (choice == Acceleration::automatic) choice = environmentAcceleration();
+    if (choice == Acceleration::automatic) return spheres > kBvhCrossover;
+    return choice == Acceleration::bvh;
+}
+
+template <typename T>
+PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache) {
+    PreparedScene<T> s;
+    const RenderSettings& r = scene.render;
+    // The frame is centred on the camera: what the picture needs is where things
+    // are relative to the eye, which T then holds to its full precision however
+    // far the scene lies from the world origin.
+    s.frameOrigin = scene.camera.position;
+    s.camera = makeCameraBasis<T>(scene.camera, r.width, r.height);
+    s.camera.origin = Vec<T>(T(0));
+    s.width = r.width;
+    s.height = r.height;
+    s.maxDepth = r.maxDepth;
+    s.samplesPerPixel = r.samplesPerPixel;
+    s.background = boundedInput<T>(scene.background);
+    s.ambient = boundedInput<T>(scene.ambient);
+    for (const Material& m : scene.materials) {
+        PreparedMaterial<T> pm;
+        pm.diffuse = boundedInput<T>(m.diffuse);
+        if (m.checker) {
+            pm.checkerColor = boundedInput<T>(m.checker->color);
+            pm.checkerInvSize = T(1.0 / m.checker->size);
+            const volatile T size = T(m.checker->size);  // volatile: see SphereSet::split
+            pm.checkerSize = size;
+            pm.checkerSizeLo = T(m.checker->size - double(pm.checkerSize));
+            // floor(world / size) == floor(frameOrigin / size + prepared / size):
+            // the frame origin's whole cells are kept apart, as a parity, so that
+            // T adds only a fraction in [0, 1) to the cell coordinate.
+            for (int i = 0; i < 3; ++i) {
+                const double q = s.frameOrigin[i] / m.checker->size;
+                const double whole = std::floor(q);
+                const double fraction = q - whole;
+                const volatile T hi = T(fraction);  // volatile: see SphereSet::split
+                pm.checkerFrameFraction[i] = hi;
+                pm.checkerFrameFractionLo[i] = T(fraction - double(hi));
+                pm.checkerFrameParity[i] = T(whole - 2.0 * std::floor(whole * 0.5));
+            }
+        }
+        pm.specular = boundedInput<T>(m.specular);
+        pm.shininess = T(m.shininess);
+        pm.reflectivity = T(m.reflectivity);
+        pm.transparency = T(m.transparency);
+        pm.ior = T(m.ior);
+        if (m.shininess == std::floor(m.shininess) && m.shininess <= 1024)
+            pm.integerShininess = static_cast<int>(m.shininess);
+        const bool diffuseLit =
+            m.diffuse != Vec3(0.0) || (m.checker && m.checker->color != Vec3(0.0));
+        pm.lit = diffuseLit || m.specular > 0;
+        s.materials.push_back(pm);
+    }
+    for (const Light& l : scene.lights) {
+        const Vec3 c = l.color * l.intensity;
+        if (c == Vec3(0.0)) continue;  // a dark light adds nothing: no shadow rays for it
+        s.lights.push_back({Vec<T>(l.position - s.frameOrigin), boundedInput<T>(c)});
+    }
+    const int count = static_cast<int>(scene.spheres.size());
+    const bool useBvh = bvhChosen(count);
+    // Not zeroed (32 MB at a million spheres, on one thread): every element
+    // is written below.
+    std::vector<Vec3, UninitialisedAllocator<Vec3>> centres(useBvh ? count : 0);
+    std::vector<double, UninitialisedAllocator<double>> radii(useBvh ? count : 0);
+    s.spheres.resize(count);
+    s.material.resize(count);
+    s.transparency.resize(count);
+    const auto materialIndex = materialIndices(scene);
+    std::atomic<int> unknownMaterial{-1};  // a sphere whose material is missing
+    // Each sphere into its own place, on all cores: a million spheres took a
+    // second on one (docs/performance.md). Fewer than kSphereChunk stay on
+    // this thread.
+    forEachChunk(count, resolveThreadCount(0), [&](int, int begin, int end) {
+        // Neighbouring spheres mostly share a material: the name is hashed
+        // only when it differs from the one before.
+        const std::string* lastName = nullptr;
+        int lastMaterial = -1;
+        for (int k = begin; k < end; ++k) {
+            const Sphere& sp = scene.spheres[k];
+            Vec3 c, cLo;  // the centre in the frame, exactly: c + cLo
+            for (int i = 0; i < 3; ++i)
+                exact::twoSum(sp.center[i], -s.frameOrigin[i], c[i], cLo[i]);
+            s.spheres.set(k, c, cLo, sp.radius, s.camera.origin);
+            if (!lastName || sp.material != *lastName) {
+                const auto found = materialIndex.find(sp.material);
+                if (found == materialIndex.end()) unknownMaterial = k;
+                lastName = &sp.material;
+                lastMaterial = found == materialIndex.end() ? 0 : found->second;
+            }
+            s.material[k] = lastMaterial;
+            s.transparency[k] = s.materials.empty() ? T(1) : s.materials[lastMaterial].transparency;
+            if (useBvh) {
+                centres[k] = c;  // cLo is far inside the traversal's margin
+                radii[k] = sp.radius;
+            }
+        }
+    });
+    // Validated scenes never get here with one. Thrown on this thread, not a
+    // worker's, in validateScene()'s words.
+    if (unknownMaterial >= 0) {
+        const std::optional<SceneProblem> problem = validateScene(scene);
+        throw std::invalid_argument(problem ? problem->jsonPath + ": " + problem->reason
+                                            : "a sphere's material is missing");
+    }
+    if (useBvh) {
+        s.bvh = sphereBvhFor<T>(centres, radii, s.spheres, bvhCache);
+        s.useBvh = true;
+    }
+    return s;
+}
+
+// Every entry point runs in the kernel chosen at start (kernel_dispatch.h).
+template <typename T>
+std::optional<Hit<T>> closestHit(const PreparedScene<T>& s, const Ray<T>& ray, T tMax) {
+    return activeKernel().entryPoints<T>().closestHit(s, ray, tMax);
+}
+
+template <typename T>
+Vec<T> traceRay(const PreparedScene<T>& s, const Ray<T>& ray, int depth, RayCounts& counts) {
+    return activeKernel().entryPoints<T>().traceRay(s, ray, depth, counts);
+}
+
+template <typename T>
+void traceCameraSamples(const PreparedScene<T>& s, const CameraSample<T>* samples, int count,
+                        Vec<T>* radiance, RayCounts& counts) {
+    activeKernel().entryPoints<T>().traceCameraSamples(s, samples, count, radiance, counts);
+}
+
+template <typename T>
+void traceCameraRow(const PreparedScene<T>& s, int y, int x0, int count, int n, Vec<T>* radiance,
+                    RayCounts& counts) {
+    activeKernel().entryPoints<T>().traceCameraRow(s, y, x0, count, n, radiance, counts);
+}
+
+template <typename T>
+Vec<T> tracePixelSample(const PreparedScene<T>& s, int i, int j, T u, T v, RayCounts& counts) {
+    const CameraSample<T> sample{i, j, u, v};
+    Vec<T> radiance;
+    traceCameraSamples(s, &sample, 1, &radiance, counts);
+    return radiance;
+}
+
+template <typename T>
+CameraSample<T> pixelSample(const PreparedScene<T>& s, int i, int j, int n) {
+    if (s.samplesPerPixel == 1) return {i, j, T(0.5), T(0.5)};
+    const SubPixel sp = subPixelSample(n, s.samplesPerPixel, pixelSeed(i, j));
+    return {i, j, T(sp.u), T(sp.v)};
+}
+
+#define WHITTED_INSTANTIATE(T)                                                                \
+    template PreparedScene<T> prepareScene<T>(const Scene&, BvhCache*);                       \
+    template std::optional<Hit<T>> closestHit<T>(const PreparedScene<T>&, const Ray<T>&, T);  \
+    template Vec<T> traceRay<T>(const PreparedScene<T>&, const Ray<T>&, int, RayCounts&);     \
+    template void traceCameraRow<T>(const PreparedScene<T>&, int, int, int, int, Vec<T>*,     \
+                                    RayCounts&);                                              \
+    template void traceCameraSamples<T>(const PreparedScene<T>&, const CameraSample<T>*, int, \
+                                        Vec<T>*, RayCounts&);                                 \
+    template Vec<T> tracePixelSample<T>(const PreparedScene<T>&, int, int, T, T, RayCounts&); \
+    template CameraSample<T> pixelSample<T>(const PreparedScene<T>&, int, int, int);
+WHITTED_INSTANTIATE(float)
+WHITTED_INSTANTIATE(double)
+#undef WHITTED_INSTANTIATE
+
+}  // namespace whitted

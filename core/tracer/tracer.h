@@ -1,0 +1,175 @@
+// The Whitted tracer (SPEC §3), one template for float and double.
+//
+// The tracing functions below run in the kernel built for the widest
+// instruction set the CPU has (kernel_dispatch.h, tracer_kernel.cpp).
+//
+// A render first compiles the Scene into a PreparedScene<T>: numbers in T,
+// material names resolved to indices, spheres laid out for the hit loop, and
+// flags saying which kinds of secondary rays the scene can use at all.
+//
+// Self-intersection policy (the only one; no epsilons anywhere): a secondary ray
+// remembers the sphere it leaves. A sphere is convex, so a ray leaving it outwards
+// can never hit it again and skips it; a ray going into it can only hit its far
+// side and takes the far root. This is exact and independent of scale.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "scene/scene.h"
+#include "tracer/bvh.h"
+#include "tracer/camera.h"
+#include "tracer/sphere_intersect.h"
+#include "tracer/sphere_set.h"
+
+namespace whitted {
+
+// Rays traced, by kind. Shadow rays count once per (hit, light) actually tested.
+struct RayCounts {
+    std::uint64_t camera = 0;
+    std::uint64_t shadow = 0;
+    std::uint64_t reflection = 0;
+    std::uint64_t refraction = 0;
+    std::uint64_t total() const { return camera + shadow + reflection + refraction; }
+    RayCounts& operator+=(const RayCounts& o) {
+        camera += o.camera;
+        shadow += o.shadow;
+        reflection += o.reflection;
+        refraction += o.refraction;
+        return *this;
+    }
+};
+
+template <typename T>
+struct Ray {
+    Vec<T> origin;
+    Vec<T> dir;               // unit length
+    int originSphere = -1;    // the sphere the ray leaves, -1 for camera rays
+    bool intoOrigin = false;  // the ray goes into originSphere (refraction, inner reflection)
+    bool fromCamera = false;  // origin is the camera position: reuse its cached offsets
+};
+
+template <typename T>
+struct PreparedMaterial {
+    Vec<T> diffuse;
+    Vec<T> checkerColor;
+    T checkerInvSize = 0;  // 1 / checker size; 0 means no checker
+    // The size itself as hi + lo: the steep-axis cell divides by it, since
+    // multiplying by an inexact 1/size (1/50 in a seed scaled by 100) puts the
+    // floor's top, exactly one cell down, on the wrong side of the boundary.
+    T checkerSize = 0, checkerSizeLo = 0;
+    // The frame origin in checker cells is whole + fraction per axis: the
+    // fraction in [0, 1) as a two-term value (the steep-axis cell needs it to
+    // about eps^2), and whether whole is odd (0 or 1).
+    Vec<T> checkerFrameFraction{T(0)}, checkerFrameFractionLo{T(0)}, checkerFrameParity{T(0)};
+    T specular = 0, shininess = 0, reflectivity = 0, transparency = 0, ior = 1;
+    int integerShininess = -1;  // shininess when it is a small whole number, else -1
+    bool lit = false;           // diffuse or specular can be non-zero: shadow rays are useful
+};
+
+template <typename T>
+struct PreparedLight {
+    Vec<T> position;
+    Vec<T> color;  // colour * intensity
+};
+
+// Positions in a prepared scene are relative to frameOrigin (world = frameOrigin +
+// prepared), so that T never has to hold a large coordinate the picture does not need.
+template <typename T>
+struct PreparedScene {
+    Vec3 frameOrigin{0.0};  // in scene (world) coordinates, double
+    CameraBasis<T> camera;
+    SphereSet<T> spheres;         // geometry, in scene order
+    std::vector<int> material;    // per sphere: index into materials
+    std::vector<T> transparency;  // per sphere, from its material: the shadow-ray factor
+    // Which spheres a ray is tested against: all of them, or those the tree
+    // finds near it (useBvh). Either way the same image, bit for bit.
+    std::shared_ptr<const SphereBvh<T>> bvh;  // shared with a BvhCache, when one is kept
+    bool useBvh = false;
+    std::vector<PreparedMaterial<T>> materials;
+    std::vector<PreparedLight<T>> lights;
+    Vec<T> background, ambient;
+    int maxDepth = 0;
+    int samplesPerPixel = 1;
+    int width = 1, height = 1;
+};
+
+// How prepareScene() lets rays find their spheres. Automatic: a BVH above
+// kBvhCrossover spheres, every sphere tested below it (the seed's four).
+enum class Acceleration { automatic, bruteForce, bvh };
+inline constexpr int kBvhCrossover = 16;
+
+// From now on prepare scenes with this choice (tests, benchmarks); automatic
+// goes back to what the environment variable WHITTED_ACCEL says (auto, brute
+// or bvh; read once), or the automatic choice when it is unset.
+void useAcceleration(Acceleration choice);
+// The choice prepareScene() makes for a scene of `spheres` spheres. Throws
+// std::runtime_error when WHITTED_ACCEL holds anything else.
+bool bvhChosen(int spheres);
+
+// The scene must be valid (validateScene); width, height, depth and samples
+// come from scene.render. Builds the sphere BVH when bvhChosen() says so.
+template <typename T>
+PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache = nullptr);
+
+template <typename T>
+struct Hit {
+    T t;         // distance along the ray, > 0
+    int sphere;  // index into the scene's spheres
+};
+
+// The nearest hit with t in (0, tMax), honouring the self-intersection policy.
+template <typename T>
+std::optional<Hit<T>> closestHit(const PreparedScene<T>& s, const Ray<T>& ray,
+                                 T tMax = std::numeric_limits<T>::infinity());
+
+// Radiance along a ray at the given depth (0 for camera rays).
+template <typename T>
+Vec<T> traceRay(const PreparedScene<T>& s, const Ray<T>& ray, int depth, RayCounts& counts);
+
+// A camera sample: pixel (i, j) at sub-pixel offset (u, v) in [0,1)^2.
+template <typename T>
+struct CameraSample {
+    int i, j;
+    T u, v;
+};
+
+// Radiance for `count` camera samples (any count; they are intersected with
+// the scene several rays at a time). Counts the camera rays. Each result is the
+// same as tracing that sample alone.
+template <typename T>
+void traceCameraSamples(const PreparedScene<T>& s, const CameraSample<T>* samples, int count,
+                        Vec<T>* radiance, RayCounts& counts);
+
+// Sample n of the pixels (x0 .. x0+count-1, y): the same results as
+// traceCameraSamples() with pixelSample() for each, without building the list.
+template <typename T>
+void traceCameraRow(const PreparedScene<T>& s, int y, int x0, int count, int n, Vec<T>* radiance,
+                    RayCounts& counts);
+
+// One camera sample; the same result as traceCameraSamples() gives for it.
+template <typename T>
+Vec<T> tracePixelSample(const PreparedScene<T>& s, int i, int j, T u, T v, RayCounts& counts);
+
+// Sub-pixel offset of sample n of pixel (i, j) for the scene's samples_per_pixel (SPEC §4).
+template <typename T>
+CameraSample<T> pixelSample(const PreparedScene<T>& s, int i, int j, int n);
+
+// Reflection of unit d about unit n.
+template <typename T>
+Vec<T> reflect(const Vec<T>& d, const Vec<T>& n) {
+    return d - T(2) * (d.x * n.x + d.y * n.y + d.z * n.z) * n;
+}
+
+// Snell refraction of unit d through a surface whose unit normal n faces d's
+// origin (dot(d, n) < 0), with eta = n_from / n_to; nothing on total internal reflection.
+template <typename T>
+std::optional<Vec<T>> refract(const Vec<T>& d, const Vec<T>& n, T eta) {
+    const T cosi = -(d.x * n.x + d.y * n.y + d.z * n.z);
+    const T k = T(1) - eta * eta * (T(1) - cosi * cosi);
+    if (!(k >= T(0))) return std::nullopt;
+    return glm::normalize(eta * d + (eta * cosi - std::sqrt(k)) * n);
+}
+
+}  // namespace whitted

@@ -1,0 +1,318 @@
+#include "document/scene_document.h"
+
+#include <optional>
+#include <type_traits>
+#include <utility>
+
+#include <QElapsedTimer>
+#include <QUndoCommand>
+
+#include "document/edit_messages.h"
+#include "scene/scene_io.h"
+
+namespace whitted::ui {
+
+// What one edit changed, and only that: the small top-level values whole, and
+// of each list either the items that changed (when its length stayed) or the
+// whole list. Whole scenes before and after were simpler, but a scene of
+// 100,000 spheres is 15 MB, and every edit kept two of them for undo.
+template <class T>
+class ListDelta {
+  public:
+    ListDelta() = default;  // nothing changed
+    // Item `index` alone changed, from `before` to `after` (an item edit).
+    ListDelta(std::size_t index, T before, T after)
+        : index_{index}, before_{std::move(before)}, after_{std::move(after)} {}
+    ListDelta(const std::vector<T>& before, const std::vector<T>& after) {
+        if (before.size() != after.size()) {
+            whole_ = true;
+            before_ = before;
+            after_ = after;
+            return;
+        }
+        for (std::size_t i = 0; i < before.size(); ++i)
+            if (!(before[i] == after[i])) {
+                index_.push_back(i);
+                before_.push_back(before[i]);
+                after_.push_back(after[i]);
+            }
+    }
+    bool empty() const { return !whole_ && index_.empty(); }
+    // Applies the change forwards (redo) or backwards (undo); true when it
+    // added, removed, renamed or reordered items.
+    bool apply(std::vector<T>& list, bool forward) const {
+        const std::vector<T>& to = forward ? after_ : before_;
+        if (whole_) {
+            list = to;
+            return true;
+        }
+        bool renamed = false;
+        for (std::size_t k = 0; k < index_.size(); ++k) {
+            renamed = renamed || list[index_[k]].name != to[k].name;
+            list[index_[k]] = to[k];
+        }
+        return renamed;
+    }
+
+  private:
+    bool whole_ = false;
+    std::vector<std::size_t> index_;
+    std::vector<T> before_, after_;
+};
+
+struct SceneDelta {
+    SceneDelta(const Scene& before, const Scene& after)
+        : spheres(before.spheres, after.spheres),
+          lights(before.lights, after.lights),
+          materials(before.materials, after.materials) {
+        headBefore = head(before);
+        headAfter = head(after);
+    }
+    // An item edit of `scene`: one item of one list, the rest as it is.
+    template <class T>
+    static SceneDelta item(const Scene& scene, std::size_t index, T before, T after) {
+        SceneDelta delta(head(scene));
+        ListDelta<T> change(index, std::move(before), std::move(after));
+        if constexpr (std::is_same_v<T, Sphere>)
+            delta.spheres = std::move(change);
+        else if constexpr (std::is_same_v<T, Light>)
+            delta.lights = std::move(change);
+        else
+            delta.materials = std::move(change);
+        return delta;
+    }
+    // The scene without its lists.
+    static Scene head(const Scene& s) {
+        Scene h;
+        h.camera = s.camera;
+        h.render = s.render;
+        h.background = s.background;
+        h.ambient = s.ambient;
+        return h;
+    }
+    // Only the camera, render settings, background or ambient changed.
+    bool headOnly() const { return spheres.empty() && lights.empty() && materials.empty(); }
+    Scene headBefore, headAfter;
+    ListDelta<Sphere> spheres;
+    ListDelta<Light> lights;
+    ListDelta<Material> materials;
+
+  private:
+    explicit SceneDelta(const Scene& head) : headBefore(head), headAfter(head) {}
+};
+
+template <class T>
+std::optional<SceneProblem> validateItemEdit(const Scene& after, std::size_t index) {
+    if constexpr (std::is_same_v<T, Sphere>)
+        return validateSphereEdit(after, index);
+    else if constexpr (std::is_same_v<T, Light>)
+        return validateLightEdit(after, index);
+    else
+        return validateMaterialEdit(after, index);
+}
+
+class SceneEditCommand : public QUndoCommand {
+  public:
+    SceneEditCommand(SceneDocument* doc, SceneDelta delta, const QString& text, EditRun run)
+        : QUndoCommand(text), doc_(doc), delta_(std::move(delta)) {
+        joinable_ = run == EditRun::Join && delta_.headOnly();
+        sinceLast_.start();
+    }
+    // A move after an undo or redo starts a step of its own: they close the run.
+    void undo() override {
+        doc_->runOpen_ = false;
+        doc_->applyDelta(delta_, false);
+    }
+    void redo() override {
+        if (pushed_) doc_->runOpen_ = false;
+        pushed_ = true;  // the first redo is QUndoStack::push applying the edit
+        doc_->applyDelta(delta_, true);
+    }
+    // QUndoStack asks the step on top whether a new one of the same id joins it.
+    int id() const override { return joinable_ ? 1 : -1; }
+    bool mergeWith(const QUndoCommand* other) override {
+        const auto* next = static_cast<const SceneEditCommand*>(other);
+        if (!doc_->runOpen_ || !joinable_ || !next->joinable_ ||
+            sinceLast_.elapsed() >= SceneDocument::kRunGapMs)
+            return false;
+        delta_.headAfter = next->delta_.headAfter;
+        if (text() != next->text()) setText(QObject::tr("Move camera"));
+        sinceLast_.start();
+        return true;
+    }
+
+  private:
+    SceneDocument* doc_;
+    SceneDelta delta_;
+    bool joinable_ = false;
+    bool pushed_ = false;
+    QElapsedTimer sinceLast_;
+};
+
+void SceneDocument::applyDelta(const SceneDelta& delta, bool forward) {
+    const Scene& head = forward ? delta.headAfter : delta.headBefore;
+    scene_.camera = head.camera;
+    scene_.render = head.render;
+    scene_.background = head.background;
+    scene_.ambient = head.ambient;
+    bool structural = delta.spheres.apply(scene_.spheres, forward);
+    structural = delta.lights.apply(scene_.lights, forward) || structural;
+    structural = delta.materials.apply(scene_.materials, forward) || structural;
+    if (structural) emit structureChanged();
+    emit sceneChanged();
+}
+
+SceneDocument::SceneDocument(QObject* parent) : QObject(parent) {
+    connect(&undo_, &QUndoStack::cleanChanged, this,
+            [this](bool clean) { emit modifiedChanged(!clean); });
+}
+
+void SceneDocument::reset(const Scene& scene, const QString& filePath) {
+    undo_.clear();
+    gestureDepth_ = 0;
+    runOpen_ = false;
+    scene_ = scene;
+    resetSceneValid_ = !validateScene(scene_);
+    filePath_ = filePath;
+    emit filePathChanged(filePath_);
+    emit structureChanged();
+    emit sceneChanged();
+    emit modifiedChanged(false);
+}
+
+bool SceneDocument::load(const QString& path, QString* error) {
+    try {
+        reset(loadScene(path.toStdString()), path);
+        return true;
+    } catch (const std::exception& e) {
+        if (error) *error = QString::fromStdString(e.what());
+        return false;
+    }
+}
+
+bool SceneDocument::save(const QString& path, QString* error) {
+    try {
+        saveScene(scene_, path.toStdString());
+    } catch (const std::exception& e) {
+        if (error) *error = QString::fromStdString(e.what());
+        return false;
+    }
+    undo_.setClean();
+    if (filePath_ != path) {
+        filePath_ = path;
+        emit filePathChanged(filePath_);
+    }
+    return true;
+}
+
+bool SceneDocument::edit(const QString& text, const std::function<void(Scene&)>& change,
+                         QString* error, EditRun run) {
+    Scene after = scene_;
+    change(after);
+    if (after == scene_) return true;
+    // Every state past the first is an edit that passed this check; the first
+    // is whatever reset() was given.
+    const bool valid = undo_.index() > 0 || resetSceneValid_;
+    if (auto problem = valid ? validateEdit(scene_, after) : validateScene(after)) {
+        if (error) *error = editProblemText(*problem, after);
+        return false;
+    }
+    push(SceneDelta(scene_, after), text, run);
+    return true;
+}
+
+void SceneDocument::push(SceneDelta delta, const QString& text, EditRun run) {
+    undo_.push(new SceneEditCommand(this, std::move(delta), text, run));
+    runOpen_ = run == EditRun::Join;
+}
+
+template <class T>
+bool SceneDocument::editItem(int index, const QString& text, const std::function<void(T&)>& change,
+                             QString* error) {
+    std::vector<T>& list = itemsOf<T>(scene_);
+    if (index < 0 || index >= static_cast<int>(list.size())) return true;
+    const auto i = static_cast<std::size_t>(index);
+    T after = list[i];
+    change(after);
+    if (after == list[i]) return true;
+    // A new name may clash with any other item's, or (a material's) leave
+    // spheres without theirs; and a first state reset() was given invalid
+    // needs the whole scene checked. Both are edit()'s, which does it all.
+    if (after.name != list[i].name || !(undo_.index() > 0 || resetSceneValid_))
+        return edit(
+            text, [&](Scene& s) { itemsOf<T>(s)[i] = after; }, error);
+    // Checked, and a refusal worded, in the scene as it would be: the item is
+    // swapped in for that and back out before anyone can see it.
+    std::swap(list[i], after);
+    std::optional<SceneProblem> problem = validateItemEdit<T>(scene_, i);
+    if (problem && error) *error = editProblemText(*problem, scene_);
+    std::swap(list[i], after);
+    if (problem) return false;
+    push(SceneDelta::item(scene_, i, list[i], std::move(after)), text, EditRun::Separate);
+    return true;
+}
+
+template bool SceneDocument::editItem<Sphere>(int, const QString&,
+                                              const std::function<void(Sphere&)>&, QString*);
+template bool SceneDocument::editItem<Light>(int, const QString&,
+                                             const std::function<void(Light&)>&, QString*);
+template bool SceneDocument::editItem<Material>(int, const QString&,
+                                                const std::function<void(Material&)>&, QString*);
+
+void SceneDocument::beginGesture(const QString& text) {
+    if (gestureDepth_++ == 0) undo_.beginMacro(text);
+}
+
+void SceneDocument::endGesture() {
+    if (gestureDepth_ == 0) return;
+    if (--gestureDepth_ == 0) undo_.endMacro();
+}
+
+QString SceneDocument::uniqueName(ItemKind kind, const QString& stem) const {
+    for (int n = itemCount(scene_, kind) + 1;; ++n) {
+        const QString candidate = QStringLiteral("%1 %2").arg(stem).arg(n);
+        bool taken = false;
+        for (int i = 0; i < itemCount(scene_, kind) && !taken; ++i)
+            taken = itemName(scene_, kind, i) == candidate;
+        if (!taken) return candidate;
+    }
+}
+
+int itemCount(const Scene& scene, ItemKind kind) {
+    switch (kind) {
+        case ItemKind::Sphere:
+            return static_cast<int>(scene.spheres.size());
+        case ItemKind::Light:
+            return static_cast<int>(scene.lights.size());
+        case ItemKind::Material:
+            return static_cast<int>(scene.materials.size());
+    }
+    return 0;
+}
+
+QString itemName(const Scene& scene, ItemKind kind, int index) {
+    if (index < 0 || index >= itemCount(scene, kind)) return {};
+    switch (kind) {
+        case ItemKind::Sphere:
+            return QString::fromStdString(scene.spheres[index].name);
+        case ItemKind::Light:
+            return QString::fromStdString(scene.lights[index].name);
+        case ItemKind::Material:
+            return QString::fromStdString(scene.materials[index].name);
+    }
+    return {};
+}
+
+QString kindNoun(ItemKind kind) {
+    switch (kind) {
+        case ItemKind::Sphere:
+            return QObject::tr("sphere");
+        case ItemKind::Light:
+            return QObject::tr("light");
+        case ItemKind::Material:
+            return QObject::tr("material");
+    }
+    return {};
+}
+
+}  // namespace whitted::ui

@@ -1,0 +1,121 @@
+// The open scene: the value the editor shows, its file, and its undo history.
+//
+// Every change goes through edit() or editItem() (or undo/redo), which records
+// what changed (the changed items, not whole scenes) as one QUndoCommand, so
+// that each edit is one undo step and a slider drag between beginGesture() and
+// endGesture() is a single one.
+// Listeners re-read scene() on sceneChanged(); nothing else holds scene state.
+#pragma once
+
+#include <functional>
+#include <type_traits>
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+
+#include "scene/scene.h"
+
+namespace whitted::ui {
+
+// What a list or property panel shows.
+enum class ItemKind { Sphere, Light, Material };
+
+// Whether an edit may join the step before it: camera moves made in a run
+// (arrow keys held or tapped, wheel ticks) are one undo step, not dozens.
+enum class EditRun { Separate, Join };
+
+struct SceneDelta;
+
+class SceneDocument : public QObject {
+    Q_OBJECT
+  public:
+    explicit SceneDocument(QObject* parent = nullptr);
+
+    const Scene& scene() const { return scene_; }
+    QString filePath() const { return filePath_; }  // empty for a new, unsaved scene
+    bool isModified() const { return !undo_.isClean(); }
+    QUndoStack* undoStack() { return &undo_; }
+
+    // Replaces the whole scene (New, Open) and forgets the undo history.
+    void reset(const Scene& scene, const QString& filePath);
+
+    // Loads a file; on failure returns false with core's message in `error`
+    // and leaves the current scene exactly as it was.
+    bool load(const QString& path, QString* error);
+
+    // Saves (atomically, SPEC §6) and marks the document clean. On failure
+    // returns false with the reason, and the document stays modified.
+    bool save(const QString& path, QString* error);
+
+    // Applies `change` to a copy of the scene as one undoable step named `text`.
+    // A change that leaves the scene invalid (validateScene) is refused: returns
+    // false with the reason in `error`, and nothing happens. A change that
+    // changes nothing records nothing. An EditRun::Join edit that changes
+    // neither spheres, lights nor materials joins the step before it when that
+    // was one too, made less than kRunGapMs earlier and not undone since
+    // (the step keeps its name, or becomes "Move camera" if the names differ).
+    bool edit(const QString& text, const std::function<void(Scene&)>& change,
+              QString* error = nullptr, EditRun run = EditRun::Separate);
+    static constexpr int kRunGapMs = 500;
+
+    // edit() for a change to item `index` of one list alone (T is Sphere, Light
+    // or Material), in time proportional to the item rather than the scene: the
+    // item alone is copied, compared and validated, and its undo step built
+    // directly (a property panel's edit of one of 100,000 spheres copied and
+    // compared all of them). Same results, refusals, step names and signals as
+    // edit() with the same change; an index out of range changes nothing. A
+    // change of the item's name, the one rule between items, takes edit()'s path.
+    template <class T>
+    bool editItem(int index, const QString& text, const std::function<void(T&)>& change,
+                  QString* error = nullptr);
+
+    // Everything edited between these two calls is a single undo step (a slider drag).
+    void beginGesture(const QString& text);
+    void endGesture();
+
+    // A name for a new item of `kind` that no other item of that kind has ("sphere 4").
+    QString uniqueName(ItemKind kind, const QString& stem) const;
+
+  signals:
+    // The scene's content changed in any way (edit, undo, redo, load, new).
+    void sceneChanged();
+    // Items were added, removed, renamed or reordered (list models reset on it).
+    void structureChanged();
+    void filePathChanged(const QString& path);
+    void modifiedChanged(bool modified);
+
+  private:
+    friend class SceneEditCommand;
+    void push(SceneDelta delta, const QString& text, EditRun run);
+    // Changes the scene by an edit's delta, forwards or backwards, and tells listeners.
+    void applyDelta(const SceneDelta& delta, bool forward);
+
+    Scene scene_;
+    QString filePath_;
+    QUndoStack undo_;
+    int gestureDepth_ = 0;
+    bool runOpen_ = false;  // the top step is a camera run that the next Join edit may extend
+    bool resetSceneValid_ = false;  // what reset() was given passed validateScene
+};
+
+// The list of a scene (const or not like it) that holds items of type T:
+// Sphere, Light or Material.
+template <class T, class S>
+auto& itemsOf(S& scene) {
+    if constexpr (std::is_same_v<T, Sphere>)
+        return scene.spheres;
+    else if constexpr (std::is_same_v<T, Light>)
+        return scene.lights;
+    else
+        return scene.materials;
+}
+
+// The number of items of a kind in a scene, and the name of item `index`.
+int itemCount(const Scene& scene, ItemKind kind);
+QString itemName(const Scene& scene, ItemKind kind, int index);
+
+// The singular noun for an item kind, for messages and undo texts ("sphere").
+QString kindNoun(ItemKind kind);
+
+}  // namespace whitted::ui

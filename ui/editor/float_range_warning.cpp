@@ -1,0 +1,42 @@
+#include "editor/float_range_warning.h"
+
+#include <QStyle>
+
+#include "analysis/float_range.h"
+#include "document/scene_document.h"
+
+namespace whitted::ui {
+
+std::optional<QString> floatRangeWarningText(const Scene& scene, const FloatRangeCheck& check) {
+    if (scene.render.precision != Precision::Float) return std::nullopt;
+    const std::optional<std::string> reason = check(scene);
+    if (!reason) return std::nullopt;
+    return QObject::tr("Scene lies outside float's measured range: %1. Switch to double")
+        .arg(QString::fromStdString(*reason));
+}
+
+FloatRangeWarning::FloatRangeWarning(SceneDocument* doc, FloatRangeCheck check, QWidget* parent)
+    : QPushButton(parent), doc_(doc), check_(check ? std::move(check) : floatRangeProblem) {
+    setObjectName(QStringLiteral("floatRangeWarning"));
+    setFlat(true);
+    setCursor(Qt::PointingHandCursor);
+    setIcon(style()->standardIcon(QStyle::SP_MessageBoxWarning));
+    setToolTip(tr("Click to render this scene in double precision (undoable)"));
+    connect(this, &QPushButton::clicked, this, &FloatRangeWarning::switchToDouble);
+    connect(doc_, &SceneDocument::sceneChanged, this, &FloatRangeWarning::refresh);
+    refresh();
+}
+
+void FloatRangeWarning::refresh() {
+    const std::optional<QString> text = floatRangeWarningText(doc_->scene(), check_);
+    setText(text.value_or(QString()));
+    // Without a parent a shown widget would be a window of its own.
+    setVisible(text.has_value() && parentWidget());
+}
+
+void FloatRangeWarning::switchToDouble() {
+    doc_->edit(tr("Switch to double precision"),
+               [](Scene& s) { s.render.precision = Precision::Double; });
+}
+
+}  // namespace whitted::ui

@@ -1,0 +1,429 @@
+#include "editor/main_window.h"
+
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QGuiApplication>
+#include <QMenu>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QProgressDialog>
+#include <QPushButton>
+#include <QScopedValueRollback>
+#include <QSettings>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QTimer>
+
+#include "document/autosave.h"
+#include "document/scene_loading.h"
+#include "editor/export_job.h"
+#include "editor/float_range_warning.h"
+#include "panels/preset_controls.h"
+#include "panels/property_panels.h"
+#include "panels/scene_panel.h"
+#include "precision_dock/precision_view.h"
+#include "tradeoff_dock/tradeoff_view.h"
+#include "viewport/render_view.h"
+
+namespace whitted::ui {
+
+namespace {
+constexpr int kMaxRecentFiles = 8;
+const char* kSceneFilter = "Whitted scenes (*.json);;All files (*)";
+}  // namespace
+
+Scene MainWindow::newSceneTemplate() {
+    Scene s;
+    s.camera = Camera{{0, 1, -4}, {0, 0.4, 0}, {0, 1, 0}, 50};
+    s.background = {0.02, 0.02, 0.03};
+    s.render.maxDepth = 3;
+    s.materials = {
+        Material{"red", {0.8, 0.1, 0.1}, 0.6, 60, 0.2, 0, 1.5, std::nullopt},
+        Material{"floor", {0.8, 0.8, 0.8}, 0.2, 50, 0.1, 0, 1.5, Checker{{0.1, 0.1, 0.1}, 0.5}}};
+    s.lights = {Light{"key", {3, 5, -4}, {1, 1, 1}, 1}};
+    s.spheres = {Sphere{"ball", {0, 0.5, 0}, 0.5, "red"},
+                 Sphere{"floor", {0, -99999.5, 0}, 99999, "floor"}};
+    return s;
+}
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+    setAcceptDrops(true);
+    // The first to hear of a change, so that the render starts while the
+    // panels and the rest refresh (a few ms on a scene of 100,000 spheres).
+    connect(&doc_, &SceneDocument::sceneChanged, this, [this] { worker_.request(doc_.scene()); });
+    view_ = new RenderView(&doc_, this);
+    setCentralWidget(view_);
+    buildDocks();
+    buildMenus();
+    addFieldToolTips(this);
+
+    passLabel_ = new QLabel;
+    samplesLabel_ = new QLabel;
+    timeLabel_ = new QLabel;
+    speedLabel_ = new QLabel;
+    for (QLabel* l : {passLabel_, samplesLabel_, timeLabel_, speedLabel_})
+        statusBar()->addPermanentWidget(l);
+    autosave_ = std::make_unique<Autosave>(&doc_);
+    connect(autosave_.get(), &Autosave::written, this, [this](const QString& error) {
+        if (!error.isEmpty())
+            statusBar()->showMessage(tr("Could not write the recovery copy: %1").arg(error), 10000);
+    });
+    floatRangeWarning_ = new FloatRangeWarning(&doc_, {}, statusBar());
+    statusBar()->addWidget(floatRangeWarning_);
+
+    connect(&doc_, &SceneDocument::modifiedChanged, this, &MainWindow::updateTitle);
+    connect(&doc_, &SceneDocument::filePathChanged, this, &MainWindow::updateTitle);
+    connect(&worker_, &RenderWorker::frameReady, this, &MainWindow::onFrame);
+    connect(view_, &RenderView::picked, this, [this](ItemKind kind, int index) {
+        if (index >= 0) scenePanel_->select(kind, index);
+    });
+
+    QSettings settings;
+    if (!restoreGeometry(settings.value("window/geometry").toByteArray())) {
+        // First start: room for the view, the docks only as wide as their forms.
+        resize(1400, 860);
+        // Once shown: before that the docks have no width to give away.
+        QTimer::singleShot(0, this, [this] {
+            resizeDocks(
+                {findChild<QDockWidget*>("sceneDock"), findChild<QDockWidget*>("settingsDock")},
+                {230, 340}, Qt::Horizontal);
+        });
+    }
+    restoreState(settings.value("window/state").toByteArray());
+    rebuildRecentMenu();
+
+    doc_.reset(newSceneTemplate(), QString());
+    view_->setHomeCamera(doc_.scene().camera);
+    updateTitle();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::buildDocks() {
+    scenePanel_ = new ScenePanel(&doc_);
+    auto* sceneDock = new QDockWidget(tr("Scene"), this);
+    sceneDock->setObjectName("sceneDock");
+    sceneDock->setWidget(scenePanel_);
+    addDockWidget(Qt::LeftDockWidgetArea, sceneDock);
+
+    propertyPanel_ = new PropertyPanel(&doc_);
+    auto* tabs = new QTabWidget;
+    tabs->setObjectName("settingsTabs");
+    tabs->addTab(propertyPanel_, tr("Properties"));
+    tabs->addTab(new CameraPanel(&doc_), tr("Camera"));
+    tabs->addTab(new RenderSettingsPanel(&doc_, &record_), tr("Render"));
+    auto* settingsDock = new QDockWidget(tr("Settings"), this);
+    settingsDock->setObjectName("settingsDock");
+    settingsDock->setWidget(tabs);
+    addDockWidget(Qt::RightDockWidgetArea, settingsDock);
+
+    // Hidden until asked for from the View menu: it renders the scene twice more.
+    precisionView_ = new PrecisionView(&doc_);
+    auto* precisionDock = new QDockWidget(tr("Precision Check"), this);
+    precisionDock->setObjectName("precisionDock");
+    precisionDock->setWidget(precisionView_);
+    // It compares only once the main render is done: it never delays what the user edits.
+    connect(this, &MainWindow::frameShown, precisionView_, &PrecisionView::mainFrameShown);
+    addDockWidget(Qt::RightDockWidgetArea, precisionDock);
+    splitDockWidget(settingsDock, precisionDock, Qt::Vertical);
+    precisionDock->hide();
+    QAction* togglePrecision = precisionDock->toggleViewAction();
+    togglePrecision->setObjectName("togglePrecisionView");
+    togglePrecision->setShortcut(QKeySequence(tr("Ctrl+Shift+F")));
+    connect(precisionDock, &QDockWidget::visibilityChanged, this,
+            [this, settingsDock, precisionDock](bool visible) {
+                if (visible) giveHalfOfColumn(settingsDock, precisionDock);
+            });
+    buildTradeoffDock();
+
+    connect(scenePanel_, &ScenePanel::selectionChanged, this,
+            [this, tabs](ItemKind kind, int index) {
+                propertyPanel_->showItem(kind, index);
+                view_->setSelection(kind, index);
+                if (index >= 0) tabs->setCurrentWidget(propertyPanel_);
+            });
+}
+
+void MainWindow::buildTradeoffDock() {
+    // Hidden until asked for. Under the render view, where a plot and a table
+    // have the width they need; the side columns keep their full height.
+    tradeoffView_ = new TradeoffView(&doc_, &record_);
+    auto* dock = new QDockWidget(tr("Trade-off"), this);
+    dock->setObjectName("tradeoffDock");
+    dock->setWidget(tradeoffView_);
+    setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
+    addDockWidget(Qt::BottomDockWidgetArea, dock);
+    dock->hide();
+    QAction* toggle = dock->toggleViewAction();
+    toggle->setObjectName("toggleTradeoffView");
+    toggle->setShortcut(QKeySequence(tr("Ctrl+Shift+T")));
+    connect(dock, &QDockWidget::visibilityChanged, this, [this, dock](bool visible) {
+        // Shown at its minimum height, the plot would be a strip: 40 % of the window.
+        if (visible && !dock->isFloating() && dockWidgetArea(dock) == Qt::BottomDockWidgetArea &&
+            dock->height() < height() / 4)
+            resizeDocks({dock}, {height() * 2 / 5}, Qt::Vertical);
+    });
+    // Pinning or measuring shows where the points go.
+    for (QAction* a : {tradeoffView_->pinAction(), tradeoffView_->measureAction()})
+        connect(a, &QAction::triggered, dock, [dock] {
+            dock->show();
+            dock->raise();
+        });
+    connect(this, &MainWindow::frameShown, tradeoffView_, &TradeoffView::frameShown);
+}
+
+void MainWindow::giveHalfOfColumn(QDockWidget* settingsDock, QDockWidget* dock) {
+    // Squeezed under the settings, a plot or heat map would be a thumbnail.
+    const int column = settingsDock->height() + dock->height();
+    if (settingsDock->isHidden() || dock->isFloating() || dock->height() >= column * 2 / 5) return;
+    resizeDocks({settingsDock, dock}, {column / 2, column - column / 2}, Qt::Vertical);
+}
+
+void MainWindow::sceneReplaced() {
+    view_->setHomeCamera(doc_.scene().camera);
+    // Times, errors and the pinned image belong to the scene that was open.
+    tradeoffView_->sceneReplaced();
+}
+
+void MainWindow::onFrame(const RenderFrame& frame) {
+    // Stale: a newer request exists, and its frames must not be overwritten.
+    if (frame.generation != worker_.latestGeneration()) return;
+    view_->setFrame(frame.image, QSizeF(frame.settings.width / double(frame.block),
+                                        frame.settings.height / double(frame.block)));
+    passLabel_->setText(frame.preview
+                            ? tr("Preview")
+                            : tr("Pass %1 of %2").arg(frame.pass + 1).arg(frame.passCount));
+    samplesLabel_->setText(tr("%n sample(s) per pixel", nullptr, frame.samples));
+    timeLabel_->setText(tr("%1 s").arg(frame.seconds, 0, 'f', 2));
+    speedLabel_->setText(frame.renderComplete
+                             ? tr("%1 Mrays/s").arg(frame.mraysPerSecond, 0, 'f', 1)
+                             : tr("rendering…"));
+    if (frame.renderComplete) record_.addRender({frame.settings, frame.seconds, frame.rays});
+    emit frameShown(frame);
+}
+
+bool MainWindow::openFile(const QString& path) {
+    // The event loop runs while a file is read: a second open (a shortcut
+    // pressed before the progress dialog blocks the window) is refused.
+    if (opening_) return false;
+    QString error;
+    std::optional<Scene> scene;
+    {
+        const QScopedValueRollback<bool> opening(opening_, true);
+        scene = loadSceneShowingProgress(this, path, &error, [this](qint64 done, qint64 total) {
+            emit openProgress(done, total);
+        });
+    }
+    if (!scene) {
+        showError(tr("Cannot open scene"), error);
+        return false;
+    }
+    doc_.reset(*scene, path);
+    sceneReplaced();
+    addRecentFile(path);
+    rememberDirectory(path);
+    // Something to edit straight away: the first sphere's properties.
+    if (!doc_.scene().spheres.empty()) scenePanel_->select(ItemKind::Sphere, 0);
+    return true;
+}
+
+void MainWindow::openDialog() {
+    if (!maybeSave()) return;
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open Scene"), lastDirectory(), tr(kSceneFilter));
+    if (!path.isEmpty()) openFile(path);
+}
+
+bool MainWindow::save() {
+    if (doc_.filePath().isEmpty()) return saveAs();
+    return saveTo(doc_.filePath());
+}
+
+bool MainWindow::saveAs() {
+    QString start = doc_.filePath();
+    if (start.isEmpty()) start = QDir(lastDirectory()).filePath(tr("untitled.json"));
+    QFileDialog dialog(this, tr("Save Scene As"), start, tr(kSceneFilter));
+    dialog.setObjectName(QStringLiteral("saveAsDialog"));
+    dialog.setAcceptMode(QFileDialog::AcceptSave);
+    // A name typed without ".json" gets it, and the overwrite question is
+    // asked of the name that will be written.
+    dialog.setDefaultSuffix(QStringLiteral("json"));
+    // Offscreen (the GUI tests) the platform's dialog was seen to hang in exec()
+    // on this machine; Qt's own dialog is the one a test can fill in.
+    dialog.setOption(QFileDialog::DontUseNativeDialog,
+                     QGuiApplication::platformName() == QLatin1String("offscreen"));
+    if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty()) return false;
+    return saveTo(dialog.selectedFiles().constFirst());
+}
+
+bool MainWindow::saveTo(const QString& path) {
+    QString error;
+    if (!doc_.save(path, &error)) {
+        showError(tr("Cannot save scene"), error);
+        return false;
+    }
+    view_->setHomeCamera(doc_.scene().camera);  // Home now returns to the saved camera
+    addRecentFile(path);
+    rememberDirectory(path);
+    return true;
+}
+
+void MainWindow::exportDialog() {
+    const QString base =
+        doc_.filePath().isEmpty() ? tr("untitled") : QFileInfo(doc_.filePath()).completeBaseName();
+    ExportDialog dialog(doc_.scene(), lastDirectory(), base, this);
+    if (dialog.exec() != QDialog::Accepted) return;
+    startExport(dialog.settings());
+}
+
+void MainWindow::startExport(const ExportSettings& settings) {
+    if (export_) return;  // one at a time
+    rememberDirectory(settings.path);
+    export_ = std::make_unique<ExportJob>(doc_.scene(), settings);
+    exportProgress_ = new QProgressDialog(
+        tr("Rendering %1…").arg(QFileInfo(settings.path).fileName()), tr("Cancel"), 0, 100, this);
+    exportProgress_->setWindowModality(Qt::WindowModal);
+    exportProgress_->setMinimumDuration(300);
+    exportProgress_->setAutoClose(false);
+    exportProgress_->setAutoReset(false);
+    connect(exportProgress_, &QProgressDialog::canceled, export_.get(), &ExportJob::cancel);
+    connect(export_.get(), &ExportJob::progress, exportProgress_, &QProgressDialog::setValue);
+    connect(
+        export_.get(), &ExportJob::finished, this,
+        [this](bool ok, const QString& message) {
+            if (exportProgress_) exportProgress_->deleteLater();
+            export_.reset();
+            if (ok)
+                statusBar()->showMessage(message, 5000);
+            else
+                showError(tr("Export failed"), message);
+            emit exportFinished(ok, message);
+        },
+        Qt::QueuedConnection);
+    export_->start();
+}
+
+int MainWindow::offerRecovery() {
+    const std::vector<Recovery> waiting = Autosave::orphans(autosave_->directory());
+    if (waiting.empty()) return 0;
+    const Recovery& r = waiting.front();
+    const QString what =
+        r.originalPath.isEmpty() ? tr("an untitled scene") : QFileInfo(r.originalPath).fileName();
+    auto* box = new QMessageBox(
+        QMessageBox::Question, tr("Restore unsaved changes"),
+        tr("Whitted stopped without saving changes to %1. A copy from %2 was kept.\n\n"
+           "Restore it? The restored scene is marked unsaved; undo returns to the file.")
+            .arg(what, QLocale().toString(r.written.toLocalTime(), QLocale::ShortFormat)),
+        QMessageBox::NoButton, this);
+    box->setObjectName(QStringLiteral("recoveryOffer"));
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    QPushButton* restoreButton = box->addButton(tr("Restore"), QMessageBox::AcceptRole);
+    restoreButton->setObjectName(QStringLiteral("restoreButton"));
+    QPushButton* discardButton = box->addButton(tr("Discard"), QMessageBox::DestructiveRole);
+    discardButton->setObjectName(QStringLiteral("discardButton"));
+    box->setDefaultButton(restoreButton);
+    connect(box, &QMessageBox::buttonClicked, this, [this, r, restoreButton](QAbstractButton* b) {
+        if (b == restoreButton) restore(r);
+        Autosave::discard(r);
+        // The next one, if another editor died too.
+        QTimer::singleShot(0, this, [this] { offerRecovery(); });
+    });
+    box->open();
+    return int(waiting.size());
+}
+
+void MainWindow::restore(const Recovery& r) {
+    // The recovered scene is one undo step on top of the file it came from, so
+    // it shows as unsaved and undo shows the file; an untitled scene goes on
+    // top of the New template.
+    QString error;
+    if (r.originalPath.isEmpty() || !doc_.load(r.originalPath, &error))
+        doc_.reset(newSceneTemplate(), r.originalPath);
+    tradeoffView_->sceneReplaced();  // whatever was pinned or measured was of another scene
+    const Scene recovered = r.scene;
+    doc_.edit(tr("Restore unsaved changes"), [&](Scene& s) { s = recovered; });
+}
+
+bool MainWindow::maybeSave() {
+    if (!doc_.isModified()) return true;
+    const auto answer = QMessageBox::warning(
+        this, tr("Unsaved changes"), tr("The scene has unsaved changes. Save them first?"),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Save) return save();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::showError(const QString& title, const QString& message) {
+    lastError_ = message;
+    // Window-modal but not blocking: the editor (and a test driving it) carries on.
+    auto* box = new QMessageBox(QMessageBox::Warning, title, message, QMessageBox::Ok, this);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+}
+
+void MainWindow::updateTitle() {
+    const QString name =
+        doc_.filePath().isEmpty() ? tr("Untitled") : QFileInfo(doc_.filePath()).fileName();
+    setWindowTitle(tr("%1[*] — Whitted").arg(name));
+    setWindowModified(doc_.isModified());
+}
+
+void MainWindow::addRecentFile(const QString& path) {
+    QSettings settings;
+    QStringList files = settings.value("recentFiles").toStringList();
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    files.removeAll(absolute);
+    files.prepend(absolute);
+    while (files.size() > kMaxRecentFiles) files.removeLast();
+    settings.setValue("recentFiles", files);
+    rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+    recentMenu_->clear();
+    const QStringList files = QSettings().value("recentFiles").toStringList();
+    for (const QString& f : files)
+        recentMenu_
+            ->addAction(QFileInfo(f).fileName(), this,
+                        [this, f] {
+                            if (maybeSave()) openFile(f);
+                        })
+            ->setToolTip(f);
+    recentMenu_->setEnabled(!files.isEmpty());
+}
+
+QString MainWindow::lastDirectory() const {
+    return QSettings().value("lastDirectory", QDir::currentPath()).toString();
+}
+
+void MainWindow::rememberDirectory(const QString& path) {
+    QSettings().setValue("lastDirectory", QFileInfo(path).absolutePath());
+}
+
+void MainWindow::closeEvent(QCloseEvent* e) {
+    if (!maybeSave()) {
+        e->ignore();
+        return;
+    }
+    QSettings settings;
+    settings.setValue("window/geometry", saveGeometry());
+    settings.setValue("window/state", saveState());
+    e->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* e) {
+    if (e->mimeData()->hasUrls() && e->mimeData()->urls().value(0).isLocalFile())
+        e->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* e) {
+    const QString path = e->mimeData()->urls().value(0).toLocalFile();
+    if (path.isEmpty() || !maybeSave()) return;
+    openFile(path);
+    e->acceptProposedAction();
+}
+
+}  // namespace whitted::ui

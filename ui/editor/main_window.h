@@ -1,0 +1,147 @@
+// The editor's main window: the render view in the middle, the scene lists on
+// the left, properties, camera and render settings on the right, the
+// Precision Check and Trade-off docks, the File, Edit, Render, View and Help menus and
+// the tool bar (main_window_menus.cpp). It
+// owns the document and the render worker and wires them together: every
+// scene change restarts the render, every frame that is not stale reaches the
+// view, the status bar and the Trade-off dock.
+#pragma once
+
+#include <QLabel>
+#include <QMainWindow>
+#include <QPointer>
+
+#include <memory>
+
+#include "document/scene_document.h"
+#include "editor/help_dialogs.h"
+#include "tradeoff_dock/tradeoff_record.h"
+#include "viewport/render_worker.h"
+
+class QAction;
+class QActionGroup;
+class QDockWidget;
+class QToolBar;
+class QMenu;
+class QProgressDialog;
+
+namespace whitted::ui {
+
+class RenderView;
+class ScenePanel;
+class PrecisionView;
+class Autosave;
+struct Recovery;
+class TradeoffView;
+class FloatRangeWarning;
+class PropertyPanel;
+class ExportJob;
+struct ExportSettings;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+  public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    // Opens a scene file without asking about unsaved changes; on failure shows
+    // core's message and keeps the current scene. Returns whether it opened.
+    // The file is read on a worker thread with a progress dialog (scene_loading.h);
+    // the event loop runs meanwhile, and returns when the file is read.
+    bool openFile(const QString& path);
+    // Starts exporting with these settings (what the Export dialog does after OK).
+    void startExport(const ExportSettings& settings);
+
+    SceneDocument* document() { return &doc_; }
+    RenderView* renderView() { return view_; }
+    const RenderWorker& renderWorker() const { return worker_; }
+    ScenePanel* scenePanel() { return scenePanel_; }
+    PropertyPanel* propertyPanel() { return propertyPanel_; }
+    PrecisionView* precisionView() { return precisionView_; }
+    TradeoffView* tradeoffView() { return tradeoffView_; }
+    TradeoffRecord* tradeoffRecord() { return &record_; }
+    FloatRangeWarning* floatRangeWarning() { return floatRangeWarning_; }
+    QString lastError() const { return lastError_; }  // the last message shown to the user
+    Autosave* autosave() { return autosave_.get(); }
+
+    // Offers, one after the other, to restore the unsaved edits of editors that
+    // crashed or were killed (Autosave::orphans). Non-blocking message boxes,
+    // object name "recoveryOffer", buttons "restoreButton" and "discardButton".
+    // Returns how many are waiting.
+    int offerRecovery();
+
+    // A scene to start from for File > New: a ball on a checker floor, one light.
+    static Scene newSceneTemplate();
+
+  signals:
+    // A frame reached the view (stale frames never do).
+    void frameShown(const whitted::ui::RenderFrame& frame);
+    void exportFinished(bool ok, const QString& message);
+    // While openFile() reads a file: bytes read so far and the file's size.
+    void openProgress(qint64 done, qint64 total);
+
+  protected:
+    void closeEvent(QCloseEvent* e) override;
+    void dragEnterEvent(QDragEnterEvent* e) override;
+    void dropEvent(QDropEvent* e) override;
+
+  private:
+    // main_window_menus.cpp
+    void buildMenus();
+    void buildFileMenu();
+    void buildEditMenu();
+    void buildRenderMenu();
+    void buildViewMenu();
+    void buildHelpMenu();
+    void buildToolBar();
+    void tickPreset();  // ticks the Render menu's preset the settings match
+    QList<ControlRow> controls();
+
+    void buildDocks();
+    void buildTradeoffDock();
+    // Shown under the settings, a dock squeezed small gets half of the column.
+    void giveHalfOfColumn(QDockWidget* settingsDock, QDockWidget* dock);
+    void sceneReplaced();
+    void newScene();
+    void openDialog();
+    bool save();
+    bool saveAs();
+    bool saveTo(const QString& path);
+    void exportDialog();
+    bool maybeSave();  // false: the user cancelled
+    void showError(const QString& title, const QString& message);
+    void updateTitle();
+    void addRecentFile(const QString& path);
+    void rebuildRecentMenu();
+    QString lastDirectory() const;
+    void rememberDirectory(const QString& path);
+    void onFrame(const RenderFrame& frame);
+
+    SceneDocument doc_;
+    TradeoffRecord record_;
+    RenderWorker worker_;
+    RenderView* view_ = nullptr;
+    ScenePanel* scenePanel_ = nullptr;
+    PropertyPanel* propertyPanel_ = nullptr;
+    PrecisionView* precisionView_ = nullptr;
+    TradeoffView* tradeoffView_ = nullptr;
+    FloatRangeWarning* floatRangeWarning_ = nullptr;
+    QMenu* recentMenu_ = nullptr;
+    QToolBar* toolBar_ = nullptr;
+    QActionGroup* presetGroup_ = nullptr;
+    QAction *openAction_ = nullptr, *saveAction_ = nullptr, *exportAction_ = nullptr;
+    QAction *undoAction_ = nullptr, *redoAction_ = nullptr;
+    QLabel* passLabel_ = nullptr;
+    QLabel* samplesLabel_ = nullptr;
+    QLabel* timeLabel_ = nullptr;
+    QLabel* speedLabel_ = nullptr;
+    QString lastError_;
+    bool opening_ = false;  // openFile() is reading a file
+    void restore(const Recovery& recovery);
+
+    std::unique_ptr<ExportJob> export_;
+    std::unique_ptr<Autosave> autosave_;
+    QPointer<QProgressDialog> exportProgress_;
+};
+
+}  // namespace whitted::ui

@@ -1,0 +1,84 @@
+// ColorButton: swatch, dialog and the sRGB conversions between them.
+#include "panels/color_button.h"
+
+#include <cmath>
+
+#include <QColorDialog>
+#include <QEvent>
+#include <QPainter>
+#include <QPixmap>
+
+#include "image/srgb.h"
+
+namespace whitted::ui {
+
+namespace {
+
+// The inverse of whitted::srgbEncode, for a dialog value in [0,1].
+double srgbDecode(double encoded) {
+    return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
+}
+
+QColor toDisplay(const Vec3& linear) {
+    return QColor::fromRgbF(srgbEncode(static_cast<float>(linear.x)),
+                            srgbEncode(static_cast<float>(linear.y)),
+                            srgbEncode(static_cast<float>(linear.z)));
+}
+
+QString shortNumber(double v) {
+    return QString::number(v, 'g', 3);
+}
+
+}  // namespace
+
+ColorButton::ColorButton(QWidget* parent) : QPushButton(parent) {
+    setIconSize(QSize(32, 14));
+    connect(this, &QPushButton::clicked, this, &ColorButton::pick);
+    updateSwatch();
+}
+
+void ColorButton::setColor(const Vec3& linear) {
+    if (linear == color_) return;
+    color_ = linear;
+    updateSwatch();
+}
+
+void ColorButton::edit(const Vec3& linear) {
+    setColor(linear);
+    emit colorEdited(color_);
+}
+
+void ColorButton::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::EnabledChange) updateSwatch();
+    QPushButton::changeEvent(event);
+}
+
+void ColorButton::pick() {
+    const QColor shown = toDisplay(color_);
+    const QColor picked = QColorDialog::getColor(shown, this, tr("Choose a colour"));
+    if (!picked.isValid() || picked.rgb() == shown.rgb()) return;
+    // A channel the user left alone keeps its exact value: the dialog's 8 bits
+    // would otherwise nudge it (and clamp values above 1) on every pick.
+    auto channel = [](int before, int after, double original, float afterF) {
+        return before == after ? original : srgbDecode(afterF);
+    };
+    edit(Vec3{channel(shown.red(), picked.red(), color_.x, picked.redF()),
+              channel(shown.green(), picked.green(), color_.y, picked.greenF()),
+              channel(shown.blue(), picked.blue(), color_.z, picked.blueF())});
+}
+
+void ColorButton::updateSwatch() {
+    QPixmap swatch(iconSize());
+    swatch.fill(Qt::transparent);
+    QPainter painter(&swatch);
+    painter.setPen(palette().color(QPalette::Mid));
+    painter.setBrush(isEnabled() ? toDisplay(color_) : palette().color(QPalette::Window));
+    painter.drawRect(swatch.rect().adjusted(0, 0, -1, -1));
+    painter.end();
+    setIcon(QIcon(swatch));
+    setText(QStringLiteral("%1, %2, %3")
+                .arg(shortNumber(color_.x), shortNumber(color_.y), shortNumber(color_.z)));
+    setToolTip(tr("Linear RGB %1; click to choose").arg(text()));
+}
+
+}  // namespace whitted::ui

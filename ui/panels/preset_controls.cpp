@@ -1,0 +1,132 @@
+#include "panels/preset_controls.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QWidget>
+
+#include <cmath>
+
+#include "analysis/render_presets.h"
+#include "document/scene_document.h"
+#include "panels/number_field.h"
+#include "tradeoff_dock/tradeoff_points.h"
+#include "tradeoff_dock/tradeoff_record.h"
+
+namespace whitted::ui {
+
+namespace {
+
+QString viewText(std::string_view s) {
+    return QString::fromUtf8(s.data(), qsizetype(s.size()));
+}
+
+QString presetName(const RenderPreset& p) {
+    return viewText(p.name);
+}
+
+void applyPreset(const RenderPreset& p, RenderSettings& r) {
+    r.samplesPerPixel = p.samplesPerPixel;
+    r.maxDepth = p.maxDepth;
+    r.precision = p.precision;
+}
+
+QLabel* makePredictionLabel(const QString& name) {
+    auto* label = new QLabel;
+    label->setObjectName(name);
+    label->setWordWrap(true);
+    label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    return label;
+}
+
+}  // namespace
+
+PresetControls::PresetControls(SceneDocument* doc, TradeoffRecord* record, QFormLayout* form)
+    : QObject(form->parentWidget()), doc_(doc), record_(record) {
+    combo_ = new QComboBox;
+    combo_->setObjectName(QStringLiteral("renderPreset"));
+    combo_->addItem(tr("Custom"));
+    for (const RenderPreset& p : kRenderPresets)
+        combo_->addItem(tr("%1 (%2 spp, depth %3, %4)")
+                            .arg(presetName(p))
+                            .arg(p.samplesPerPixel)
+                            .arg(p.maxDepth)
+                            .arg(viewText(precisionName(p.precision))));
+    combo_->setToolTip(tr("Sets samples per pixel, max depth and precision in one step"));
+    // activated: only the user's choices, not the refreshes that follow edits.
+    connect(combo_, &QComboBox::activated, this, &PresetControls::choose);
+
+    time_ = makePredictionLabel(QStringLiteral("predictedTime"));
+    time_->setToolTip(tr("How long a render with the current settings takes"));
+    error_ = makePredictionLabel(QStringLiteral("predictedError"));
+    error_->setToolTip(
+        tr("Root-mean-square error of the 8-bit sRGB image against Measure's "
+           "reference (in steps of 1/255), and its PSNR"));
+    form->insertRow(0, tr("Preset:"), combo_);
+    form->insertRow(1, tr("Predicted time:"), time_);
+    form->insertRow(2, tr("Predicted error:"), error_);
+
+    connect(doc_, &SceneDocument::sceneChanged, this, &PresetControls::refresh);
+    connect(record_, &TradeoffRecord::changed, this, &PresetControls::refresh);
+    refresh();
+}
+
+int PresetControls::matchingPreset(const RenderSettings& settings) {
+    for (std::size_t i = 0; i < kRenderPresets.size(); ++i) {
+        RenderSettings preset = settings;
+        applyPreset(kRenderPresets[i], preset);
+        if (preset == settings) return int(i);
+    }
+    return -1;
+}
+
+QString PresetControls::timeText(const Prediction& p) {
+    if (!p.seconds) return tr("unknown: %1").arg(p.timeSource);
+    return tr("%1 (%2)").arg(secondsText(*p.seconds), p.timeSource);
+}
+
+QString PresetControls::errorText(const Prediction& p) {
+    if (!p.rmseSrgb8) return p.errorSource;
+    const QString psnr = std::isfinite(p.psnrSrgb8.value_or(0))
+                             ? tr("PSNR %1 dB").arg(*p.psnrSrgb8, 0, 'f', 1)
+                             : tr("identical");
+    return tr("RMSE %1 of 255, %2 (%3)").arg(*p.rmseSrgb8, 0, 'f', 2).arg(psnr, p.errorSource);
+}
+
+void PresetControls::choose(int index) {
+    if (index <= 0) {  // Custom: nothing to set, show what the settings match
+        refresh();
+        return;
+    }
+    QString error;
+    if (!apply(doc_, kRenderPresets[std::size_t(index - 1)], &error)) showRefusal(combo_, error);
+    refresh();
+}
+
+bool PresetControls::apply(SceneDocument* doc, const RenderPreset& preset, QString* error) {
+    return doc->edit(
+        tr("Apply %1 preset").arg(presetName(preset)),
+        [&](Scene& s) { applyPreset(preset, s.render); }, error);
+}
+
+void PresetControls::refresh() {
+    const Scene& scene = doc_->scene();
+    {
+        const QSignalBlocker block(combo_);
+        combo_->setCurrentIndex(matchingPreset(scene.render) + 1);
+    }
+    const Prediction now = record_->predict(scene);
+    time_->setText(timeText(now));
+    error_->setText(errorText(now));
+    // Each preset's own prediction where the user hovers before choosing.
+    for (std::size_t i = 0; i < kRenderPresets.size(); ++i) {
+        RenderSettings with = scene.render;
+        applyPreset(kRenderPresets[i], with);
+        const Prediction p = record_->predict(scene, &with);
+        combo_->setItemData(int(i) + 1, tr("Time: %1\nError: %2").arg(timeText(p), errorText(p)),
+                            Qt::ToolTipRole);
+    }
+}
+
+}  // namespace whitted::ui

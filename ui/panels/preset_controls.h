@@ -1,0 +1,51 @@
+// The Render tab's presets (core/analysis/render_presets.h) and the time and error
+// predicted for the current settings (settings_prediction.h).
+//
+// Choosing Draft, Preview or Final sets samples per pixel, max depth and
+// precision as one undoable edit; the combo box shows the preset the scene's
+// settings match, else Custom. The predictions follow every edit, every
+// finished render and every Measure result, and say where they come from.
+#pragma once
+
+#include <QObject>
+
+#include "analysis/render_presets.h"
+#include "scene/scene.h"
+
+class QComboBox;
+class QFormLayout;
+class QLabel;
+
+namespace whitted::ui {
+
+class SceneDocument;
+class TradeoffRecord;
+struct Prediction;
+
+class PresetControls : public QObject {
+    Q_OBJECT
+  public:
+    // Inserts its rows at the top of `form`; lives as long as the form's widget.
+    PresetControls(SceneDocument* doc, TradeoffRecord* record, QFormLayout* form);
+
+    // Sets the preset's samples, depth and precision as one undoable edit
+    // (what choosing it does); false with the reason if the edit is refused.
+    static bool apply(SceneDocument* doc, const RenderPreset& preset, QString* error = nullptr);
+    // Index into kRenderPresets of the preset `settings` match, or -1.
+    static int matchingPreset(const RenderSettings& settings);
+    // "1.2 s" and "RMSE 2.3 of 255, PSNR 41 dB" with their sources, as the labels show them.
+    static QString timeText(const Prediction& p);
+    static QString errorText(const Prediction& p);
+
+  private:
+    void choose(int index);
+    void refresh();
+
+    SceneDocument* doc_;
+    TradeoffRecord* record_;
+    QComboBox* combo_;
+    QLabel* time_;
+    QLabel* error_;
+};
+
+}  // namespace whitted::ui

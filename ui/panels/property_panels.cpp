@@ -1,0 +1,241 @@
+// The property, camera and render settings panels: forms of bound fields.
+#include "panels/property_panels.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QStackedWidget>
+#include <QVBoxLayout>
+
+#include "panels/color_button.h"
+#include "panels/image_size_fields.h"
+#include "panels/material_page.h"
+#include "panels/number_field.h"
+#include "panels/panel_fields.h"
+#include "panels/preset_controls.h"
+#include "panels/sphere_page.h"
+
+namespace whitted::ui {
+
+// ---------------------------------------------------------------------------
+// PropertyPanel
+
+PropertyPanel::PropertyPanel(SceneDocument* doc, QWidget* parent)
+    : QWidget(parent), doc_(doc), pages_(new QStackedWidget(this)) {
+    pages_->setObjectName(QStringLiteral("propertyPages"));
+    auto* empty = new QLabel(tr("Select a sphere, light or material to edit it."));
+    empty->setObjectName(QStringLiteral("emptyPage"));
+    empty->setAlignment(Qt::AlignCenter);
+    empty->setWordWrap(true);
+    empty->setEnabled(false);  // greyed: a hint, not content
+    emptyPage_ = empty;
+    spherePage_ = new SpherePage(doc_);
+    lightPage_ = buildLightPage();
+    materialPage_ = new MaterialPage(doc_);
+    for (QWidget* page :
+         std::initializer_list<QWidget*>{emptyPage_, spherePage_, lightPage_, materialPage_})
+        pages_->addWidget(page);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(pages_);
+    connect(doc_, &SceneDocument::sceneChanged, this, &PropertyPanel::refresh);
+    refresh();
+}
+
+void PropertyPanel::showItem(ItemKind kind, int index) {
+    kind_ = kind;
+    index_ = index;
+    refresh();
+}
+
+bool PropertyPanel::valid() const {
+    return index_ >= 0 && index_ < itemCount(doc_->scene(), kind_);
+}
+
+QString PropertyPanel::itemLabel() const {
+    return itemName(doc_->scene(), kind_, index_);
+}
+
+std::function<QString()> PropertyPanel::changeText(const QString& what) const {
+    return [this, what] { return tr("Change %1 of %2").arg(what, itemLabel()); };
+}
+
+void PropertyPanel::editLight(const QString& what, const std::function<void(Light&)>& change) {
+    if (!editItemOrTell(this, doc_, index_, changeText(what)(), change)) refresh();
+}
+
+QWidget* PropertyPanel::buildLightPage() {
+    auto* page = new QWidget;
+    page->setObjectName(QStringLiteral("lightPage"));
+    QFormLayout* form = makeForm(page);
+    const Locate locate = [this](const Scene&) { return index_; };
+
+    lightName_ = makeNameLabel(QStringLiteral("lightName"));
+    form->addRow(tr("Light:"), lightName_);
+    form->addRow(tr("Position:"), makeItemVectorRow<Light>(
+                                      doc_, QStringLiteral("lightPosition"), kCoordinate, locate,
+                                      [](auto& l) { return &l.position; },
+                                      changeText(tr("position")), lightFields_));
+
+    lightColor_ = new ColorButton;
+    lightColor_->setObjectName(QStringLiteral("lightColor"));
+    connect(lightColor_, &ColorButton::colorEdited, this,
+            [this](const Vec3& c) { editLight(tr("colour"), [c](Light& l) { l.color = c; }); });
+    form->addRow(tr("Colour:"), lightColor_);
+    form->addRow(
+        tr("Intensity:"),
+        makeItemField<Light>(
+            doc_, QStringLiteral("lightIntensity"),
+            DoubleFieldSpec::range(0.0, 1000.0, 0.1).linearSlider(0.0, 10.0), locate,
+            [](auto& l) { return &l.intensity; }, changeText(tr("intensity")), lightFields_));
+    return page;
+}
+
+void PropertyPanel::refresh() {
+    if (!valid()) {
+        pages_->setCurrentWidget(emptyPage_);
+        return;
+    }
+    const Scene& scene = doc_->scene();
+    switch (kind_) {
+        case ItemKind::Sphere:
+            spherePage_->setIndex(index_);
+            pages_->setCurrentWidget(spherePage_);
+            break;
+        case ItemKind::Light: {
+            const Light& light = scene.lights[index_];
+            lightName_->setText(QString::fromStdString(light.name));
+            refreshAll(lightFields_);
+            lightColor_->setColor(light.color);
+            pages_->setCurrentWidget(lightPage_);
+            break;
+        }
+        case ItemKind::Material:
+            materialPage_->setIndex(index_);
+            pages_->setCurrentWidget(materialPage_);
+            break;
+    }
+}
+
+// ---------------------------------------------------------------------------
+// CameraPanel
+
+CameraPanel::CameraPanel(SceneDocument* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
+    QFormLayout* form = makeForm(this);
+    auto text = [](const QString& what) {
+        return [what] { return tr("Change camera %1").arg(what); };
+    };
+    form->addRow(tr("Position:"),
+                 makeVectorRow(
+                     doc_, QStringLiteral("cameraPosition"), kCoordinate,
+                     [](auto& s) { return &s.camera.position; }, text(tr("position")), fields_));
+    form->addRow(tr("Look at:"),
+                 makeVectorRow(
+                     doc_, QStringLiteral("cameraLookAt"), kCoordinate,
+                     [](auto& s) { return &s.camera.lookAt; }, text(tr("look-at point")), fields_));
+    form->addRow(tr("Up:"),
+                 makeVectorRow(
+                     doc_, QStringLiteral("cameraUp"), kCoordinate,
+                     [](auto& s) { return &s.camera.up; }, text(tr("up vector")), fields_));
+    form->addRow(tr("Vertical FOV:"), makeField(
+                                          doc_, QStringLiteral("cameraVfov"),
+                                          DoubleFieldSpec::range(0.01, 179.99, 1.0)
+                                              .linearSlider(1.0, 170.0)
+                                              .unit(QStringLiteral(" °")),
+                                          [](auto& s) { return &s.camera.vfovDegrees; },
+                                          text(tr("field of view")), fields_));
+    connect(doc_, &SceneDocument::sceneChanged, this, &CameraPanel::refresh);
+    refresh();
+}
+
+void CameraPanel::refresh() {
+    refreshAll(fields_);
+}
+
+// ---------------------------------------------------------------------------
+// RenderSettingsPanel
+
+RenderSettingsPanel::RenderSettingsPanel(SceneDocument* doc, TradeoffRecord* record,
+                                         QWidget* parent)
+    : QWidget(parent), doc_(doc) {
+    QFormLayout* form = makeForm(this);
+    auto addInt = [&](const QString& label, const QString& name, int min, int max, auto member,
+                      const QString& what, const QString& suffix) {
+        auto* field = new IntField(
+            doc_, name, min, max, [member](const Scene& s) { return s.render.*member; },
+            [member](Scene& s, int v) { s.render.*member = v; },
+            [what] { return tr("Change %1").arg(what); });
+        field->setSuffix(suffix);
+        fields_.push_back(field);
+        form->addRow(label, field);
+    };
+    addInt(tr("Width:"), QStringLiteral("renderWidth"), 1, kMaxImageSize, &RenderSettings::width,
+           tr("image width"), tr(" px"));
+    addInt(tr("Height:"), QStringLiteral("renderHeight"), 1, kMaxImageSize, &RenderSettings::height,
+           tr("image height"), tr(" px"));
+    form->addRow(tr("Common size:"), makeCommonSizeChooser(doc_));
+    addInt(tr("Max depth:"), QStringLiteral("renderMaxDepth"), 0, kMaxDepth,
+           &RenderSettings::maxDepth, tr("maximum depth"), QString());
+    addInt(tr("Samples per pixel:"), QStringLiteral("renderSamples"), 1, kMaxSamplesPerPixel,
+           &RenderSettings::samplesPerPixel, tr("samples per pixel"), QString());
+
+    precision_ = new QComboBox;
+    precision_->setObjectName(QStringLiteral("renderPrecision"));
+    for (const auto& [precision, name] : kPrecisionNames)
+        precision_->addItem(QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())),
+                            static_cast<int>(precision));
+    connect(precision_, &QComboBox::currentIndexChanged, this, [this](int i) {
+        if (i < 0) return;
+        const auto precision = static_cast<Precision>(precision_->itemData(i).toInt());
+        QString error;
+        if (!doc_->edit(
+                tr("Change precision"), [precision](Scene& s) { s.render.precision = precision; },
+                &error)) {
+            showRefusal(this, error);
+            refresh();
+        }
+    });
+    form->addRow(tr("Precision:"), precision_);
+
+    auto addColor = [&](const QString& label, const QString& name, Vec3 Scene::*member,
+                        const QString& what) {
+        auto* button = new ColorButton;
+        button->setObjectName(name);
+        connect(button, &ColorButton::colorEdited, this, [this, member, what](const Vec3& c) {
+            QString error;
+            if (!doc_->edit(
+                    tr("Change %1").arg(what), [&](Scene& s) { s.*member = c; }, &error)) {
+                showRefusal(this, error);
+                refresh();
+            }
+        });
+        form->addRow(label, button);
+        return button;
+    };
+    background_ = addColor(tr("Background:"), QStringLiteral("sceneBackground"), &Scene::background,
+                           tr("background colour"));
+    ambient_ = addColor(tr("Ambient:"), QStringLiteral("sceneAmbient"), &Scene::ambient,
+                        tr("ambient colour"));
+
+    if (record) new PresetControls(doc_, record, form);
+
+    connect(doc_, &SceneDocument::sceneChanged, this, &RenderSettingsPanel::refresh);
+    refresh();
+}
+
+void RenderSettingsPanel::refresh() {
+    for (IntField* field : fields_) field->refresh();
+    const Scene& scene = doc_->scene();
+    {
+        const QSignalBlocker block(precision_);
+        precision_->setCurrentIndex(precision_->findData(static_cast<int>(scene.render.precision)));
+    }
+    background_->setColor(scene.background);
+    ambient_->setColor(scene.ambient);
+}
+
+}  // namespace whitted::ui

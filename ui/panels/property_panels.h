@@ -1,0 +1,90 @@
+// Property editors: the selected sphere, light or material, the camera, and the
+// render settings. Each re-reads the scene on every change (undo and redo
+// included) and turns user input into one SceneDocument edit.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include <QWidget>
+
+#include "document/scene_document.h"
+
+class QComboBox;
+class QLabel;
+class QStackedWidget;
+
+namespace whitted::ui {
+
+class ColorButton;
+class DoubleField;
+class IntField;
+class MaterialPage;
+class SpherePage;
+
+class PropertyPanel : public QWidget {
+    Q_OBJECT
+  public:
+    explicit PropertyPanel(SceneDocument* doc, QWidget* parent = nullptr);
+
+    // Shows item `index` of `kind`; -1, or an index that stops existing, shows the
+    // empty page.
+    void showItem(ItemKind kind, int index);
+
+  private:
+    QWidget* buildLightPage();
+    void refresh();
+    bool valid() const;
+    QString itemLabel() const;  // the shown item's name, for undo texts
+    // An undo text "<verb> <what> of <item>"; the item name is read when the edit happens.
+    std::function<QString()> changeText(const QString& what) const;
+    void editLight(const QString& what, const std::function<void(Light&)>& change);
+
+    SceneDocument* doc_;
+    ItemKind kind_ = ItemKind::Sphere;
+    int index_ = -1;
+    QStackedWidget* pages_;
+    QWidget* emptyPage_;
+    SpherePage* spherePage_;
+    QWidget* lightPage_;
+    MaterialPage* materialPage_;
+    QLabel* lightName_;
+    ColorButton* lightColor_;
+    std::vector<DoubleField*> lightFields_;
+};
+
+// The camera: position, look-at point, up vector and vertical field of view.
+class CameraPanel : public QWidget {
+    Q_OBJECT
+  public:
+    explicit CameraPanel(SceneDocument* doc, QWidget* parent = nullptr);
+
+  private:
+    void refresh();
+
+    SceneDocument* doc_;
+    std::vector<DoubleField*> fields_;
+};
+
+class TradeoffRecord;
+
+// Render settings (image size, depth, samples, precision) and the scene's
+// background and ambient colours; given a record, the presets and the
+// predicted time and error above them (preset_controls.h).
+class RenderSettingsPanel : public QWidget {
+    Q_OBJECT
+  public:
+    explicit RenderSettingsPanel(SceneDocument* doc, TradeoffRecord* record = nullptr,
+                                 QWidget* parent = nullptr);
+
+  private:
+    void refresh();
+
+    SceneDocument* doc_;
+    std::vector<IntField*> fields_;
+    QComboBox* precision_;
+    ColorButton* background_;
+    ColorButton* ambient_;
+};
+
+}  // namespace whitted::ui

@@ -1,0 +1,146 @@
+#include "panels/sphere_page.h"
+
+#include <cmath>
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalBlocker>
+
+#include "panels/material_rows.h"
+#include "panels/material_sharing.h"
+#include "panels/panel_fields.h"
+
+namespace whitted::ui {
+
+namespace {
+
+// The centre's arrow step: the power of ten nearest a tenth of the radius, so a
+// 0.05 marble moves by 0.01 and the seed's 0.6 balls by 0.1 (a fixed 0.1 moved
+// the marble by its own diameter).
+double centreStep(double radius) {
+    if (!(radius > 0.0) || !std::isfinite(radius)) return 0.1;
+    return std::pow(10.0, std::round(std::log10(radius / 10.0)));
+}
+
+}  // namespace
+
+SpherePage::SpherePage(SceneDocument* doc, QWidget* parent)
+    : QWidget(parent), doc_(doc), name_(makeNameLabel(QStringLiteral("sphereName"))) {
+    setObjectName(QStringLiteral("spherePage"));
+    QFormLayout* form = makeForm(this);
+    auto sphere = [this](auto& s) { return itemAt(s.spheres, index_); };
+    const Locate locate = [this](const Scene&) { return index_; };
+    auto text = [this](const QString& what) {
+        return [this, what] { return tr("Change %1 of %2").arg(what, sphereName()); };
+    };
+
+    form->addRow(tr("Sphere:"), name_);
+    const DoubleFieldSpec centre = kCoordinate.stepFrom([sphere](const Scene& s) {
+        const Sphere* sp = sphere(s);
+        return centreStep(sp ? sp->radius : 1.0);
+    });
+    form->addRow(tr("Centre:"),
+                 makeItemVectorRow<Sphere>(
+                     doc_, QStringLiteral("sphereCenter"), centre, locate,
+                     [](auto& sp) { return &sp.center; }, text(tr("centre")), fields_));
+    form->addRow(tr("Radius:"),
+                 makeItemField<Sphere>(
+                     doc_, QStringLiteral("sphereRadius"), kLength, locate,
+                     [](auto& sp) { return &sp.radius; }, text(tr("radius")), fields_));
+    form->addRow(tr("Material:"), buildMaterialChoice());
+    form->addRow(QString(), users_);  // "Shared by 3 spheres" says what it is
+    materialRows_ = std::make_unique<MaterialRows>(
+        doc_, this, form, MaterialRows::Extent::Main, QStringLiteral("sphereMaterial"),
+        [this](const Scene& s) { return materialIndex(s); },
+        [this](const QString& what) {
+            return tr("Change %1 of material %2").arg(what, materialName());
+        });
+}
+
+SpherePage::~SpherePage() = default;
+
+QWidget* SpherePage::buildMaterialChoice() {
+    auto* row = new QWidget;
+    auto* layout = new QHBoxLayout(row);
+    layout->setContentsMargins(0, 0, 0, 0);
+    material_ = new QComboBox;
+    material_->setObjectName(QStringLiteral("sphereMaterial"));
+    material_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    material_->setMinimumContentsLength(12);
+    connect(material_, &QComboBox::currentIndexChanged, this, [this](int i) {
+        if (i < 0 || i >= static_cast<int>(doc_->scene().materials.size())) return;
+        const std::string material = doc_->scene().materials[i].name;
+        if (!editItemOrTell<Sphere>(this, doc_, index_,
+                                    tr("Change material of %1").arg(sphereName()),
+                                    [material](Sphere& sp) { sp.material = material; }))
+            refresh();
+    });
+    makeUnique_ = new QPushButton(tr("Make unique"));
+    makeUnique_->setObjectName(QStringLiteral("sphereMakeUnique"));
+    makeUnique_->setToolTip(
+        tr("Give this sphere its own copy of the material, so that editing it here changes "
+           "no other sphere"));
+    connect(makeUnique_, &QPushButton::clicked, this, [this] {
+        editOrTell(this, doc_, tr("Make material of %1 unique").arg(sphereName()),
+                   [this](Scene& s) { makeMaterialUnique(s, index_); });
+    });
+    layout->addWidget(material_, 1);
+    layout->addWidget(makeUnique_);
+
+    users_ = new QLabel;
+    users_->setObjectName(QStringLiteral("sphereMaterialUsers"));
+    users_->setToolTip(tr("How many spheres this material's settings change"));
+    return row;
+}
+
+void SpherePage::setIndex(int index) {
+    index_ = index;
+    refresh();
+}
+
+int SpherePage::materialIndex(const Scene& scene) const {
+    const Sphere* sphere = itemAt(scene.spheres, index_);
+    return sphere ? findMaterial(scene, sphere->material) : -1;
+}
+
+QString SpherePage::sphereName() const {
+    return itemName(doc_->scene(), ItemKind::Sphere, index_);
+}
+
+QString SpherePage::materialName() const {
+    return itemName(doc_->scene(), ItemKind::Material, materialIndex(doc_->scene()));
+}
+
+void SpherePage::refresh() {
+    const Sphere* sphere = itemAt(doc_->scene().spheres, index_);
+    if (!sphere) return;
+    name_->setText(QString::fromStdString(sphere->name));
+    refreshAll(fields_);
+    refreshMaterialChoice(*sphere);
+    materialRows_->refresh();
+}
+
+void SpherePage::refreshMaterialChoice(const Sphere& sphere) {
+    const Scene& scene = doc_->scene();
+    {
+        const QSignalBlocker block(material_);
+        bool same = material_->count() == static_cast<int>(scene.materials.size());
+        for (int i = 0; same && i < material_->count(); ++i)
+            same = material_->itemText(i).toStdString() == scene.materials[i].name;
+        if (!same) {
+            material_->clear();
+            for (const Material& m : scene.materials)
+                material_->addItem(QString::fromStdString(m.name));
+        }
+        material_->setCurrentIndex(findMaterial(scene, sphere.material));
+    }
+    const int users = spheresUsing(scene, sphere.material);
+    users_->setText(users > 1 ? tr("Shared by %1 spheres").arg(users)
+                              : tr("Used by this sphere only"));
+    makeUnique_->setEnabled(users > 1);
+}
+
+}  // namespace whitted::ui

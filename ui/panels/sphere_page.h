@@ -1,0 +1,48 @@
+// The sphere page of the property panel: centre, radius, and the sphere's
+// material in place (which one, how many spheres share it, its main finish,
+// and "Make unique" to give this sphere a copy of its own).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include <QWidget>
+
+#include "document/scene_document.h"
+
+class QComboBox;
+class QLabel;
+class QPushButton;
+
+namespace whitted::ui {
+
+class DoubleField;
+class MaterialRows;
+
+class SpherePage : public QWidget {
+    Q_OBJECT
+  public:
+    explicit SpherePage(SceneDocument* doc, QWidget* parent = nullptr);
+    ~SpherePage() override;
+
+    void setIndex(int index);  // the sphere shown; refreshes
+    void refresh();            // re-reads the scene; emits nothing
+
+  private:
+    QWidget* buildMaterialChoice();
+    void refreshMaterialChoice(const Sphere& sphere);
+    int materialIndex(const Scene& scene) const;  // of the shown sphere's material, or -1
+    QString sphereName() const;
+    QString materialName() const;
+
+    SceneDocument* doc_;
+    int index_ = -1;
+    QLabel* name_;
+    QComboBox* material_ = nullptr;
+    QLabel* users_ = nullptr;
+    QPushButton* makeUnique_ = nullptr;
+    std::vector<DoubleField*> fields_;
+    std::unique_ptr<MaterialRows> materialRows_;
+};
+
+}  // namespace whitted::ui

@@ -1,0 +1,156 @@
+#include "tradeoff_dock/settings_prediction.h"
+
+#include <QObject>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace whitted::ui {
+
+namespace {
+
+QString precisionText(Precision p) {
+    const auto name = precisionName(p);
+    return QString::fromUtf8(name.data(), qsizetype(name.size()));
+}
+
+// "4 spp, depth 2, float, 640 × 480"
+QString settingsText(const RenderSettings& r) {
+    return QObject::tr("%1 spp, depth %2, %3, %4 × %5")
+        .arg(r.samplesPerPixel)
+        .arg(r.maxDepth)
+        .arg(precisionText(r.precision))
+        .arg(r.width)
+        .arg(r.height);
+}
+
+// Pixels times samples: what a render's time grows with at fixed depth and precision.
+double work(const RenderSettings& r) {
+    return double(r.width) * double(r.height) * double(r.samplesPerPixel);
+}
+
+void timeFromRenders(const RenderSettings& want, const std::vector<EditorRender>& renders,
+                     Prediction& p) {
+    if (renders.empty()) {
+        p.timeSource = QObject::tr("no render has finished yet");
+        return;
+    }
+    for (auto r = renders.rbegin(); r != renders.rend(); ++r)
+        if (r->settings == want) {
+            p.seconds = r->seconds;
+            p.timeSource = QObject::tr("measured: the last render at these settings");
+            return;
+        }
+    // Rays per second stay put while depth and precision do; the ray count
+    // grows with pixels times samples.
+    auto scaled = [&](const EditorRender& r, const QString& source) {
+        p.seconds = r.seconds * work(want) / work(r.settings);
+        const double mrays = r.seconds > 0 ? double(r.rays) / r.seconds / 1e6 : 0.0;
+        p.timeSource = source.arg(settingsText(r.settings)).arg(mrays, 0, 'f', 1);
+    };
+    for (auto r = renders.rbegin(); r != renders.rend(); ++r)
+        if (r->settings.maxDepth == want.maxDepth && r->settings.precision == want.precision) {
+            scaled(*r, QObject::tr("estimated from the last render at %1 (%2 Mrays/s)"));
+            return;
+        }
+    scaled(renders.back(), QObject::tr("rough estimate from the last render at %1 (%2 Mrays/s); "
+                                       "depth and precision change the rays and their speed"));
+}
+
+// The points of Measure's grid at the settings' depth, precision and size,
+// by sample count.
+std::vector<const TradeoffPoint*> samplesLine(const MeasureResults& m, const RenderSettings& r) {
+    std::vector<const TradeoffPoint*> line;
+    for (const TradeoffPoint& p : m.points)
+        if (p.settings.maxDepth == r.maxDepth && p.settings.precision == r.precision &&
+            p.width == r.width && p.height == r.height)
+            line.push_back(&p);
+    std::sort(line.begin(), line.end(), [](auto* a, auto* b) {
+        return a->settings.samplesPerPixel < b->settings.samplesPerPixel;
+    });
+    return line;
+}
+
+double psnrOf(double rmseSrgb8) {
+    return rmseSrgb8 > 0 ? 20.0 * std::log10(255.0 / rmseSrgb8)
+                         : std::numeric_limits<double>::infinity();
+}
+
+enum class Coverage { None, Interpolated, Exact };
+
+// Fills error and time from Measure; with no cover, the reason in errorSource.
+Coverage fromMeasure(const MeasureResults& m, const RenderSettings& want, Prediction& p) {
+    const auto line = samplesLine(m, want);
+    if (line.empty()) {
+        p.errorSource = QObject::tr("Measure has no point at depth %1, %2, %3 × %4")
+                            .arg(want.maxDepth)
+                            .arg(precisionText(want.precision))
+                            .arg(want.width)
+                            .arg(want.height);
+        return Coverage::None;
+    }
+    const int spp = want.samplesPerPixel;
+    const auto upper = std::find_if(line.begin(), line.end(),
+                                    [&](auto* q) { return q->settings.samplesPerPixel >= spp; });
+    if (upper != line.end() && (*upper)->settings.samplesPerPixel == spp) {
+        p.rmseSrgb8 = (*upper)->error.rmseSrgb8;
+        p.psnrSrgb8 = (*upper)->error.psnrSrgb8;
+        p.errorSource = QObject::tr("measured by Measure");
+        p.seconds = (*upper)->seconds;
+        p.timeSource = QObject::tr("measured by Measure");
+        return Coverage::Exact;
+    }
+    if (upper == line.end() || upper == line.begin()) {
+        p.errorSource = QObject::tr("outside Measure's grid (%1 to %2 spp at this depth)")
+                            .arg(line.front()->settings.samplesPerPixel)
+                            .arg(line.back()->settings.samplesPerPixel);
+        return Coverage::None;
+    }
+    const TradeoffPoint& lo = **(upper - 1);
+    const TradeoffPoint& hi = **upper;
+    const double s0 = lo.settings.samplesPerPixel, s1 = hi.settings.samplesPerPixel;
+    const double t = std::log(spp / s0) / std::log(s1 / s0);
+    const double e0 = lo.error.rmseSrgb8, e1 = hi.error.rmseSrgb8;
+    const double e = e0 > 0 && e1 > 0 ? std::exp(std::log(e0) + t * (std::log(e1) - std::log(e0)))
+                                      : e0 + t * (e1 - e0);
+    p.rmseSrgb8 = e;
+    p.psnrSrgb8 = psnrOf(e);
+    p.errorSource = QObject::tr("interpolated from Measure between %1 and %2 spp").arg(s0).arg(s1);
+    // Time grows with the samples, not with their logarithm.
+    p.seconds = lo.seconds + (spp - s0) / (s1 - s0) * (hi.seconds - lo.seconds);
+    p.timeSource = p.errorSource;
+    return Coverage::Interpolated;
+}
+
+}  // namespace
+
+bool sameSceneContent(const Scene& a, const Scene& b) {
+    // Field by field rather than comparing a copy with a's settings: the
+    // editor asks on every edit, and a scene may hold 100,000 spheres.
+    return a.camera == b.camera && a.background == b.background && a.ambient == b.ambient &&
+           a.materials == b.materials && a.lights == b.lights && a.spheres == b.spheres;
+}
+
+Prediction predictSettings(const Scene& scene, const std::vector<EditorRender>& renders,
+                           const MeasureResults* measure, const RenderSettings* settings) {
+    Prediction p;
+    const RenderSettings& want = settings ? *settings : scene.render;
+    if (!measure) {
+        p.errorSource = QObject::tr("Measure gives an error prediction");
+    } else if (!sameSceneContent(scene, measure->scene)) {
+        p.errorSource = QObject::tr(
+            "the scene changed since Measure: measure again for an "
+            "error prediction");
+    } else {
+        const Coverage c = fromMeasure(*measure, want, p);
+        // An interpolated time yields to the editor's own renders, which come
+        // from the very settings or a plain scaling of them.
+        if (c == Coverage::Exact || (c == Coverage::Interpolated && renders.empty())) return p;
+        p.seconds.reset();
+    }
+    timeFromRenders(want, renders, p);
+    return p;
+}
+
+}  // namespace whitted::ui

@@ -1,0 +1,61 @@
+// What the Render tab predicts for a scene's render settings: the time from
+// throughput measured in the editor or by Measure, the error from Measure's
+// grid. Every prediction names where its numbers come from, so the label never
+// passes off an estimate as a measurement.
+#pragma once
+
+#include <QString>
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "analysis/tradeoff.h"
+#include "scene/scene.h"
+
+namespace whitted::ui {
+
+// A render the editor finished: its settings, wall time and ray count.
+struct EditorRender {
+    RenderSettings settings;
+    double seconds = 0.0;
+    std::uint64_t rays = 0;
+};
+
+// What a Measure run left: the grid's points against its reference.
+struct MeasureResults {
+    Scene scene;  // as measured; its render size is scale 1
+    std::vector<TradeoffPoint> points;
+    int total = 0;           // points in the grid; more than points.size() when cancelled
+    bool cancelled = false;  // stopped before the grid was done
+    int referenceSamples = 0;
+    int referenceDepth = 0;
+    double referenceSeconds = 0.0;
+    double seconds = 0.0;  // the whole run, reference included
+};
+
+struct Prediction {
+    std::optional<double> seconds;
+    QString timeSource;  // "measured by Measure", "estimated from the last render …"
+    std::optional<double> rmseSrgb8;
+    std::optional<double> psnrSrgb8;
+    QString errorSource;  // where the error comes from, or why there is none
+};
+
+// Whether two scenes differ at most in their render settings: Measure's errors
+// hold for any settings of the scene it measured, and for nothing else.
+bool sameSceneContent(const Scene& a, const Scene& b);
+
+// Predicts time and error of rendering `scene` with `settings` (its own when
+// not given; a preset's without a copy of the scene).
+// `renders` is the editor's history, newest last; `measure` may be null.
+//  - Both from Measure when its grid holds the settings at the scene's size.
+//  - Otherwise the time from the editor's renders: the newest one with the
+//    same settings, else one with the same depth and precision scaled by
+//    pixels times samples, else the newest scaled the same way (rough).
+//  - The error interpolated between Measure's neighbouring sample counts (log-
+//    log, as error falls like a power of the samples), else none, with the reason.
+Prediction predictSettings(const Scene& scene, const std::vector<EditorRender>& renders,
+                           const MeasureResults* measure, const RenderSettings* settings = nullptr);
+
+}  // namespace whitted::ui

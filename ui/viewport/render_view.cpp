@@ -1,0 +1,276 @@
+#include "viewport/render_view.h"
+
+#include <QMouseEvent>
+#include <QPainter>
+#include <QWheelEvent>
+
+#include <cmath>
+#include <functional>
+#include <vector>
+
+#include "camera/camera_control.h"
+#include "document/scene_document.h"
+
+namespace whitted::ui {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kClickSlop = 4;           // pixels a press may move and still be a click
+constexpr double kKeyOrbit = kPi / 36;  // 5 degrees per arrow key
+constexpr double kKeyWalk = 0.05;       // of the distance to look_at per W/A/S/D/Q/E
+}  // namespace
+
+RenderView::RenderView(SceneDocument* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
+    setFocusPolicy(Qt::StrongFocus);
+    setMouseTracking(true);  // the name of what is under the cursor
+    setMinimumSize(160, 120);
+    setAttribute(Qt::WA_OpaquePaintEvent);
+    buildCameraActions();
+    // The overlay follows the camera at once; the picture follows when rendered.
+    connect(doc_, &SceneDocument::sceneChanged, this, qOverload<>(&QWidget::update));
+}
+
+void RenderView::setFrame(const QImage& image, QSizeF shown) {
+    frame_ = image;
+    frameShown_ = QRectF(QPointF(0, 0), shown.isEmpty() ? QSizeF(image.size()) : shown);
+    update();
+}
+
+void RenderView::setHomeCamera(const Camera& camera) {
+    home_ = camera;
+    pivot_.reset();
+}
+
+void RenderView::setSelection(ItemKind kind, int index) {
+    overlay_.selectedKind = kind;
+    overlay_.selectedIndex = index;
+    update();
+}
+
+QRect RenderView::imageRect() const {
+    const Scene& s = doc_->scene();
+    QSize size(s.render.width, s.render.height);
+    size.scale(this->size(), Qt::KeepAspectRatio);
+    return {QPoint((width() - size.width()) / 2, (height() - size.height()) / 2), size};
+}
+
+void RenderView::paintEvent(QPaintEvent*) {
+    QPainter p(this);
+    p.fillRect(rect(), QColor(45, 45, 48));
+    if (frame_.isNull()) return;
+    // Scaled while a new frame is on its way: the old image, stretched, beats a blank.
+    p.setRenderHint(QPainter::SmoothPixmapTransform, frame_.width() > imageRect().width());
+    p.drawImage(QRectF(imageRect()), frame_, frameShown_);
+    paintViewOverlay(p, doc_->scene(), imageRect(), overlay_);
+}
+
+void RenderView::moveCamera(const QString& text, const Camera& camera, EditRun run) {
+    doc_->edit(
+        text, [&](Scene& s) { s.camera = camera; }, nullptr, run);
+}
+
+std::optional<Vec3> RenderView::surfaceAt(const QPointF& pos) const {
+    const QRect r = imageRect();
+    if (!r.contains(pos.toPoint())) return std::nullopt;
+    const QPointF image = imagePoint(doc_->scene(), r, pos);
+    const auto pick = pickSurface(doc_->scene(), image.x(), image.y());
+    if (!pick) return std::nullopt;
+    return pick->point;
+}
+
+QPair<ItemKind, int> RenderView::itemAt(const QPointF& pos) const {
+    const QRect r = imageRect();
+    const Scene& s = doc_->scene();
+    if (!r.contains(pos.toPoint())) return {ItemKind::Sphere, -1};
+    if (const int light = lightMarkerAt(s, r, pos); light >= 0) return {ItemKind::Light, light};
+    const QPointF image = imagePoint(s, r, pos);
+    return {ItemKind::Sphere, pickSphere(s, image.x(), image.y()).value_or(-1)};
+}
+
+Vec3 RenderView::keyPivot() const {
+    if (pivot_) return *pivot_;
+    const QRect r = imageRect();
+    return surfaceAt(QPointF(r.center()) + QPointF(0.5, 0.5)).value_or(doc_->scene().camera.lookAt);
+}
+
+void RenderView::updateHover(const QPoint& pos) {
+    const auto [kind, index] = itemAt(pos);
+    const QString text =
+        index < 0 ? QString()
+                  : tr("%1 (%2)").arg(itemName(doc_->scene(), kind, index),
+                                      kind == ItemKind::Light ? tr("light") : tr("sphere"));
+    if (text == overlay_.hoverText && (text.isEmpty() || pos == overlay_.hoverPos)) return;
+    overlay_.hoverText = text;
+    overlay_.hoverPos = pos;
+    update();
+}
+
+void RenderView::leaveEvent(QEvent*) {
+    overlay_.hoverText.clear();
+    update();
+}
+
+void RenderView::mousePressEvent(QMouseEvent* e) {
+    setFocus();
+    if (dragButton_ != Qt::NoButton) return;
+    dragButton_ = e->button();
+    pressPos_ = lastPos_ = e->position().toPoint();
+    dragging_ = false;
+}
+
+void RenderView::mouseMoveEvent(QMouseEvent* e) {
+    const QPoint pos = e->position().toPoint();
+    if (dragButton_ == Qt::NoButton) {
+        updateHover(pos);
+        return;
+    }
+    if (!dragging_) {
+        if ((pos - pressPos_).manhattanLength() < kClickSlop) return;
+        dragging_ = true;
+        overlay_.hoverText.clear();
+        const bool orbiting = dragButton_ == Qt::LeftButton;
+        if (orbiting) {
+            // Turn about what the user grabbed; the background grabs the last pivot.
+            pivot_ = surfaceAt(pressPos_).value_or(keyPivot());
+            overlay_.pivot = pivot_;
+        }
+        doc_->beginGesture(orbiting ? tr("Orbit camera") : tr("Pan camera"));
+    }
+    const QPoint delta = pos - lastPos_;
+    lastPos_ = pos;
+    const double h = std::max(1, imageRect().height());
+    const Camera& c = doc_->scene().camera;
+    if (dragButton_ == Qt::LeftButton) {
+        // A drag across the image's height turns the camera half way round;
+        // up raises the eye and left takes it left, as the arrow keys do.
+        moveCamera(tr("Orbit camera"),
+                   orbitAbout(c, *pivot_, -delta.x() * kPi / h, -delta.y() * kPi / h),
+                   EditRun::Separate);
+    } else {
+        // The scene point under the cursor stays under it at look_at's depth.
+        const double scale = 2.0 * std::tan(c.vfovDegrees * kPi / 360.0) / h;
+        pivot_.reset();
+        moveCamera(tr("Pan camera"), pan(c, -delta.x() * scale, delta.y() * scale),
+                   EditRun::Separate);
+    }
+}
+
+void RenderView::mouseReleaseEvent(QMouseEvent* e) {
+    if (e->button() != dragButton_) return;
+    dragButton_ = Qt::NoButton;
+    if (dragging_) {
+        dragging_ = false;
+        overlay_.pivot.reset();
+        update();
+        doc_->endGesture();
+        return;
+    }
+    if (e->button() != Qt::LeftButton) return;
+    const auto [kind, index] = itemAt(e->position());
+    emit picked(kind, index);
+}
+
+void RenderView::wheelEvent(QWheelEvent* e) {
+    const double steps = e->angleDelta().y() / 120.0;
+    if (steps == 0) return;
+    // Towards what is under the cursor, which stays under it; over the
+    // background, towards the pivot the keys would turn about.
+    const Vec3 target = surfaceAt(e->position()).value_or(keyPivot());
+    moveCamera(tr("Dolly camera"), dollyToward(doc_->scene().camera, target, std::pow(0.9, steps)));
+    e->accept();
+}
+
+void RenderView::resetCamera() {
+    pivot_.reset();
+    moveCamera(tr("Reset camera"), home_, EditRun::Separate);
+}
+
+void RenderView::frameSelectedSphere() {
+    const Scene& s = doc_->scene();
+    const int selected = overlay_.selectedIndex;
+    if (overlay_.selectedKind != ItemKind::Sphere || selected < 0 ||
+        selected >= int(s.spheres.size()))
+        return;
+    const Sphere& sp = s.spheres[selected];
+    pivot_ = sp.center;
+    moveCamera(tr("Frame %1").arg(QString::fromStdString(sp.name)),
+               frameSphere(s.camera, sp.center, sp.radius), EditRun::Separate);
+}
+
+void RenderView::buildCameraActions() {
+    // Each action calls the camera code itself: never a synthetic key event,
+    // which would come back to the same shortcut (it overflowed the stack).
+    struct Entry {
+        const char* name;
+        QString text;
+        QList<QKeySequence> keys;
+        std::function<void()> run;
+        // Reset and Frame also sit in the View menu, so they work from anywhere.
+        Qt::ShortcutContext context = Qt::WidgetShortcut;
+    };
+    auto move = [this](QString text, std::function<Camera(const Camera&)> f) {
+        return [this, text, f] { moveCamera(text, f(doc_->scene().camera)); };
+    };
+    auto turn = [this](double yaw, double pitch) {
+        return [this, yaw, pitch] {
+            const Vec3 pivot = keyPivot();
+            pivot_ = pivot;  // a run of presses keeps turning about the same point
+            moveCamera(tr("Orbit camera"), orbitAbout(doc_->scene().camera, pivot, yaw, pitch));
+        };
+    };
+    auto walkBy = [this](double right, double up, double forward) {
+        return [this, right, up, forward] {
+            pivot_.reset();
+            moveCamera(tr("Move camera"), walk(doc_->scene().camera, right, up, forward));
+        };
+    };
+    const std::vector<Entry> entries = {
+        {"orbitLeft", tr("Orbit Left"), {Qt::Key_Left}, turn(kKeyOrbit, 0)},
+        {"orbitRight", tr("Orbit Right"), {Qt::Key_Right}, turn(-kKeyOrbit, 0)},
+        {"orbitUp", tr("Orbit Up"), {Qt::Key_Up}, turn(0, kKeyOrbit)},
+        {"orbitDown", tr("Orbit Down"), {Qt::Key_Down}, turn(0, -kKeyOrbit)},
+        {"walkForward", tr("Walk Forward"), {Qt::Key_W}, walkBy(0, 0, kKeyWalk)},
+        {"walkBack", tr("Walk Back"), {Qt::Key_S}, walkBy(0, 0, -kKeyWalk)},
+        {"walkLeft", tr("Walk Left"), {Qt::Key_A}, walkBy(-kKeyWalk, 0, 0)},
+        {"walkRight", tr("Walk Right"), {Qt::Key_D}, walkBy(kKeyWalk, 0, 0)},
+        {"walkUp", tr("Rise"), {Qt::Key_E}, walkBy(0, kKeyWalk, 0)},
+        {"walkDown", tr("Sink"), {Qt::Key_Q}, walkBy(0, -kKeyWalk, 0)},
+        {"zoomIn",
+         tr("Zoom In"),
+         {Qt::Key_Plus, Qt::Key_Equal},
+         move(tr("Zoom"), [](const Camera& c) { return zoom(c, 0.9); })},
+        {"zoomOut",
+         tr("Zoom Out"),
+         {Qt::Key_Minus},
+         move(tr("Zoom"), [](const Camera& c) { return zoom(c, 1 / 0.9); })},
+        {"resetCamera",
+         tr("Reset Camera"),
+         {Qt::Key_Home},
+         [this] { resetCamera(); },
+         Qt::WindowShortcut},
+        {"frameSelected",
+         tr("Frame Selected Sphere"),
+         {Qt::Key_F},
+         [this] { frameSelectedSphere(); },
+         Qt::WindowShortcut},
+    };
+    for (const Entry& e : entries) {
+        auto* action = new QAction(e.text, this);
+        action->setObjectName(QLatin1String(e.name));
+        action->setShortcuts(e.keys);
+        action->setShortcutContext(e.context);
+        connect(action, &QAction::triggered, this, e.run);
+        addAction(action);
+        cameraActions_.push_back(action);
+    }
+}
+
+QList<QPair<QString, QString>> RenderView::mouseControls() {
+    return {{tr("Left drag"), tr("Orbit the camera about the point where the drag starts")},
+            {tr("Right or middle drag"), tr("Pan the camera")},
+            {tr("Wheel"), tr("Move the camera nearer to or farther from what is under the cursor")},
+            {tr("Click"), tr("Select the sphere or light under the cursor")},
+            {tr("Hover"), tr("Show the name of the sphere or light under the cursor")}};
+}
+
+}  // namespace whitted::ui

@@ -1,0 +1,115 @@
+// The editor's renderer thread (the restart loop of Qt's Mandelbrot example).
+//
+// The GUI calls request() with a snapshot of the scene on every edit; that bumps
+// a generation number and returns at once. The thread renders the newest
+// request progressively (core's renderer: preview, full resolution, more
+// samples) and hands frames to the GUI through queued signals. A render asks
+// "should I stop?" before every tile row, and the answer is yes as soon as a
+// newer request exists, so a stale render ends within a row of work. Every frame
+// carries its generation; the GUI drops frames older than its last request.
+#pragma once
+
+#include <QImage>
+#include <QObject>
+#include <QString>
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+#include "scene/scene.h"
+#include "tracer/renderer.h"
+
+namespace whitted::ui {
+
+// The view never needs more pixels than a screen has: a scene larger than this
+// on its long side is rendered for the view at a reduced size (same camera and
+// aspect), so that opening a 16384x16384 scene neither allocates nor copies
+// gigabytes per frame. Export renders the full size.
+inline constexpr int kMaxViewSize = 2048;
+
+// The scene as the view renders it: render size capped at kMaxViewSize. By
+// value, so that the worker moves its request in rather than copying it.
+Scene viewSized(Scene scene);
+
+struct RenderFrame {
+    quint64 generation = 0;
+    // 8-bit sRGB at the scene's render size (viewSized()); a preview frame
+    // holds one pixel per block of `block` x `block` render pixels.
+    QImage image;
+    int block = 1;
+    int pass = 0;  // 0-based pass the frame belongs to
+    int passCount = 0;
+    bool preview = false;         // the coarse first pass
+    bool passComplete = false;    // every tile of `pass` is in the image
+    bool renderComplete = false;  // the last pass is complete: nothing more will come
+    int samples = 0;              // samples per pixel of the finished pixels (0 during the preview)
+    double seconds = 0.0;         // since the render started
+    double mraysPerSecond = 0.0;
+    RenderSettings settings;  // what the frame is rendered with
+    // Only in the complete frame: the linear image itself, shared rather than
+    // copied (the trade-off dock measures errors on it), and its ray count.
+    std::shared_ptr<const Image> linear;
+    std::uint64_t rays = 0;
+};
+
+class RenderWorker : public QObject {
+    Q_OBJECT
+  public:
+    explicit RenderWorker(QObject* parent = nullptr);
+    ~RenderWorker() override;  // stops the current render and joins the thread
+
+    // Starts rendering `scene` as soon as the current render has stopped;
+    // returns the request's generation. Never blocks on the renderer. The
+    // scene must pass validateScene(), as the document's always does; the
+    // render does not check it again.
+    quint64 request(const Scene& scene);
+    quint64 latestGeneration() const { return generation_.load(); }
+
+    // How often frames are sent while a pass is in progress.
+    static constexpr int kFrameIntervalMs = 40;
+
+    // How the renders so far got their sphere trees (built or refit). Read it
+    // between renders: the render thread updates it.
+    int bvhBuilds() const { return bvhBuilds_.load(); }
+    int bvhRefits() const { return bvhRefits_.load(); }
+
+  signals:
+    // In the GUI thread (the thread this object lives in), every frame in order.
+    void frameReady(const whitted::ui::RenderFrame& frame);
+    // From the render thread: a frame is waiting in the outbox.
+    void framePosted();
+
+  private:
+    void run();
+    void renderOne(Scene requested, quint64 generation);
+    // The render thread's frames pass through an outbox guarded by our own
+    // mutex rather than inside Qt's queued signal: the hand-over is then a
+    // synchronisation ThreadSanitizer can see (Qt's event queue is not
+    // instrumented, and the stress test's frames looked like races).
+    void post(RenderFrame frame);
+    void deliver();  // GUI thread: takes the oldest frame and emits frameReady
+
+    std::mutex outboxMutex_;
+    std::deque<RenderFrame> outbox_;  // guarded by outboxMutex_
+
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    std::optional<Scene> pending_;  // guarded by mutex_
+    bool quit_ = false;             // guarded by mutex_
+    std::atomic<quint64> generation_{0};
+    std::atomic<bool> quitting_{false};
+    // Only the render thread touches the cache; the counts are copied out.
+    BvhCache bvhCache_;
+    std::atomic<int> bvhBuilds_{0}, bvhRefits_{0};
+    std::thread thread_;
+};
+
+}  // namespace whitted::ui
+
+Q_DECLARE_METATYPE(whitted::ui::RenderFrame)

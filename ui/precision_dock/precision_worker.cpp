@@ -30,68 +30,36 @@ void lowerThisThreadsPriority() {
 
 }  // namespace
 
-PrecisionWorker::PrecisionWorker(QObject* parent) : QObject(parent) {
+PrecisionWorker::PrecisionWorker(QObject* parent)
+    : QObject(parent),
+      requests_(
+          RequestThread<Request>::Policy::LatestWins,
+          [this](Request&& request, quint64 generation) { compare(request, generation); },
+          lowerThisThreadsPriority) {
     qRegisterMetaType<whitted::ui::PrecisionResult>();
-    thread_ = std::thread([this] { run(); });
-}
-
-PrecisionWorker::~PrecisionWorker() {
-    {
-        std::lock_guard lock(mutex_);
-        quit_ = true;
-    }
-    quitting_ = true;
-    wake_.notify_one();
-    thread_.join();
 }
 
 quint64 PrecisionWorker::request(const Scene& scene, QSize size) {
-    quint64 generation;
-    {
-        // Only the copy of the scene happens under the lock.
-        std::lock_guard lock(mutex_);
-        pending_ = Request{scene, size};
-        generation = ++generation_;
-    }
-    wake_.notify_one();
-    return generation;
+    return requests_.request({scene, size});
 }
 
 void PrecisionWorker::cancel() {
-    std::lock_guard lock(mutex_);
-    pending_.reset();
-    ++generation_;
+    requests_.cancel();
 }
 
-void PrecisionWorker::run() {
-    lowerThisThreadsPriority();
-    for (;;) {
-        Request request;
-        quint64 generation;
-        {
-            std::unique_lock lock(mutex_);
-            wake_.wait(lock, [this] { return quit_ || pending_.has_value(); });
-            if (quit_) return;
-            request = std::move(*pending_);
-            pending_.reset();
-            generation = generation_.load();
-        }
-        const auto start = std::chrono::steady_clock::now();
-        const auto stop = [&] {
-            return quitting_.load(std::memory_order_relaxed) ||
-                   generation_.load(std::memory_order_relaxed) != generation;
-        };
-        PrecisionResult result;
-        result.comparison =
-            comparePrecisions(request.scene, request.size.width(), request.size.height(), stop);
-        if (result.comparison.stopped) continue;  // superseded or cancelled
-        result.generation = generation;
-        result.heatMap = toQImage(result.comparison.heatMap);
-        result.comparison.heatMap = Image();
-        result.seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        emit comparisonReady(result);
-    }
+void PrecisionWorker::compare(const Request& request, quint64 generation) {
+    const auto start = std::chrono::steady_clock::now();
+    const auto stop = [&] { return requests_.stale(generation); };
+    PrecisionResult result;
+    result.comparison =
+        comparePrecisions(request.scene, request.size.width(), request.size.height(), stop);
+    if (result.comparison.stopped) return;  // superseded or cancelled
+    result.generation = generation;
+    result.heatMap = toQImage(result.comparison.heatMap);
+    result.comparison.heatMap = Image();
+    result.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    emit comparisonReady(result);
 }
 
 }  // namespace whitted::ui

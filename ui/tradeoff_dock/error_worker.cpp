@@ -4,51 +4,26 @@
 
 namespace whitted::ui {
 
-ErrorWorker::ErrorWorker(QObject* parent) : QObject(parent) {
+ErrorWorker::ErrorWorker(QObject* parent)
+    : QObject(parent),
+      jobs_(RequestThread<ErrorJob>::Policy::EveryRequest,
+            [this](ErrorJob&& job, quint64 ticket) { measure(job, ticket); }) {
     qRegisterMetaType<whitted::ErrorStats>();
-    thread_ = std::thread([this] { run(); });
-}
-
-ErrorWorker::~ErrorWorker() {
-    {
-        std::lock_guard lock(mutex_);
-        quit_ = true;
-    }
-    wake_.notify_one();
-    thread_.join();
 }
 
 void ErrorWorker::submit(ErrorJob job) {
-    {
-        std::lock_guard lock(mutex_);
-        queue_.push_back(std::move(job));
-    }
-    wake_.notify_one();
+    jobs_.request(std::move(job));
 }
 
 void ErrorWorker::clear() {
-    std::lock_guard lock(mutex_);
-    queue_.clear();
-    ++epoch_;
+    jobs_.cancel();
 }
 
-void ErrorWorker::run() {
-    for (;;) {
-        ErrorJob job;
-        quint64 epoch;
-        {
-            std::unique_lock lock(mutex_);
-            wake_.wait(lock, [this] { return quit_ || !queue_.empty(); });
-            if (quit_) return;
-            job = std::move(queue_.front());
-            queue_.pop_front();
-            epoch = epoch_.load();
-        }
-        const ErrorStats error = measureError(*job.image, *job.reference);
-        // Not under the lock: emitting posts an event, but a clear() that
-        // races past this check is caught by the GUI's own id bookkeeping.
-        if (epoch == epoch_.load()) emit measured(job.id, error);
-    }
+void ErrorWorker::measure(const ErrorJob& job, quint64 ticket) {
+    const ErrorStats error = measureError(*job.image, *job.reference);
+    // A clear() that races past this check is caught by the GUI's own id
+    // bookkeeping.
+    if (!jobs_.stale(ticket)) emit measured(job.id, error);
 }
 
 }  // namespace whitted::ui

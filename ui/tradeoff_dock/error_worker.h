@@ -2,20 +2,17 @@
 // computed on a thread of their own: at 640 × 480 one takes tens of
 // milliseconds (an sRGB encode per channel), at 4K the better part of a second.
 //
-// Jobs run in the order given, each exactly once; a result comes back through
-// a queued signal with the job's id. clear() drops the waiting jobs and makes
-// the running one's result be dropped too (after Unpin nothing may come back).
+// Jobs run in the order given, each exactly once (core/base/request_thread.h,
+// every request); a result comes back through a queued signal with the job's
+// id. clear() drops the waiting jobs and makes the running one's result be
+// dropped too (after Unpin nothing may come back).
 #pragma once
 
 #include <QObject>
 
-#include <atomic>
-#include <condition_variable>
-#include <deque>
 #include <memory>
-#include <mutex>
-#include <thread>
 
+#include "base/request_thread.h"
 #include "image/image.h"
 #include "image/image_error.h"
 
@@ -31,7 +28,7 @@ class ErrorWorker : public QObject {
     Q_OBJECT
   public:
     explicit ErrorWorker(QObject* parent = nullptr);
-    ~ErrorWorker() override;  // finishes the running job and joins the thread
+    ~ErrorWorker() override = default;  // finishes the running job and joins the thread
 
     void submit(ErrorJob job);
     void clear();
@@ -40,14 +37,9 @@ class ErrorWorker : public QObject {
     void measured(quint64 id, const whitted::ErrorStats& error);
 
   private:
-    void run();
+    void measure(const ErrorJob& job, quint64 ticket);
 
-    std::mutex mutex_;
-    std::condition_variable wake_;
-    std::deque<ErrorJob> queue_;     // guarded by mutex_
-    bool quit_ = false;              // guarded by mutex_
-    std::atomic<quint64> epoch_{0};  // bumped by clear(): results of older epochs are dropped
-    std::thread thread_;
+    RequestThread<ErrorJob> jobs_;
 };
 
 }  // namespace whitted::ui

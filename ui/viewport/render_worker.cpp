@@ -11,10 +11,13 @@
 
 namespace whitted::ui {
 
-RenderWorker::RenderWorker(QObject* parent) : QObject(parent) {
+RenderWorker::RenderWorker(QObject* parent)
+    : QObject(parent),
+      requests_(
+          RequestThread<Scene>::Policy::LatestWins,
+          [this](Scene&& scene, quint64 generation) { renderOne(std::move(scene), generation); }) {
     qRegisterMetaType<whitted::ui::RenderFrame>();
     connect(this, &RenderWorker::framePosted, this, &RenderWorker::deliver, Qt::QueuedConnection);
-    thread_ = std::thread([this] { run(); });
 }
 
 void RenderWorker::post(RenderFrame frame) {
@@ -36,42 +39,8 @@ void RenderWorker::deliver() {
     emit frameReady(frame);
 }
 
-RenderWorker::~RenderWorker() {
-    {
-        std::lock_guard lock(mutex_);
-        quit_ = true;
-    }
-    quitting_ = true;
-    wake_.notify_one();
-    thread_.join();
-}
-
 quint64 RenderWorker::request(const Scene& scene) {
-    quint64 generation;
-    {
-        // Only the copy of the scene happens under the lock.
-        std::lock_guard lock(mutex_);
-        pending_ = scene;
-        generation = ++generation_;
-    }
-    wake_.notify_one();
-    return generation;
-}
-
-void RenderWorker::run() {
-    for (;;) {
-        Scene scene;
-        quint64 generation;
-        {
-            std::unique_lock lock(mutex_);
-            wake_.wait(lock, [this] { return quit_ || pending_.has_value(); });
-            if (quit_) return;
-            scene = std::move(*pending_);
-            pending_.reset();
-            generation = generation_.load();
-        }
-        renderOne(std::move(scene), generation);
-    }
+    return requests_.request(scene);
 }
 
 Scene viewSized(Scene scene) {
@@ -121,10 +90,7 @@ void RenderWorker::renderOne(Scene requested, quint64 generation) {
         return frame;
     };
 
-    const auto shouldStop = [&] {
-        return quitting_.load(std::memory_order_relaxed) ||
-               generation_.load(std::memory_order_relaxed) != generation;
-    };
+    const auto shouldStop = [&] { return requests_.stale(generation); };
     RenderProgress lastProgress;
     const auto onTile = [&](const TileUpdate& t) {
         const bool isPreview = t.progress.kind == PassKind::Preview;

@@ -1,12 +1,13 @@
 // The editor's renderer thread (the restart loop of Qt's Mandelbrot example).
 //
-// The GUI calls request() with a snapshot of the scene on every edit; that bumps
-// a generation number and returns at once. The thread renders the newest
-// request progressively (core's renderer: preview, full resolution, more
-// samples) and hands frames to the GUI through queued signals. A render asks
-// "should I stop?" before every tile row, and the answer is yes as soon as a
-// newer request exists, so a stale render ends within a row of work. Every frame
-// carries its generation; the GUI drops frames older than its last request.
+// The GUI calls request() with a snapshot of the scene on every edit; that
+// returns at once with the request's generation (core/base/request_thread.h,
+// the newest request wins). The thread renders the newest request progressively
+// (core's renderer: preview, full resolution, more samples) and hands frames to
+// the GUI through queued signals. A render asks "should I stop?" before every
+// tile row, and the answer is yes as soon as a newer request exists, so a stale
+// render ends within a row of work. Every frame carries its generation; the GUI
+// drops frames older than its last request.
 #pragma once
 
 #include <QImage>
@@ -14,14 +15,12 @@
 #include <QString>
 
 #include <atomic>
-#include <condition_variable>
 #include <cstdint>
 #include <deque>
 #include <memory>
 #include <mutex>
-#include <optional>
-#include <thread>
 
+#include "base/request_thread.h"
 #include "scene/scene.h"
 #include "tracer/renderer.h"
 
@@ -62,14 +61,14 @@ class RenderWorker : public QObject {
     Q_OBJECT
   public:
     explicit RenderWorker(QObject* parent = nullptr);
-    ~RenderWorker() override;  // stops the current render and joins the thread
+    ~RenderWorker() override = default;  // stops the current render and joins the thread
 
     // Starts rendering `scene` as soon as the current render has stopped;
     // returns the request's generation. Never blocks on the renderer. The
     // scene must pass validateScene(), as the document's always does; the
     // render does not check it again.
     quint64 request(const Scene& scene);
-    quint64 latestGeneration() const { return generation_.load(); }
+    quint64 latestGeneration() const { return requests_.latestTicket(); }
 
     // How often frames are sent while a pass is in progress.
     static constexpr int kFrameIntervalMs = 40;
@@ -86,7 +85,6 @@ class RenderWorker : public QObject {
     void framePosted();
 
   private:
-    void run();
     void renderOne(Scene requested, quint64 generation);
     // The render thread's frames pass through an outbox guarded by our own
     // mutex rather than inside Qt's queued signal: the hand-over is then a
@@ -98,16 +96,11 @@ class RenderWorker : public QObject {
     std::mutex outboxMutex_;
     std::deque<RenderFrame> outbox_;  // guarded by outboxMutex_
 
-    std::mutex mutex_;
-    std::condition_variable wake_;
-    std::optional<Scene> pending_;  // guarded by mutex_
-    bool quit_ = false;             // guarded by mutex_
-    std::atomic<quint64> generation_{0};
-    std::atomic<bool> quitting_{false};
     // Only the render thread touches the cache; the counts are copied out.
     BvhCache bvhCache_;
     std::atomic<int> bvhBuilds_{0}, bvhRefits_{0};
-    std::thread thread_;
+    // Last, so that it stops and joins the render thread before the rest goes.
+    RequestThread<Scene> requests_;
 };
 
 }  // namespace whitted::ui

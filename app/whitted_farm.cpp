@@ -27,6 +27,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli_input.h"
+#include "cli_main.h"
 #include "farm/plan.h"
 #include "farm/slurm.h"
 #include "image/image_io.h"
@@ -39,8 +40,6 @@ using namespace whitted;
 using namespace whitted::farm;
 
 namespace {
-
-constexpr int kExitOk = 0, kExitFailure = 1, kExitBadInput = 2, kExitInterrupted = 130;
 
 struct Options {
     std::string scene, output, workDir;
@@ -259,20 +258,8 @@ int main(int argc, char** argv) {
                    "Where parts and logs go, on a file system every node shares "
                    "(default: OUT.farm beside the output)");
     app.add_flag("--quiet", o.quiet, "Print nothing but errors");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        std::cerr << "whitted-farm: " << e.what() << "\nRun with --help for usage.\n";
-        return kExitBadInput;
-    }
+    if (const auto code = parseFlags(app, "whitted-farm", argc, argv)) return *code;
     std::signal(SIGINT, onSignal);
     std::signal(SIGTERM, onSignal);
-    try {
-        return run(o);
-    } catch (const std::exception& e) {
-        std::cerr << "whitted-farm: " << e.what() << "\n";
-        return kExitFailure;
-    }
+    return runOrSay("whitted-farm", [&] { return run(o); });
 }

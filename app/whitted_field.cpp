@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli_main.h"
 #include "scene/scene_io.h"
 #include "sphere_field.h"
 
@@ -32,16 +33,9 @@ int main(int argc, char** argv) {
     app.add_option("--length", field.depth, "Ball centres have z from --near to --near + this")
         ->capture_default_str()
         ->check(CLI::PositiveNumber);
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e) == 0 ? 0 : 2;
-    }
-    try {
+    if (const auto code = whitted::parseFlags(app, "whitted-field", argc, argv)) return *code;
+    return whitted::runOrSay("whitted-field", [&] {
         whitted::saveScene(whitted::sphereField(field), output);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "whitted-field: %s\n", e.what());
-        return 1;
-    }
-    return 0;
+        return whitted::kExitOk;
+    });
 }

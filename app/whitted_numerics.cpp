@@ -15,6 +15,7 @@
 
 #include "base/atomic_file.h"
 #include "cli_input.h"
+#include "cli_main.h"
 #include "image/image_io.h"
 #include "numerics/difference_picture.h"
 #include "numerics/measure.h"
@@ -29,10 +30,6 @@ using namespace whitted;
 using namespace whitted::numerics;
 
 namespace {
-
-constexpr int kExitOk = 0;
-constexpr int kExitFailure = 1;
-constexpr int kExitBadInput = 2;
 
 constexpr const char* kDefaultScene = "scenes/seed.json";
 constexpr const char* kDefaultOutDir = "docs";
@@ -227,19 +224,6 @@ int main(int argc, char** argv) {
     app.add_flag("--quick", o.quick, "A reduced sweep of a few points each (for tests)");
     app.add_flag("--quiet", o.quiet, "Print nothing but errors");
 
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        std::cerr << "whitted-numerics: " << e.what() << "\n"
-                  << "Run with --help for usage.\n";
-        return kExitBadInput;
-    }
-    try {
-        return run(o);
-    } catch (const std::exception& e) {
-        std::cerr << "whitted-numerics: " << e.what() << "\n";
-        return kExitFailure;
-    }
+    if (const auto code = parseFlags(app, "whitted-numerics", argc, argv)) return *code;
+    return runOrSay("whitted-numerics", [&] { return run(o); });
 }

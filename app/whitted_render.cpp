@@ -23,6 +23,7 @@
 #include "base/atomic_file.h"
 #include "camera/camera_control.h"
 #include "cli_input.h"
+#include "cli_main.h"
 #include "image/image_io.h"
 #include "image/image_parts.h"
 #include "render_flags.h"
@@ -34,10 +35,6 @@ namespace fs = std::filesystem;
 using namespace whitted;
 
 namespace {
-
-constexpr int kExitOk = 0;
-constexpr int kExitFailure = 1;
-constexpr int kExitBadInput = 2;
 
 struct Options {
     std::string scene;
@@ -309,21 +306,10 @@ int main(int argc, char** argv) {
         ->required();
     merge->add_flag("--quiet", m.quiet, "Print nothing but errors");
 
-    try {
-        app.parse(argc, argv);
-        if (!*merge && o.scene.empty()) throw CLI::RequiredError("scene");
-        if (!*merge && o.output.empty()) throw CLI::RequiredError("--output");
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        std::cerr << "whitted-render: " << e.what() << "\n"
-                  << "Run with --help for usage.\n";
-        return kExitBadInput;
-    }
-    try {
-        return *merge ? runMerge(m) : run(o);
-    } catch (const std::exception& e) {
-        std::cerr << "whitted-render: " << e.what() << "\n";
-        return kExitFailure;
-    }
+    if (const auto code = parseFlags(app, "whitted-render", argc, argv, [&] {
+            if (!*merge && o.scene.empty()) throw CLI::RequiredError("scene");
+            if (!*merge && o.output.empty()) throw CLI::RequiredError("--output");
+        }))
+        return *code;
+    return runOrSay("whitted-render", [&] { return *merge ? runMerge(m) : run(o); });
 }

@@ -30,6 +30,8 @@
 #include "analysis/depth_truncation.h"
 #include "analysis/tradeoff.h"
 #include "base/atomic_file.h"
+#include "cli_input.h"
+#include "cli_main.h"
 #include "image/image_io.h"
 #include "scene/scene_io.h"
 #include "tradeoff/plots.h"
@@ -42,8 +44,6 @@ using namespace whitted;
 using json = nlohmann::json;
 
 namespace {
-
-constexpr int kExitOk = 0, kExitFailure = 1, kExitBadInput = 2;
 
 std::atomic<bool> interrupted{false};
 extern "C" void onInterrupt(int) {
@@ -182,10 +182,8 @@ int writeReport(const std::string& output, const std::vector<std::string>& dirs,
     return kExitOk;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    CLI::App app{"Measures the speed/accuracy trade of a scene (docs/tradeoff.md)."};
+// What the command line asks for.
+struct Flags {
     std::string scenePath, outDir, samples = "1,2,4,8,16,32,64,128,256", depths = "0-8",
                                    precisions = "float,double", scales = "0.25,0.5,1", report;
     // One run for slow points, up to 9 for fast ones until they have taken
@@ -197,170 +195,194 @@ int main(int argc, char** argv) {
     double minSeconds = 0.3;
     bool quick = false;
     std::vector<std::string> reportDirs;
-    app.add_option("scene", scenePath, "Scene file (JSON, whitted-scene v1)");
-    app.add_option("--out-dir", outDir, "Where to write (default docs/tradeoff/<scene name>)");
-    app.add_option("--samples", samples, "Samples per pixel, e.g. 1,2,4,8");
-    app.add_option("--depths", depths, "Max depths, e.g. 0-8 or 0,2,5");
-    app.add_option("--precisions", precisions, "float,double or one of them");
-    app.add_option("--scales", scales, "Resolution scales, e.g. 0.25,0.5,1");
-    app.add_option("--reference-spp", referenceSpp,
+};
+
+void addFlags(CLI::App& app, Flags& f) {
+    app.add_option("scene", f.scenePath, "Scene file (JSON, whitted-scene v1)");
+    app.add_option("--out-dir", f.outDir, "Where to write (default docs/tradeoff/<scene name>)");
+    app.add_option("--samples", f.samples, "Samples per pixel, e.g. 1,2,4,8");
+    app.add_option("--depths", f.depths, "Max depths, e.g. 0-8 or 0,2,5");
+    app.add_option("--precisions", f.precisions, "float,double or one of them");
+    app.add_option("--scales", f.scales, "Resolution scales, e.g. 0.25,0.5,1");
+    app.add_option("--reference-spp", f.referenceSpp,
                    "Samples per pixel of the reference (default: 4 times the grid's largest)")
         ->check(CLI::Range(1, kMaxSamplesPerPixel));
-    app.add_option("--progressive-spp", progressiveSpp, "Samples of the progressive curve")
+    app.add_option("--progressive-spp", f.progressiveSpp, "Samples of the progressive curve")
         ->check(CLI::Range(1, kMaxSamplesPerPixel));
-    app.add_option("--width", width, "Image width in pixels (default: the scene's)")
+    app.add_option("--width", f.width, "Image width in pixels (default: the scene's)")
         ->check(CLI::Range(1, kMaxImageSize));
-    app.add_option("--height", height, "Image height in pixels (default: the scene's)")
+    app.add_option("--height", f.height, "Image height in pixels (default: the scene's)")
         ->check(CLI::Range(1, kMaxImageSize));
-    app.add_option("--max-size", maxSize, "Render at most this many pixels on the long side")
+    app.add_option("--max-size", f.maxSize, "Render at most this many pixels on the long side")
         ->check(CLI::Range(1, kMaxImageSize));
-    app.add_option("--runs", minRuns, "Runs per point, at least")->check(CLI::Range(1, 99));
-    app.add_option("--min-seconds", minSeconds, "Run a point until it has taken this long")
+    app.add_option("--runs", f.minRuns, "Runs per point, at least")->check(CLI::Range(1, 99));
+    app.add_option("--min-seconds", f.minSeconds, "Run a point until it has taken this long")
         ->check(CLI::Range(0.0, 60.0));
-    app.add_flag("--quick", quick,
+    app.add_flag("--quick", f.quick,
                  "A small grid (tests): 1,4 spp; depths 0,2; scales 0.5,1; one run");
-    app.add_option("--report", report, "Write the report from earlier runs' directories");
-    app.add_option("--dirs", reportDirs, "With --report: the result directories");
+    app.add_option("--report", f.report, "Write the report from earlier runs' directories");
+    app.add_option("--dirs", f.reportDirs, "With --report: the result directories");
+}
+
+// The grid the flags ask for, or nothing, having said what is wrong.
+std::optional<TradeoffGrid> gridOrSay(const Flags& f) {
+    TradeoffGrid grid;
     try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e) == 0 ? kExitOk : kExitBadInput;
-    }
-
-    std::signal(SIGINT, onInterrupt);
-    try {
-        if (!report.empty()) {
-            if (reportDirs.empty()) {
-                std::cerr << "whitted-tradeoff: --report needs --dirs\n";
-                return kExitBadInput;
-            }
-            return writeReport(report, reportDirs, commandLine(argc, argv));
+        grid.samples = parseIntList(f.samples);
+        grid.depths = parseIntList(f.depths);
+        grid.precisions.clear();
+        std::stringstream p(f.precisions);
+        for (std::string name; std::getline(p, name, ',');) {
+            const auto precision = parsePrecision(name);
+            if (!precision) throw std::invalid_argument("precision " + name);
+            grid.precisions.push_back(*precision);
         }
-        if (scenePath.empty()) {
-            std::cerr << "whitted-tradeoff: a scene file is required\n";
-            return kExitBadInput;
-        }
-        Scene scene;
-        try {
-            scene = loadScene(scenePath);
-        } catch (const SceneError& e) {
-            std::cerr << "whitted-tradeoff: " << e.what() << "\n";
-            return kExitBadInput;
-        }
-        TradeoffGrid grid;
-        try {
-            grid.samples = parseIntList(samples);
-            grid.depths = parseIntList(depths);
-            grid.precisions.clear();
-            std::stringstream p(precisions);
-            for (std::string name; std::getline(p, name, ',');) {
-                const auto precision = parsePrecision(name);
-                if (!precision) throw std::invalid_argument("precision " + name);
-                grid.precisions.push_back(*precision);
-            }
-            grid.scales.clear();
-            std::stringstream sc(scales);
-            for (std::string v; std::getline(sc, v, ',');) grid.scales.push_back(std::stod(v));
-        } catch (const std::exception& e) {
-            std::cerr << "whitted-tradeoff: bad grid flag: " << e.what() << "\n";
-            return kExitBadInput;
-        }
-        grid.minRuns = minRuns;
-        grid.minSeconds = minSeconds;
-        if (quick) {
-            grid.samples = {1, 4};
-            grid.depths = {0, 2};
-            grid.scales = {0.5, 1.0};
-            grid.minRuns = grid.maxRuns = 1;
-            progressiveSpp = std::min(progressiveSpp, 4);
-        }
-        for (int d : grid.depths)
-            if (d < 0 || d > kMaxDepth) {
-                std::cerr << "whitted-tradeoff: --depths: " << d << " is outside [0, 64]\n";
-                return kExitBadInput;
-            }
-        for (double s : grid.scales)
-            if (!(s > 0 && s <= 1)) {
-                std::cerr << "whitted-tradeoff: --scales: " << s << " is outside (0, 1]\n";
-                return kExitBadInput;
-            }
-        // The reference must be far less noisy than the grid's best points, or
-        // they would be measured against their own noise: 4x the samples halves it.
-        const int largestSamples = *std::max_element(grid.samples.begin(), grid.samples.end());
-        if (referenceSpp == 0) referenceSpp = std::min(kMaxSamplesPerPixel, 4 * largestSamples);
-        if (referenceSpp <= largestSamples)
-            std::cerr << "whitted-tradeoff: warning: --reference-spp " << referenceSpp
-                      << " is not above the grid's " << largestSamples
-                      << " samples; their errors will be mostly the reference's noise\n";
-        if (width) scene.render.width = *width;
-        if (height) scene.render.height = *height;
-        if (maxSize > 0) {
-            const int longest = std::max(scene.render.width, scene.render.height);
-            if (longest > maxSize) {
-                scene.render.width = std::max(1, scene.render.width * maxSize / longest);
-                scene.render.height = std::max(1, scene.render.height * maxSize / longest);
-            }
-        }
-        const std::string name = fs::path(scenePath).stem().string();
-        const fs::path dir = outDir.empty() ? fs::path("docs/tradeoff") / name : fs::path(outDir);
-        fs::create_directories(dir);
-
-        // Plots are painted with Qt; no display needed.
-        if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
-        QGuiApplication qt(argc, argv);
-        const auto stop = [] { return interrupted.load(); };
-
-        std::cerr << "whitted-tradeoff: " << name << " at " << scene.render.width << "x"
-                  << scene.render.height << ": reference (double, " << referenceSpp << " spp)...\n";
-        tradeoff::SceneSummary summary;
-        summary.name = name;
-        summary.command = commandLine(argc, argv);
-        summary.date = today();
-        const ReferenceRender ref = renderReference(scene, referenceSpp, stop);
-        if (interrupted) return kExitFailure;
-        summary.reference = ref.scene;
-        summary.referenceSeconds = ref.seconds;
-        summary.sceneDepth = scene.render.maxDepth;
-        summary.scenePrecision = scene.render.precision;
-        summary.depthWithinTolerance = depthWithinTolerance(scene);
-        const Image truncation = depthTruncationMap(scene);
-        summary.truncation = largestTruncation(truncation);
-        std::cerr << "whitted-tradeoff: reference took " << fixed(ref.seconds, 1)
-                  << " s; the grid's " << gridSize(grid) << " points will take about "
-                  << fixed(tradeoff::estimateGridSeconds(grid, ref) / 60, 1) << " min\n";
-
-        tradeoff::Progress progress(grid, ::isatty(STDERR_FILENO));
-        summary.points = runTradeoff(
-            scene, ref.image, grid, [&](const TradeoffProgress& p) { progress.point(p); }, stop);
-        Scene progressiveScene = scene;
-        progressiveScene.render.samplesPerPixel = progressiveSpp;
-        if (!interrupted) summary.curve = progressiveCurve(progressiveScene, ref.image, stop);
-
-        const ImageMetadata meta =
-            makeImageMetadata(ref.scene.render, ref.seconds, "whitted-tradeoff");
-        writeImage(ref.image, dir / "reference.png", meta);
-        writeImage(normalised(truncation, summary.truncation), dir / "truncation.png", meta);
-        writeText(dir / "points.csv", tradeoff::pointsCsv(summary.points));
-        writeText(dir / "progressive.csv", tradeoff::progressiveCsv(summary.curve));
-        writeText(dir / "table.md",
-                  "# " + name + ": every point\n\n" + tradeoff::pointsTable(summary.points));
-        writePng(
-            ui::renderPlot(tradeoff::tradeoffPlot(QString::fromStdString(name), summary.points),
-                           QSize(900, 600)),
-            dir / "plot.png");
-        if (!summary.curve.empty())
-            writePng(ui::renderPlot(
-                         tradeoff::progressivePlot(QString::fromStdString(name), summary.curve),
-                         QSize(700, 450)),
-                     dir / "progressive.png");
-        summary.directory = ".";
-        writeText(dir / "summary.md", tradeoff::sceneSection(summary));
-        writeText(dir / "summary.json", summaryJson(summary).dump(2) + "\n");
-        std::cerr << "whitted-tradeoff: " << summary.points.size() << " points written to "
-                  << dir.string() << (interrupted ? " (interrupted)" : "") << "\n";
-        return interrupted ? kExitFailure : kExitOk;
+        grid.scales.clear();
+        std::stringstream sc(f.scales);
+        for (std::string v; std::getline(sc, v, ',');) grid.scales.push_back(std::stod(v));
     } catch (const std::exception& e) {
-        std::cerr << "whitted-tradeoff: " << e.what() << "\n";
-        return kExitFailure;
+        std::cerr << "whitted-tradeoff: bad grid flag: " << e.what() << "\n";
+        return std::nullopt;
     }
+    grid.minRuns = f.minRuns;
+    grid.minSeconds = f.minSeconds;
+    if (f.quick) {
+        grid.samples = {1, 4};
+        grid.depths = {0, 2};
+        grid.scales = {0.5, 1.0};
+        grid.minRuns = grid.maxRuns = 1;
+    }
+    for (int d : grid.depths)
+        if (d < 0 || d > kMaxDepth) {
+            std::cerr << "whitted-tradeoff: --depths: " << d << " is outside [0, 64]\n";
+            return std::nullopt;
+        }
+    for (double s : grid.scales)
+        if (!(s > 0 && s <= 1)) {
+            std::cerr << "whitted-tradeoff: --scales: " << s << " is outside (0, 1]\n";
+            return std::nullopt;
+        }
+    return grid;
+}
+
+// The reference's samples: the flag's, or 4x the grid's largest. The
+// reference must be far less noisy than the grid's best points, or they would
+// be measured against their own noise: 4x the samples halves it.
+int referenceSamples(const Flags& f, const TradeoffGrid& grid) {
+    const int largest = *std::max_element(grid.samples.begin(), grid.samples.end());
+    const int spp =
+        f.referenceSpp > 0 ? f.referenceSpp : std::min(kMaxSamplesPerPixel, 4 * largest);
+    if (spp <= largest)
+        std::cerr << "whitted-tradeoff: warning: --reference-spp " << spp
+                  << " is not above the grid's " << largest
+                  << " samples; their errors will be mostly the reference's noise\n";
+    return spp;
+}
+
+// The scene at the size the flags ask for.
+void fitSize(Scene& scene, const Flags& f) {
+    if (f.width) scene.render.width = *f.width;
+    if (f.height) scene.render.height = *f.height;
+    const int longest = std::max(scene.render.width, scene.render.height);
+    if (f.maxSize > 0 && longest > f.maxSize) {
+        scene.render.width = std::max(1, scene.render.width * f.maxSize / longest);
+        scene.render.height = std::max(1, scene.render.height * f.maxSize / longest);
+    }
+}
+
+// Every file of a scene's directory: images, tables, plots, the summary.
+void writeResults(const fs::path& dir, tradeoff::SceneSummary& summary, const ReferenceRender& ref,
+                  const Image& truncation) {
+    const ImageMetadata meta = makeImageMetadata(ref.scene.render, ref.seconds, "whitted-tradeoff");
+    writeImage(ref.image, dir / "reference.png", meta);
+    writeImage(normalised(truncation, summary.truncation), dir / "truncation.png", meta);
+    writeText(dir / "points.csv", tradeoff::pointsCsv(summary.points));
+    writeText(dir / "progressive.csv", tradeoff::progressiveCsv(summary.curve));
+    writeText(dir / "table.md",
+              "# " + summary.name + ": every point\n\n" + tradeoff::pointsTable(summary.points));
+    const QString name = QString::fromStdString(summary.name);
+    writePng(ui::renderPlot(tradeoff::tradeoffPlot(name, summary.points), QSize(900, 600)),
+             dir / "plot.png");
+    if (!summary.curve.empty())
+        writePng(ui::renderPlot(tradeoff::progressivePlot(name, summary.curve), QSize(700, 450)),
+                 dir / "progressive.png");
+    summary.directory = ".";
+    writeText(dir / "summary.md", tradeoff::sceneSection(summary));
+    writeText(dir / "summary.json", summaryJson(summary).dump(2) + "\n");
+}
+
+// Measures one scene: the reference, the grid, the progressive curve; then
+// writes them. Ctrl+C stops it, keeping what was measured (exit 1).
+int measureScene(Scene scene, const Flags& f, const TradeoffGrid& grid, int argc, char** argv) {
+    fitSize(scene, f);
+    const int referenceSpp = referenceSamples(f, grid);
+    const std::string name = fs::path(f.scenePath).stem().string();
+    const fs::path dir = f.outDir.empty() ? fs::path("docs/tradeoff") / name : fs::path(f.outDir);
+    fs::create_directories(dir);
+    // Plots are painted with Qt; no display needed.
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    QGuiApplication qt(argc, argv);
+    const auto stop = [] { return interrupted.load(); };
+
+    std::cerr << "whitted-tradeoff: " << name << " at " << scene.render.width << "x"
+              << scene.render.height << ": reference (double, " << referenceSpp << " spp)...\n";
+    tradeoff::SceneSummary summary;
+    summary.name = name;
+    summary.command = commandLine(argc, argv);
+    summary.date = today();
+    const ReferenceRender ref = renderReference(scene, referenceSpp, stop);
+    if (interrupted) return kExitFailure;
+    summary.reference = ref.scene;
+    summary.referenceSeconds = ref.seconds;
+    summary.sceneDepth = scene.render.maxDepth;
+    summary.scenePrecision = scene.render.precision;
+    summary.depthWithinTolerance = depthWithinTolerance(scene);
+    const Image truncation = depthTruncationMap(scene);
+    summary.truncation = largestTruncation(truncation);
+    std::cerr << "whitted-tradeoff: reference took " << fixed(ref.seconds, 1) << " s; the grid's "
+              << gridSize(grid) << " points will take about "
+              << fixed(tradeoff::estimateGridSeconds(grid, ref) / 60, 1) << " min\n";
+
+    tradeoff::Progress progress(grid, ::isatty(STDERR_FILENO));
+    summary.points = runTradeoff(
+        scene, ref.image, grid, [&](const TradeoffProgress& p) { progress.point(p); }, stop);
+    Scene progressiveScene = scene;
+    progressiveScene.render.samplesPerPixel =
+        f.quick ? std::min(f.progressiveSpp, 4) : f.progressiveSpp;
+    if (!interrupted) summary.curve = progressiveCurve(progressiveScene, ref.image, stop);
+
+    writeResults(dir, summary, ref, truncation);
+    std::cerr << "whitted-tradeoff: " << summary.points.size() << " points written to "
+              << dir.string() << (interrupted ? " (interrupted)" : "") << "\n";
+    return interrupted ? kExitFailure : kExitOk;
+}
+
+int run(const Flags& f, int argc, char** argv) {
+    if (!f.report.empty()) {
+        if (f.reportDirs.empty()) {
+            std::cerr << "whitted-tradeoff: --report needs --dirs\n";
+            return kExitBadInput;
+        }
+        return writeReport(f.report, f.reportDirs, commandLine(argc, argv));
+    }
+    if (f.scenePath.empty()) {
+        std::cerr << "whitted-tradeoff: a scene file is required\n";
+        return kExitBadInput;
+    }
+    const std::optional<Scene> scene = sceneOrSay("whitted-tradeoff", f.scenePath);
+    if (!scene) return kExitBadInput;
+    const std::optional<TradeoffGrid> grid = gridOrSay(f);
+    if (!grid) return kExitBadInput;
+    return measureScene(*scene, f, *grid, argc, argv);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"Measures the speed/accuracy trade of a scene (docs/tradeoff.md)."};
+    Flags flags;
+    addFlags(app, flags);
+    if (const auto code = parseFlags(app, "whitted-tradeoff", argc, argv)) return *code;
+    std::signal(SIGINT, onInterrupt);
+    return runOrSay("whitted-tradeoff", [&] { return run(flags, argc, argv); });
 }

@@ -67,7 +67,7 @@ void RenderWorker::renderOne(Scene requested, quint64 generation) {
     int previewBlock = 1;
     std::once_flag previewMade, displayMade;
 
-    // Tile callbacks arrive from several pool threads at once. Tiles are disjoint,
+    // Tile callbacks arrive from the renderer's threads at once. Tiles are disjoint,
     // so they convert in parallel under a shared lock; copying a frame out takes
     // it exclusively (about a millisecond every kFrameIntervalMs), so no frame
     // holds half a tile. The bookkeeping has a mutex of its own.

@@ -6,7 +6,7 @@
 #include <thread>
 
 #include "scene/scene_io.h"
-#include "tracer/ray_tree.h"
+#include "tracer/scalar_ray_tree.h"
 
 namespace whitted {
 
@@ -48,7 +48,7 @@ Image truncationMap(const Scene& scene, double pruneBelow, const StopPredicate& 
             if (stop && stop()) return;
             for (int i = 0; i < s.width; ++i) {
                 CutOffSum sum{pruneBelow, factor, s.maxDepth};
-                RayTreeWalk<double, CutOffSum>(s, sum).tracePixel(i, j);
+                ScalarRayTree<double, CutOffSum>(s, sum).tracePixel(i, j);
                 float* out = map.pixel(i, j);
                 out[0] = out[1] = out[2] = float(sum.sum);
             }

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <optional>
 
-#include "tracer/ray_tree.h"
+#include "tracer/scalar_ray_tree.h"
 
 namespace whitted {
 
@@ -43,7 +43,7 @@ template <typename T>
 void pixelDecisions(const PreparedScene<T>& s, int i, int j, std::vector<Decision>& out) {
     out.clear();
     DecisionRecorder recorder{out};
-    RayTreeWalk<T, DecisionRecorder>(s, recorder).tracePixel(i, j);
+    ScalarRayTree<T, DecisionRecorder>(s, recorder).tracePixel(i, j);
 }
 
 DecisionSignature signatureOf(const std::vector<Decision>& decisions) {

@@ -3,7 +3,7 @@
 // reflection happens. Float and double renders that agree on all of them differ
 // only by rounding in the shading; a pixel where one flips differs visibly.
 //
-// The tree is walked with the tracer's own rules (core/tracer/ray_tree.h). Only the
+// The tree is walked with the tracer's own rules (core/tracer/scalar_ray_tree.h). Only the
 // camera ray through the pixel centre is followed, whatever samples_per_pixel says.
 #pragma once
 

@@ -210,6 +210,123 @@ Vec3x<T> checkerLanes(const LaneMaterials<T>& g, const Vec3x<T>& p, const Vec3x<
     return select(oddCell, g.checkerColor, g.diffuse);
 }
 
+template <typename T>
+void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth, Vec3x<T>& radiance,
+                 RayCounts& counts);
+
+// Where the lanes that hit are on their surfaces: the point, the normal
+// facing the ray, and on which side the ray came from.
+template <typename T>
+struct SurfacePoint {
+    using V = typename Simd<T>::type;
+    Vec3x<T> d, p, outward, n;
+    decltype(V{} > V{}) inside;  // the ray hit the surface from within
+};
+
+template <typename T>
+SurfacePoint<T> surfacePoint(const RayPacket<T>& rays, const typename Simd<T>::type& tHit,
+                             const LaneMaterials<T>& g) {
+    SurfacePoint<T> sp;
+    sp.d = rays.dirs();
+    sp.p = rays.origins() + tHit * sp.d;
+    // Normalised, not divided by the radius: p is off the surface by its
+    // rounding error, and a normal that is not unit length makes reflect()
+    // lengthen the ray, which puts the next hit further off; inside glass that
+    // error grew sevenfold per internal reflection until float renders showed
+    // speckles.
+    sp.outward = normalize(sp.p - g.centre);
+    sp.inside = dot(sp.d, sp.outward) > T(0);
+    sp.n = select(sp.inside, -sp.outward, sp.outward);
+    return sp;
+}
+
+// Each light's diffuse and specular share at the lanes that hit, dimmed by
+// the transmittance of what lies between (one shadow packet per light).
+template <typename T, typename Mask>
+void addDirectLight(const PreparedScene<T>& s, const LaneMaterials<T>& g, const SurfacePoint<T>& sp,
+                    const Mask& hit, const typename Simd<T>::type& kHit, const Vec3x<T>& kd,
+                    Vec3x<T>& radiance, RayCounts& counts) {
+    using V = typename Simd<T>::type;
+    const Vec3x<T>& p = sp.p;
+    const Vec3x<T>& n = sp.n;
+    for (const PreparedLight<T>& light : s.lights) {
+        Vec3x<T> l = Vec3x<T>::broadcast(light.position) - p;
+        const V distance = laneSqrt(dot(l, l));
+        l = l * (T(1) / distance);
+        const V nl = dot(n, l);
+        const auto lit = hit & g.lit & (distance > T(0)) & (nl > T(0));
+        const unsigned litLanes = laneBits(lit);
+        if (!litLanes) continue;
+        counts.shadow += __builtin_popcount(litLanes);
+        // The shadow ray goes into the sphere when it leaves p against the outward normal.
+        const RayPacket<T> shadow =
+            RayPacket<T>::of(p, l, kHit, dot(l, sp.outward) < T(0), litLanes);
+        const V sj = sceneTransmittance(s.spheres, s.transparency, s.useBvh ? s.bvh.get() : nullptr,
+                                        shadow, distance, litLanes);
+        const auto shaded = lit & (sj != T(0));
+        if (!laneBits(shaded)) continue;
+        Vec3x<T> term = kd * nl;
+        const auto glossy = shaded & (g.specular > T(0));
+        if (laneBits(glossy)) {
+            const V nh = dot(n, normalize(l - sp.d));
+            const auto highlight = glossy & (nh > T(0));
+            V spec = powLanes<T>(nh, highlight & (g.shininessInt >= 0) ? g.shininessInt : 0);
+            for (unsigned bits = laneBits(highlight & (g.shininessInt < 0)); bits;
+                 bits &= bits - 1) {
+                const int i = __builtin_ctz(bits);
+                spec[i] = std::pow(nh[i], g.shininess[i]);
+            }
+            const V add = g.specular * spec;
+            term = select(highlight, term + Vec3x<T>{add, add, add}, term);
+        }
+        const Vec3x<T> colour = Vec3x<T>::broadcast(light.color);
+        radiance = select(shaded, radiance + (sj * colour) * term, radiance);
+    }
+}
+
+// The refracted and reflected shares at the lanes that hit, each traced as a
+// packet one level deeper: refraction first, then reflection, each added in
+// the order of the formula.
+template <typename T, typename Mask>
+void addSecondaryRays(const PreparedScene<T>& s, const LaneMaterials<T>& g,
+                      const SurfacePoint<T>& sp, const Mask& hit,
+                      const typename Simd<T>::type& kHit, int depth, Vec3x<T>& radiance,
+                      RayCounts& counts) {
+    using V = typename Simd<T>::type;
+    const Vec3x<T>& d = sp.d;
+    const Vec3x<T>& n = sp.n;
+    V reflectWeight = g.reflectivity;
+    const auto glass = hit & (g.transparency > T(0));
+    if (laneBits(glass)) {
+        const V eta = sp.inside ? g.ior : T(1) / g.ior;
+        const V cosi = -dot(d, n);
+        const V k = T(1) - eta * eta * (T(1) - cosi * cosi);
+        const auto passes = glass & (k >= T(0));
+        // Total internal reflection: the refracted share follows the reflected
+        // ray, which is traced once for both shares.
+        reflectWeight = glass & ~(k >= T(0)) ? reflectWeight + g.transparency : reflectWeight;
+        if (const unsigned bits = laneBits(passes)) {
+            const V root = laneSqrt(passes ? k : V{});
+            const Vec3x<T> t = normalize(eta * d + (eta * cosi - root) * n);
+            // Refracted rays cross the surface: into the sphere from outside, out from inside.
+            const RayPacket<T> refracted = RayPacket<T>::of(sp.p, t, kHit, ~sp.inside, bits);
+            counts.refraction += __builtin_popcount(bits);
+            Vec3x<T> sub;
+            tracePacket(s, refracted, depth + 1, sub, counts);
+            radiance = select(passes, radiance + g.transparency * sub, radiance);
+        }
+    }
+    const auto mirror = hit & (reflectWeight > T(0));
+    if (const unsigned bits = laneBits(mirror)) {
+        const Vec3x<T> r = d - (T(2) * dot(d, n)) * n;  // reflect(d, n)
+        const RayPacket<T> reflected = RayPacket<T>::of(sp.p, r, kHit, sp.inside, bits);
+        counts.reflection += __builtin_popcount(bits);
+        Vec3x<T> sub;
+        tracePacket(s, reflected, depth + 1, sub, counts);
+        radiance = select(mirror, radiance + reflectWeight * sub, radiance);
+    }
+}
+
 // Radiance along every ray of a packet at the given depth: the Whitted sum of
 // SPEC §3, computed for all lanes at once, with the shadow, reflected and
 // refracted rays of all lanes traced as packets.
@@ -225,85 +342,12 @@ void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth,
     if (!lanes) return;
 
     const LaneMaterials<T> g = gatherMaterials(s, kHit, lanes);
-    const Vec3x<T> d = rays.dirs();
-    const Vec3x<T> p = rays.origins() + tHit * d;
-    // Normalised, not divided by the radius: p is off the surface by its
-    // rounding error, and a normal that is not unit length makes reflect()
-    // lengthen the ray, which puts the next hit further off; inside glass that
-    // error grew sevenfold per internal reflection until float renders showed
-    // speckles.
-    const Vec3x<T> outward = normalize(p - g.centre);
-    const auto inside = dot(d, outward) > T(0);  // the ray hit the surface from within
-    const Vec3x<T> n = select(inside, -outward, outward);
+    const SurfacePoint<T> sp = surfacePoint(rays, tHit, g);
     Vec3x<T> kd = g.diffuse;
-    if (laneBits(g.checker & hit)) kd = select(g.checker, checkerLanes(g, p, outward), kd);
+    if (laneBits(g.checker & hit)) kd = select(g.checker, checkerLanes(g, sp.p, sp.outward), kd);
     radiance = select(hit, Vec3x<T>::broadcast(s.ambient) * kd, radiance);
-
-    for (const PreparedLight<T>& light : s.lights) {
-        Vec3x<T> l = Vec3x<T>::broadcast(light.position) - p;
-        const V distance = laneSqrt(dot(l, l));
-        l = l * (T(1) / distance);
-        const V nl = dot(n, l);
-        const auto lit = hit & g.lit & (distance > T(0)) & (nl > T(0));
-        const unsigned litLanes = laneBits(lit);
-        if (!litLanes) continue;
-        counts.shadow += __builtin_popcount(litLanes);
-        // The shadow ray goes into the sphere when it leaves p against the outward normal.
-        const RayPacket<T> shadow = RayPacket<T>::of(p, l, kHit, dot(l, outward) < T(0), litLanes);
-        const V sj = sceneTransmittance(s.spheres, s.transparency, s.useBvh ? s.bvh.get() : nullptr,
-                                        shadow, distance, litLanes);
-        const auto shaded = lit & (sj != T(0));
-        if (!laneBits(shaded)) continue;
-        Vec3x<T> term = kd * nl;
-        const auto glossy = shaded & (g.specular > T(0));
-        if (laneBits(glossy)) {
-            const V nh = dot(n, normalize(l - d));
-            const auto highlight = glossy & (nh > T(0));
-            V spec = powLanes<T>(nh, highlight & (g.shininessInt >= 0) ? g.shininessInt : 0);
-            for (unsigned bits = laneBits(highlight & (g.shininessInt < 0)); bits;
-                 bits &= bits - 1) {
-                const int i = __builtin_ctz(bits);
-                spec[i] = std::pow(nh[i], g.shininess[i]);
-            }
-            const V add = g.specular * spec;
-            term = select(highlight, term + Vec3x<T>{add, add, add}, term);
-        }
-        const Vec3x<T> colour = Vec3x<T>::broadcast(light.color);
-        radiance = select(shaded, radiance + (sj * colour) * term, radiance);
-    }
-    if (depth >= s.maxDepth) return;
-
-    // Refraction first, then reflection, each added in the order of the formula.
-    V reflectWeight = g.reflectivity;
-    const auto glass = hit & (g.transparency > T(0));
-    if (laneBits(glass)) {
-        const V eta = inside ? g.ior : T(1) / g.ior;
-        const V cosi = -dot(d, n);
-        const V k = T(1) - eta * eta * (T(1) - cosi * cosi);
-        const auto passes = glass & (k >= T(0));
-        // Total internal reflection: the refracted share follows the reflected
-        // ray, which is traced once for both shares.
-        reflectWeight = glass & ~(k >= T(0)) ? reflectWeight + g.transparency : reflectWeight;
-        if (const unsigned bits = laneBits(passes)) {
-            const V root = laneSqrt(passes ? k : V{});
-            const Vec3x<T> t = normalize(eta * d + (eta * cosi - root) * n);
-            // Refracted rays cross the surface: into the sphere from outside, out from inside.
-            const RayPacket<T> refracted = RayPacket<T>::of(p, t, kHit, ~inside, bits);
-            counts.refraction += __builtin_popcount(bits);
-            Vec3x<T> sub;
-            tracePacket(s, refracted, depth + 1, sub, counts);
-            radiance = select(passes, radiance + g.transparency * sub, radiance);
-        }
-    }
-    const auto mirror = hit & (reflectWeight > T(0));
-    if (const unsigned bits = laneBits(mirror)) {
-        const Vec3x<T> r = d - (T(2) * dot(d, n)) * n;  // reflect(d, n)
-        const RayPacket<T> reflected = RayPacket<T>::of(p, r, kHit, inside, bits);
-        counts.reflection += __builtin_popcount(bits);
-        Vec3x<T> sub;
-        tracePacket(s, reflected, depth + 1, sub, counts);
-        radiance = select(mirror, radiance + reflectWeight * sub, radiance);
-    }
+    addDirectLight(s, g, sp, hit, kHit, kd, radiance, counts);
+    if (depth < s.maxDepth) addSecondaryRays(s, g, sp, hit, kHit, depth, radiance, counts);
 }
 
 template <typename T>

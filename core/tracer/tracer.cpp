@@ -63,75 +63,65 @@ bool bvhChosen(int spheres) {
     return choice == Acceleration::bvh;
 }
 
+// A material in the tracer's precision, its checker placed in the frame
+// centred on `frameOrigin`.
 template <typename T>
-PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache) {
-    PreparedScene<T> s;
-    const RenderSettings& r = scene.render;
-    // The frame is centred on the camera: what the picture needs is where things
-    // are relative to the eye, which T then holds to its full precision however
-    // far the scene lies from the world origin.
-    s.frameOrigin = scene.camera.position;
-    s.camera = makeCameraBasis<T>(scene.camera, r.width, r.height);
-    s.camera.origin = Vec<T>(T(0));
-    s.width = r.width;
-    s.height = r.height;
-    s.maxDepth = r.maxDepth;
-    s.samplesPerPixel = r.samplesPerPixel;
-    s.background = boundedInput<T>(scene.background);
-    s.ambient = boundedInput<T>(scene.ambient);
-    for (const Material& m : scene.materials) {
-        PreparedMaterial<T> pm;
-        pm.diffuse = boundedInput<T>(m.diffuse);
-        if (m.checker) {
-            pm.checkerColor = boundedInput<T>(m.checker->color);
-            pm.checkerInvSize = T(1.0 / m.checker->size);
-            const volatile T size = T(m.checker->size);  // volatile: see SphereSet::split
-            pm.checkerSize = size;
-            pm.checkerSizeLo = T(m.checker->size - double(pm.checkerSize));
-            // floor(world / size) == floor(frameOrigin / size + prepared / size):
-            // the frame origin's whole cells are kept apart, as a parity, so that
-            // T adds only a fraction in [0, 1) to the cell coordinate.
-            for (int i = 0; i < 3; ++i) {
-                const double q = s.frameOrigin[i] / m.checker->size;
-                const double whole = std::floor(q);
-                const double fraction = q - whole;
-                const volatile T hi = T(fraction);  // volatile: see SphereSet::split
-                pm.checkerFrameFraction[i] = hi;
-                pm.checkerFrameFractionLo[i] = T(fraction - double(hi));
-                pm.checkerFrameParity[i] = T(whole - 2.0 * std::floor(whole * 0.5));
-            }
+PreparedMaterial<T> prepareMaterial(const Material& m, const Vec3& frameOrigin) {
+    PreparedMaterial<T> pm;
+    pm.diffuse = boundedInput<T>(m.diffuse);
+    if (m.checker) {
+        pm.checkerColor = boundedInput<T>(m.checker->color);
+        pm.checkerInvSize = T(1.0 / m.checker->size);
+        const volatile T size = T(m.checker->size);  // volatile: see SphereSet::split
+        pm.checkerSize = size;
+        pm.checkerSizeLo = T(m.checker->size - double(pm.checkerSize));
+        // floor(world / size) == floor(frameOrigin / size + prepared / size):
+        // the frame origin's whole cells are kept apart, as a parity, so that
+        // T adds only a fraction in [0, 1) to the cell coordinate.
+        for (int i = 0; i < 3; ++i) {
+            const double q = frameOrigin[i] / m.checker->size;
+            const double whole = std::floor(q);
+            const double fraction = q - whole;
+            const volatile T hi = T(fraction);  // volatile: see SphereSet::split
+            pm.checkerFrameFraction[i] = hi;
+            pm.checkerFrameFractionLo[i] = T(fraction - double(hi));
+            pm.checkerFrameParity[i] = T(whole - 2.0 * std::floor(whole * 0.5));
         }
-        pm.specular = boundedInput<T>(m.specular);
-        pm.shininess = T(m.shininess);
-        pm.reflectivity = T(m.reflectivity);
-        pm.transparency = T(m.transparency);
-        pm.ior = T(m.ior);
-        if (m.shininess == std::floor(m.shininess) && m.shininess <= 1024)
-            pm.integerShininess = static_cast<int>(m.shininess);
-        const bool diffuseLit =
-            m.diffuse != Vec3(0.0) || (m.checker && m.checker->color != Vec3(0.0));
-        pm.lit = diffuseLit || m.specular > 0;
-        s.materials.push_back(pm);
     }
-    for (const Light& l : scene.lights) {
-        const Vec3 c = l.color * l.intensity;
-        if (c == Vec3(0.0)) continue;  // a dark light adds nothing: no shadow rays for it
-        s.lights.push_back({Vec<T>(l.position - s.frameOrigin), boundedInput<T>(c)});
-    }
+    pm.specular = boundedInput<T>(m.specular);
+    pm.shininess = T(m.shininess);
+    pm.reflectivity = T(m.reflectivity);
+    pm.transparency = T(m.transparency);
+    pm.ior = T(m.ior);
+    if (m.shininess == std::floor(m.shininess) && m.shininess <= 1024)
+        pm.integerShininess = static_cast<int>(m.shininess);
+    const bool diffuseLit = m.diffuse != Vec3(0.0) || (m.checker && m.checker->color != Vec3(0.0));
+    pm.lit = diffuseLit || m.specular > 0;
+    return pm;
+}
+
+// Where the BVH's build reads the spheres: centres in the frame and radii,
+// only when a tree is built. Not zeroed (32 MB at a million spheres, on one
+// thread): every element is written.
+struct BvhInput {
+    std::vector<Vec3, UninitialisedAllocator<Vec3>> centres;
+    std::vector<double, UninitialisedAllocator<double>> radii;
+};
+
+// Every sphere into its own place in s.spheres, s.material and
+// s.transparency (and `bvh`, when sized), on all cores: a million spheres took
+// a second on one (docs/performance.md). Fewer than kSphereChunk stay on this
+// thread. Throws, in validateScene()'s words, for a sphere whose material is
+// missing (validated scenes never have one).
+template <typename T>
+void prepareSpheres(const Scene& scene, PreparedScene<T>& s, BvhInput& bvh) {
     const int count = static_cast<int>(scene.spheres.size());
-    const bool useBvh = bvhChosen(count);
-    // Not zeroed (32 MB at a million spheres, on one thread): every element
-    // is written below.
-    std::vector<Vec3, UninitialisedAllocator<Vec3>> centres(useBvh ? count : 0);
-    std::vector<double, UninitialisedAllocator<double>> radii(useBvh ? count : 0);
+    const bool forBvh = !bvh.centres.empty();
     s.spheres.resize(count);
     s.material.resize(count);
     s.transparency.resize(count);
     const auto materialIndex = materialIndices(scene);
-    std::atomic<int> unknownMaterial{-1};  // a sphere whose material is missing
-    // Each sphere into its own place, on all cores: a million spheres took a
-    // second on one (docs/performance.md). Fewer than kSphereChunk stay on
-    // this thread.
+    std::atomic<int> unknownMaterial{-1};
     forEachChunk(count, resolveThreadCount(0), [&](int, int begin, int end) {
         // Neighbouring spheres mostly share a material: the name is hashed
         // only when it differs from the one before.
@@ -151,21 +141,51 @@ PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache) {
             }
             s.material[k] = lastMaterial;
             s.transparency[k] = s.materials.empty() ? T(1) : s.materials[lastMaterial].transparency;
-            if (useBvh) {
-                centres[k] = c;  // cLo is far inside the traversal's margin
-                radii[k] = sp.radius;
+            if (forBvh) {
+                bvh.centres[k] = c;  // cLo is far inside the traversal's margin
+                bvh.radii[k] = sp.radius;
             }
         }
     });
-    // Validated scenes never get here with one. Thrown on this thread, not a
-    // worker's, in validateScene()'s words.
+    // Thrown on this thread, not a worker's.
     if (unknownMaterial >= 0) {
         const std::optional<SceneProblem> problem = validateScene(scene);
         throw std::invalid_argument(problem ? problem->jsonPath + ": " + problem->reason
                                             : "a sphere's material is missing");
     }
+}
+
+template <typename T>
+PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache) {
+    PreparedScene<T> s;
+    const RenderSettings& r = scene.render;
+    // The frame is centred on the camera: what the picture needs is where things
+    // are relative to the eye, which T then holds to its full precision however
+    // far the scene lies from the world origin.
+    s.frameOrigin = scene.camera.position;
+    s.camera = makeCameraBasis<T>(scene.camera, r.width, r.height);
+    s.camera.origin = Vec<T>(T(0));
+    s.width = r.width;
+    s.height = r.height;
+    s.maxDepth = r.maxDepth;
+    s.samplesPerPixel = r.samplesPerPixel;
+    s.background = boundedInput<T>(scene.background);
+    s.ambient = boundedInput<T>(scene.ambient);
+    for (const Material& m : scene.materials)
+        s.materials.push_back(prepareMaterial<T>(m, s.frameOrigin));
+    for (const Light& l : scene.lights) {
+        const Vec3 c = l.color * l.intensity;
+        if (c == Vec3(0.0)) continue;  // a dark light adds nothing: no shadow rays for it
+        s.lights.push_back({Vec<T>(l.position - s.frameOrigin), boundedInput<T>(c)});
+    }
+    const std::size_t count = scene.spheres.size();
+    const bool useBvh = bvhChosen(static_cast<int>(count));
+    BvhInput bvh;
+    bvh.centres.resize(useBvh ? count : 0);
+    bvh.radii.resize(useBvh ? count : 0);
+    prepareSpheres(scene, s, bvh);
     if (useBvh) {
-        s.bvh = sphereBvhFor<T>(centres, radii, s.spheres, bvhCache);
+        s.bvh = sphereBvhFor<T>(bvh.centres, bvh.radii, s.spheres, bvhCache);
         s.useBvh = true;
     }
     return s;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <mutex>
 #include <shared_mutex>
 #include <utility>
@@ -55,101 +56,141 @@ Scene viewSized(Scene scene) {
     return scene;
 }
 
-void RenderWorker::renderOne(Scene requested, quint64 generation) {
-    using Clock = std::chrono::steady_clock;
-    const auto start = Clock::now();
-    const Scene scene = viewSized(std::move(requested));
-    const int width = scene.render.width, height = scene.render.height;
-    // The preview's pixels, one per block, then the full-size picture, made
-    // from them when the first full-resolution tile arrives: the preview
-    // frame is out before 3.7 MB of pixels are written at 1280x720.
-    QImage preview, display;
-    int previewBlock = 1;
-    std::once_flag previewMade, displayMade;
+namespace {
 
-    // Tile callbacks arrive from the renderer's threads at once. Tiles are disjoint,
-    // so they convert in parallel under a shared lock; copying a frame out takes
-    // it exclusively (about a millisecond every kFrameIntervalMs), so no frame
-    // holds half a tile. The bookkeeping has a mutex of its own.
-    std::shared_mutex imageLock;
-    std::mutex frameMutex;
-    int currentPass = -1, tilesDone = 0;  // tiles of currentPass converted so far
-    int samplesDone = 0;                  // samples in every pixel: those of the last complete pass
-    auto lastSent = start;
+using Clock = std::chrono::steady_clock;
 
-    auto makeFrame = [&](const RenderProgress& p, bool passComplete) {
+// Turns one render's tiles into the view's frames. The preview's pixels, one
+// per block, then the full-size picture, made from them when the first
+// full-resolution tile arrives: the preview frame is out before 3.7 MB of
+// pixels are written at 1280x720.
+//
+// Tiles arrive from the renderer's threads at once. Tiles are disjoint, so
+// they convert in parallel under a shared lock; copying a frame out takes it
+// exclusively (about a millisecond every kFrameIntervalMs), so no frame holds
+// half a tile. The bookkeeping has a mutex of its own, held while a frame is
+// posted, so frames go out in the order they were made.
+class FrameAssembler {
+  public:
+    FrameAssembler(const Scene& scene, quint64 generation, std::function<bool()> stopping,
+                   std::function<void(RenderFrame)> post)
+        : scene_(scene),
+          generation_(generation),
+          stopping_(std::move(stopping)),
+          post_(std::move(post)),
+          start_(Clock::now()),
+          lastSent_(start_) {}
+
+    void addTile(const TileUpdate& t) {
+        const bool isPreview = t.progress.kind == PassKind::Preview;
+        convert(t, isPreview);
+        std::lock_guard lock(frameMutex_);
+        lastProgress_ = t.progress;
+        // Counted after the conversion, so a complete pass is complete in `display_`.
+        if (t.progress.pass != currentPass_) {
+            currentPass_ = t.progress.pass;
+            tilesDone_ = 0;
+        }
+        const bool passComplete = ++tilesDone_ == t.progress.tilesInPass;
+        if (passComplete && t.progress.kind == PassKind::Samples) samplesDone_ = t.progress.samples;
+        const bool lastPass = t.progress.pass + 1 == t.progress.passCount;
+        if ((passComplete && lastPass) || stopping_()) return;  // finalFrame() follows
+        if (passComplete ||
+            Clock::now() - lastSent_ > std::chrono::milliseconds(RenderWorker::kFrameIntervalMs)) {
+            RenderFrame frame = makeFrame(t.progress, passComplete);
+            {
+                std::unique_lock exclusive(imageLock_);
+                frame.image = (isPreview ? preview_ : display_).copy();
+            }
+            if (isPreview) frame.block = previewBlock_;
+            post_(std::move(frame));
+            lastSent_ = Clock::now();
+        }
+    }
+
+    // The complete render's frame, with its linear image and figures.
+    RenderFrame finalFrame(RenderResult result) {
+        RenderFrame frame = makeFrame(lastProgress_, true);
+        frame.image = display_;  // no tile writes it any more
+        frame.renderComplete = true;
+        frame.samples = result.samples;
+        frame.seconds = result.seconds;
+        frame.mraysPerSecond =
+            result.seconds > 0 ? result.rays.total() / result.seconds / 1e6 : 0.0;
+        frame.rays = result.rays.total();
+        frame.linear = std::make_shared<const Image>(std::move(result.image));
+        return frame;
+    }
+
+  private:
+    // The tile's pixels into the preview or the full-size picture.
+    void convert(const TileUpdate& t, bool isPreview) {
+        if (isPreview) {
+            std::call_once(previewMade_, [&] {
+                preview_ = QImage(t.image.width, t.image.height, QImage::Format_RGB32);
+                preview_.fill(Qt::black);
+                previewBlock_ = t.block;
+            });
+        } else {
+            std::call_once(displayMade_, [&] {
+                const int width = scene_.render.width, height = scene_.render.height;
+                display_ = preview_.isNull()
+                               ? blackImage(width, height)
+                               : blocksEnlarged(preview_, previewBlock_, width, height);
+            });
+        }
+        std::shared_lock shared(imageLock_);
+        const PixelRect r = tileBlocks(t);
+        convertRegion(t.image, isPreview ? preview_ : display_, r.x, r.y, r.width, r.height);
+    }
+
+    RenderFrame makeFrame(const RenderProgress& p, bool passComplete) const {
         RenderFrame frame;
-        frame.generation = generation;
+        frame.generation = generation_;
         frame.pass = p.pass;
         frame.passCount = p.passCount;
         frame.preview = p.kind == PassKind::Preview;
         frame.passComplete = passComplete;
-        frame.samples = samplesDone;
-        frame.settings = scene.render;
-        frame.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        frame.samples = samplesDone_;
+        frame.settings = scene_.render;
+        frame.seconds = std::chrono::duration<double>(Clock::now() - start_).count();
         return frame;
-    };
+    }
 
+    const Scene& scene_;
+    const quint64 generation_;
+    const std::function<bool()> stopping_;
+    const std::function<void(RenderFrame)> post_;
+    const Clock::time_point start_;
+
+    QImage preview_, display_;
+    int previewBlock_ = 1;
+    std::once_flag previewMade_, displayMade_;
+    std::shared_mutex imageLock_;
+
+    std::mutex frameMutex_;                 // guards what follows
+    int currentPass_ = -1, tilesDone_ = 0;  // tiles of currentPass_ converted so far
+    int samplesDone_ = 0;  // samples in every pixel: those of the last complete pass
+    Clock::time_point lastSent_;
+    RenderProgress lastProgress_;
+};
+
+}  // namespace
+
+void RenderWorker::renderOne(Scene requested, quint64 generation) {
+    const Scene scene = viewSized(std::move(requested));
     const auto shouldStop = [&] { return requests_.stale(generation); };
-    RenderProgress lastProgress;
-    const auto onTile = [&](const TileUpdate& t) {
-        const bool isPreview = t.progress.kind == PassKind::Preview;
-        if (isPreview) {
-            std::call_once(previewMade, [&] {
-                preview = QImage(t.image.width, t.image.height, QImage::Format_RGB32);
-                preview.fill(Qt::black);
-                previewBlock = t.block;
-            });
-        } else {
-            std::call_once(displayMade, [&] {
-                display = preview.isNull() ? blackImage(width, height)
-                                           : blocksEnlarged(preview, previewBlock, width, height);
-            });
-        }
-        {
-            std::shared_lock shared(imageLock);
-            const PixelRect r = tileBlocks(t);
-            convertRegion(t.image, isPreview ? preview : display, r.x, r.y, r.width, r.height);
-        }
-        std::lock_guard lock(frameMutex);
-        lastProgress = t.progress;
-        // Counted after the conversion, so a complete pass is complete in `display`.
-        if (t.progress.pass != currentPass) {
-            currentPass = t.progress.pass;
-            tilesDone = 0;
-        }
-        const bool passComplete = ++tilesDone == t.progress.tilesInPass;
-        if (passComplete && t.progress.kind == PassKind::Samples) samplesDone = t.progress.samples;
-        const bool lastPass = t.progress.pass + 1 == t.progress.passCount;
-        if ((passComplete && lastPass) || shouldStop()) return;  // the final frame follows below
-        if (passComplete || Clock::now() - lastSent > std::chrono::milliseconds(kFrameIntervalMs)) {
-            RenderFrame frame = makeFrame(t.progress, passComplete);
-            {
-                std::unique_lock exclusive(imageLock);
-                frame.image = (isPreview ? preview : display).copy();
-            }
-            if (isPreview) frame.block = previewBlock;
-            post(std::move(frame));
-            lastSent = Clock::now();
-        }
-    };
+    FrameAssembler frames(scene, generation, shouldStop,
+                          [this](RenderFrame frame) { post(std::move(frame)); });
     RenderOptions options;
     options.sceneValidated = true;  // request() asks for a valid scene
     options.bvhCache = &bvhCache_;
-    RenderResult result = render(scene, options, onTile, shouldStop);
+    RenderResult result = render(
+        scene, options, [&](const TileUpdate& t) { frames.addTile(t); }, shouldStop);
     bvhBuilds_ = bvhCache_.builds;
     bvhRefits_ = bvhCache_.refits;
     if (!result.completed) return;  // superseded: a newer request is waiting
-
-    RenderFrame frame = makeFrame(lastProgress, true);
-    frame.image = display;  // no tile writes it any more
-    frame.renderComplete = true;
-    frame.samples = result.samples;
-    frame.seconds = result.seconds;
-    frame.mraysPerSecond = result.seconds > 0 ? result.rays.total() / result.seconds / 1e6 : 0.0;
-    frame.rays = result.rays.total();
-    frame.linear = std::make_shared<const Image>(std::move(result.image));
-    post(std::move(frame));
+    post(frames.finalFrame(std::move(result)));
 }
 
 }  // namespace whitted::ui

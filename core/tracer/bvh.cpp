@@ -3,7 +3,8 @@
 // each level's ranges on all cores, then the ranges below kJobSpheres as
 // independent jobs on all cores, spliced into one flat array of nodes in a
 // fixed order; or, for a lazy tree, each job when a ray first enters it
-// (lazyJobRoot()). Also the refit of a built tree and the cache that keeps one.
+// (lazyJobRoot()). The refit of a built tree and the cache that keeps one are
+// in bvh_refit.cpp.
 #include "tracer/bvh.h"
 
 #include <algorithm>
@@ -14,15 +15,14 @@
 #include <numeric>
 
 #include "base/parallel_for.h"
+#include "tracer/bvh_boxes.h"
 #include "tracer/bvh_split.h"
 
 namespace whitted {
 
 namespace {
 
-using bvh_build::LaneBox;
-using bvh_build::Lanes;
-using bvh_build::Ref;
+using namespace bvh_build;
 
 template <typename T>
 using RefArray = std::vector<Ref<T>, LargeBufferAllocator<Ref<T>>>;
@@ -47,154 +47,6 @@ constexpr int kSplitSamples = 4096;
 // cores some dozens of jobs at 100k spheres, large enough that a job's set-up
 // is nothing beside its work. Fixed, so the tree does not depend on the threads.
 constexpr int kJobSpheres = 2048;
-
-// The largest |coordinate| + radius a sphere in the tree may have: the margin
-// argument in bvh_traverse.h needs squares of such numbers to stay finite in T,
-// and the nodes' boxes, in float (BvhNode), must hold them. Beyond it a sphere
-// is tested directly.
-template <typename T>
-constexpr double kTreeReach = sizeof(T) == sizeof(float) ? 1e17 : 1e37;
-
-template <typename T>
-bool inReach(const glm::dvec3& c, double r) {
-    return std::max({std::fabs(c.x), std::fabs(c.y), std::fabs(c.z)}) + r < kTreeReach<T>;
-}
-
-// Lanes rounded to float one way, with no branch: which way the nearest float
-// lies is a coin toss per coordinate, and the branches of std::nextafter took
-// a sixth of the build. A float's bits, read as sign and magnitude, map to an
-// integer key that counts floats in order (both zeros to 0), so the next float
-// down or up is the key minus or plus one.
-using bvh_build::LaneInts;
-LaneInts floatKeys(Lanes<float> x) {
-    const LaneInts bits = reinterpret_cast<LaneInts>(x);
-    const LaneInts magnitude = bits & 0x7fffffff;
-    return bits < 0 ? -magnitude : magnitude;
-}
-Lanes<float> floatsOfKeys(LaneInts key) {
-    const LaneInts bits = key < 0 ? (-key | std::int32_t(0x80000000)) : key;
-    return reinterpret_cast<Lanes<float>>(bits);
-}
-// The lanes of x rounded to float towards -infinity.
-Lanes<float> floatsBelow(Lanes<double> x) {
-    const Lanes<float> nearest = __builtin_convertvector(x, Lanes<float>);
-    const LaneInts above = __builtin_convertvector(
-        __builtin_convertvector(nearest, Lanes<double>) > x, LaneInts);  // -1: one float too high
-    return floatsOfKeys(floatKeys(nearest) + above);
-}
-// The lanes of x rounded to float towards +infinity.
-Lanes<float> floatsAbove(Lanes<double> x) {
-    const Lanes<float> nearest = __builtin_convertvector(x, Lanes<float>);
-    const LaneInts below = __builtin_convertvector(
-        __builtin_convertvector(nearest, Lanes<double>) < x, LaneInts);  // -1: one float too low
-    return floatsOfKeys(floatKeys(nearest) - below);
-}
-
-// Lanes rounded outward to T: to float as above, unchanged in double.
-template <typename T>
-Lanes<T> lanesBelow(Lanes<double> x) {
-    if constexpr (sizeof(T) == sizeof(float))
-        return floatsBelow(x);
-    else
-        return x;
-}
-template <typename T>
-Lanes<T> lanesAbove(Lanes<double> x) {
-    if constexpr (sizeof(T) == sizeof(float))
-        return floatsAbove(x);
-    else
-        return x;
-}
-
-template <typename T>
-LaneBox<T> boxOf(const BvhNode& node) {
-    LaneBox<T> box;
-    box.grow(Lanes<T>{node.lo[0], node.lo[1], node.lo[2], 0},
-             Lanes<T>{node.hi[0], node.hi[1], node.hi[2], 0});
-    return box;
-}
-
-template <typename T>
-void storeBox(BvhNode& node, const LaneBox<T>& box) {
-    const Lanes<float> lo = floatsBelow(__builtin_convertvector(box.lo, Lanes<double>));
-    const Lanes<float> hi = floatsAbove(__builtin_convertvector(box.hi, Lanes<double>));
-    for (int a = 0; a < 3; ++a) {
-        node.lo[a] = lo[a];
-        node.hi[a] = hi[a];
-    }
-}
-
-template <typename T>
-Ref<T> sphereRef(const glm::dvec3& c, double r, std::int32_t sphere) {
-    const Lanes<double> centre{c.x, c.y, c.z, 0};
-    return {lanesBelow<T>(centre - r), lanesAbove<T>(centre + r), sphere};
-}
-
-LaneBox<double> sphereBox(const glm::dvec3& c, double r) {
-    LaneBox<double> b;
-    b.grow(Lanes<double>{c.x - r, c.y - r, c.z - r, 0},
-           Lanes<double>{c.x + r, c.y + r, c.z + r, 0});
-    return b;
-}
-
-// Which spheres stay out of the tree (bvh.h, SphereBvh::direct): first any a
-// tree in T cannot bound, then, largest first, each one far larger than all
-// the spheres smaller than it together. Only the few largest are candidates:
-// each chunk of spheres keeps its own largest, on all cores (a serial pass
-// took 15 ms at a million spheres), and only those are sorted (largest first,
-// ties in index order).
-template <typename T>
-std::vector<char> keptOut(std::span<const glm::dvec3> centres, std::span<const double> radii,
-                          const BvhBuildOptions& options, int threads) {
-    const int n = static_cast<int>(radii.size());
-    const auto larger = [&](int a, int b) {
-        return radii[a] > radii[b] || (radii[a] == radii[b] && a < b);
-    };
-    const std::size_t wanted = std::max(options.maxDirect, 0) + 1;
-    std::vector<char> out(n, 0);  // 1: out of the tree; 2, for a while: a candidate
-    std::vector<std::vector<int>> chunkLargest(chunkCount(n));
-    std::vector<int> chunkInReach(chunkCount(n), 0);
-    forEachChunk(n, threads, [&](int c, int begin, int end) {
-        std::vector<int>& largest = chunkLargest[c];  // largest first
-        for (int i = begin; i < end; ++i) {
-            if (!inReach<T>(centres[i], radii[i])) {
-                out[i] = 1;
-                continue;
-            }
-            ++chunkInReach[c];
-            if (largest.size() == wanted && !larger(i, largest.back())) continue;
-            largest.insert(std::upper_bound(largest.begin(), largest.end(), i, larger), i);
-            if (largest.size() > wanted) largest.pop_back();
-        }
-    });
-    std::vector<int> order;  // the candidates, largest first
-    for (const std::vector<int>& largest : chunkLargest)
-        order.insert(order.end(), largest.begin(), largest.end());
-    std::sort(order.begin(), order.end(), larger);
-    order.resize(std::min(order.size(), wanted));
-    const int m = std::accumulate(chunkInReach.begin(), chunkInReach.end(), 0);
-    const int candidates = static_cast<int>(order.size());
-    // smaller[i]: the box of the spheres in reach from order[i] on, the
-    // non-candidates' box summed by chunk.
-    std::vector<LaneBox<double>> smaller(candidates + 1), chunkBox(chunkCount(n));
-    for (int k : order) out[k] = 2;
-    forEachChunk(n, threads, [&](int c, int begin, int end) {
-        for (int i = begin; i < end; ++i)
-            if (!out[i]) chunkBox[c].grow(sphereBox(centres[i], radii[i]));
-    });
-    for (int k : order) out[k] = 0;
-    for (const LaneBox<double>& box : chunkBox) smaller[candidates].grow(box);
-    for (int i = candidates - 1; i >= 0; --i) {
-        smaller[i] = smaller[i + 1];
-        smaller[i].grow(sphereBox(centres[order[i]], radii[order[i]]));
-    }
-    for (int i = 0; i < std::min(options.maxDirect, m - 1); ++i) {
-        const LaneBox<double>& rest = smaller[i + 1];
-        if (!(2.0 * radii[order[i]] > options.hugeRatio * rest.extent(rest.longestAxis()))) break;
-        out[order[i]] = 1;
-    }
-    return out;
-}
 
 // nodes[1] of a tree: the root alone at 0, every pair of children then
 // starts at an even index, and so shares a cache line (the traversal tests
@@ -516,112 +368,12 @@ int lazyJobCount(const SphereBvh<T>& bvh) {
     return bvh.lazy ? static_cast<int>(bvh.lazy->jobs.size()) : 0;
 }
 
-template <typename T>
-bool refitSphereBvh(SphereBvh<T>& bvh, std::span<const glm::dvec3> centres,
-                    std::span<const double> radii) {
-    if (bvh.lazy) return false;  // its unbuilt subtrees have no nodes to refit
-    const int threads = resolveThreadCount(0);
-    std::atomic<bool> inTree{true};
-    forChunks(static_cast<int>(bvh.leafSpheres.size()), threads, [&](int j) {
-        const std::int32_t k = bvh.leafSpheres[j].index;
-        if (!inReach<T>(centres[k], radii[k])) inTree = false;
-    });
-    if (!inTree) return false;
-    // The leaves first, on all cores: they hold every sphere, and so most of
-    // the work. Their boxes are grown in double and rounded outward once per
-    // node: rounding is monotonic, so that is the box the build's per-sphere
-    // rounding gives, for a sixth of the roundings.
-    forChunks(static_cast<int>(bvh.nodes.size()), threads, [&](int i) {
-        BvhNode& leaf = bvh.nodes[i];
-        if (leaf.count <= 0) return;
-        LaneBox<double> box;
-        for (int j = leaf.first; j < leaf.first + leaf.count; ++j) {
-            const std::int32_t k = bvh.leafSpheres[j].index;
-            box.grow(sphereBox(centres[k], radii[k]));
-        }
-        storeBox(leaf, box);
-    });
-    // Then the inner nodes: children always come after their parent (the
-    // build), so one pass from the end meets every child before its parent.
-    for (std::size_t i = bvh.nodes.size(); i-- > 0;) {
-        BvhNode& node = bvh.nodes[i];
-        if (node.count >= 0) continue;  // a leaf, or the padding
-        LaneBox<double> box;
-        box.grow(boxOf<double>(bvh.nodes[node.first]));
-        box.grow(boxOf<double>(bvh.nodes[node.first + 1]));
-        storeBox(node, box);
-    }
-    return true;
-}
-
-template <typename T>
-double sahCost(const SphereBvh<T>& bvh) {
-    // Summed by chunk, in parallel, then the chunks in order: the same sum
-    // for any number of threads.
-    const int nodes = static_cast<int>(bvh.nodes.size());
-    std::vector<double> chunkCost(chunkCount(nodes));
-    forEachChunk(nodes, resolveThreadCount(0), [&](int c, int begin, int end) {
-        double cost = 0;
-        for (int i = begin; i < end; ++i) {
-            const BvhNode& n = bvh.nodes[i];
-            cost += double(boxOf<T>(n).halfArea()) * (n.count > 0 ? n.count : 1);
-        }
-        chunkCost[c] = cost;
-    });
-    return std::accumulate(chunkCost.begin(), chunkCost.end(), 0.0);
-}
-
-namespace {
-
-// The leaves' copies of their spheres' values, from `spheres`, on all cores:
-// at a million spheres the reads are scattered over 40 MB.
-template <typename T>
-void fillLeafSpheres(SphereBvh<T>& bvh, const SphereSet<T>& spheres) {
-    forChunks(static_cast<int>(bvh.leafSpheres.size()), resolveThreadCount(0),
-              [&](int i) { bvh.leafSpheres[i] = spheres.leafSphere(bvh.leafSpheres[i].index); });
-}
-
-}  // namespace
-
-template <typename T>
-std::shared_ptr<const SphereBvh<T>> sphereBvhFor(std::span<const glm::dvec3> centres,
-                                                 std::span<const double> radii,
-                                                 const SphereSet<T>& spheres, BvhCache* cache) {
-    if (!cache) {
-        BvhBuildOptions lazily;
-        lazily.lazy = true;
-        auto tree = std::make_shared<SphereBvh<T>>(buildSphereBvh<T>(centres, radii, lazily));
-        if (!tree->lazy) fillLeafSpheres(*tree, spheres);  // else each job fills its own
-        return tree;
-    }
-    BvhCache::Entry<T>& kept = cache->entry<T>();
-    // use_count 1: no earlier render still reads the tree being refit.
-    if (kept.tree && kept.tree.use_count() == 1 && kept.spheres == radii.size() &&
-        refitSphereBvh(*kept.tree, centres, radii) &&
-        sahCost(*kept.tree) <= BvhCache::kWornOut * kept.builtCost) {
-        fillLeafSpheres(*kept.tree, spheres);
-        ++cache->refits;
-        return kept.tree;
-    }
-    kept.tree = std::make_shared<SphereBvh<T>>(buildSphereBvh<T>(centres, radii));
-    fillLeafSpheres(*kept.tree, spheres);
-    kept.spheres = radii.size();
-    kept.builtCost = sahCost(*kept.tree);
-    ++cache->builds;
-    return kept.tree;
-}
-
 #define WHITTED_BVH(T)                                                                            \
     template SphereBvh<T> buildSphereBvh<T>(std::span<const glm::dvec3>, std::span<const double>, \
                                             const BvhBuildOptions&);                              \
-    template bool refitSphereBvh<T>(SphereBvh<T>&, std::span<const glm::dvec3>,                   \
-                                    std::span<const double>);                                     \
-    template double sahCost<T>(const SphereBvh<T>&);                                              \
     template int lazyJobRoot<T>(const SphereBvh<T>&, int, const SphereSet<T>&);                   \
     template int lazyJobsBuilt<T>(const SphereBvh<T>&);                                           \
-    template int lazyJobCount<T>(const SphereBvh<T>&);                                            \
-    template std::shared_ptr<const SphereBvh<T>> sphereBvhFor<T>(                                 \
-        std::span<const glm::dvec3>, std::span<const double>, const SphereSet<T>&, BvhCache*);
+    template int lazyJobCount<T>(const SphereBvh<T>&);
 WHITTED_BVH(float)
 WHITTED_BVH(double)
 #undef WHITTED_BVH

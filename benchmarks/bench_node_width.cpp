@@ -47,7 +47,8 @@
 #include <string>
 #include <vector>
 
-#include "bench_args.h"
+#include <CLI/CLI.hpp>
+
 #include "sphere_field.h"
 #include "tracer/bvh.h"
 #include "tracer/bvh_traverse.h"
@@ -614,35 +615,21 @@ struct Options {
     bool counts = true;
 };
 
-using bench::parseSizes;
-
 Options parseOptions(int argc, char** argv) {
     Options o;
-    for (int i = 1; i < argc; ++i) {
-        const std::string flag = argv[i];
-        const char* value = i + 1 < argc ? argv[i + 1] : "";
-        if (flag == "--no-counts") {
-            o.counts = false;
-            continue;
-        }
-        if (flag == "--sizes")
-            o.sizes = parseSizes(value);
-        else if (flag == "--width")
-            o.width = std::atoi(value);
-        else if (flag == "--height")
-            o.height = std::atoi(value);
-        else if (flag == "--row-step")
-            o.rowStep = std::max(1, std::atoi(value));
-        else if (flag == "--random")
-            o.random = std::atoi(value);
-        else if (flag == "--reps")
-            o.reps = std::max(1, std::atoi(value));
-        else {
-            std::fprintf(stderr, "bench_node_width: unknown option %s (see the source's top)\n",
-                         argv[i]);
-            std::exit(2);
-        }
-        ++i;
+    CLI::App app{"Node widths 2, 4 and 8 against ours (see the source's top)"};
+    app.add_option("--sizes", o.sizes, "Sphere counts, e.g. 1000,100000")->delimiter(',');
+    app.add_option("--width", o.width, "Image width");
+    app.add_option("--height", o.height, "Image height");
+    app.add_option("--row-step", o.rowStep, "Trace every this many rows")
+        ->check(CLI::PositiveNumber);
+    app.add_option("--random", o.random, "Random rays");
+    app.add_option("--reps", o.reps, "Repetitions")->check(CLI::PositiveNumber);
+    app.add_flag("!--no-counts", o.counts, "Skip the counting traversals");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        std::exit(app.exit(e) == 0 ? 0 : 2);  // help: 0; a bad flag: 2, as before
     }
     return o;
 }

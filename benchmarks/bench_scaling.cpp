@@ -26,6 +26,8 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "bench_args.h"
 #include "image/image_error.h"
 #include "image/image_io.h"
@@ -55,49 +57,36 @@ struct Options {
     std::string images;
 };
 
-using bench::parseSizes;
-
 Options parseOptions(int argc, char** argv) {
     Options o;
-    if (argc > 2 && argv[1][0] != '-') {  // WIDTH HEIGHT [MAX_BRUTE_N [N,N,...]]
-        o.width = std::atoi(argv[1]);
-        o.height = std::atoi(argv[2]);
-        if (argc > 3) o.maxBrute = std::atoi(argv[3]);
-        if (argc > 4) o.sizes = parseSizes(argv[4]);
-        o.ours = Acceleration::bvh;
-        return o;
+    CLI::App app{"Scene size against render time, ours against Embree (see the source's top)"};
+    app.add_option("--sizes", o.sizes, "Sphere counts, e.g. 100,1000")->delimiter(',');
+    app.add_option("--width", o.width, "Image width");
+    app.add_option("--height", o.height, "Image height");
+    app.add_option("--max-brute", o.maxBrute, "Brute force only up to this many spheres");
+    app.add_flag("!--no-double", o.doubles, "Leave double precision out");
+    bool bvh = false;
+    app.add_flag("--bvh", bvh, "Ours always with the BVH, not its own choice");
+    app.add_option("--csv", o.csv, "Write the table as CSV");
+    app.add_option("--images", o.images, "Write our render and Embree's into this folder");
+    // The older form: WIDTH HEIGHT [MAX_BRUTE_N [N,N,...]], always the BVH.
+    std::vector<std::string> older;
+    app.add_option("older", older, "WIDTH HEIGHT [MAX_BRUTE_N [N,N,...]] (older form)")
+        ->expected(0, 4);
+    try {
+        app.parse(argc, argv);
+        if (!older.empty()) {
+            if (older.size() < 2) throw CLI::ValidationError("older form", "WIDTH HEIGHT");
+            o.width = std::stoi(older[0]);
+            o.height = std::stoi(older[1]);
+            if (older.size() > 2) o.maxBrute = std::stoi(older[2]);
+            if (older.size() > 3) o.sizes = bench::parseSizes(older[3].c_str());
+            bvh = true;
+        }
+    } catch (const CLI::ParseError& e) {
+        std::exit(app.exit(e) == 0 ? 0 : 2);  // help: 0; a bad flag: 2, as before
     }
-    for (int i = 1; i < argc; ++i) {
-        const std::string flag = argv[i];
-        const char* value = i + 1 < argc ? argv[i + 1] : "";
-        if (flag == "--no-double") {
-            o.doubles = false;
-            continue;
-        }
-        if (flag == "--bvh") {
-            o.ours = Acceleration::bvh;
-            continue;
-        }
-        if (flag == "--sizes")
-            o.sizes = parseSizes(value);
-        else if (flag == "--width")
-            o.width = std::atoi(value);
-        else if (flag == "--height")
-            o.height = std::atoi(value);
-        else if (flag == "--max-brute")
-            o.maxBrute = std::atoi(value);
-        else if (flag == "--images")
-            o.images = value;
-        else if (flag == "--csv")
-            o.csv = value;
-        else {
-            std::fprintf(stderr,
-                         "bench_scaling: unknown option %s (see the source's top comment)\n",
-                         argv[i]);
-            std::exit(2);
-        }
-        ++i;
-    }
+    if (bvh) o.ours = Acceleration::bvh;
     return o;
 }
 

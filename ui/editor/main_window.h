@@ -1,7 +1,7 @@
 // The editor's main window: the render view in the middle, the scene lists on
 // the left, properties, camera and render settings on the right, the
-// Precision Check and Trade-off docks, the File, Edit, Render, View and Help menus and
-// the tool bar (main_window_menus.cpp). It
+// Precision Check and Trade-off docks (main_window_docks.cpp), the File, Edit,
+// Render, View and Help menus and the tool bar (main_window_menus.cpp). It
 // owns the document and the render worker and wires them together: every
 // scene change restarts the render, every frame that is not stale reaches the
 // view, the status bar and the Trade-off dock.
@@ -97,10 +97,12 @@ class MainWindow : public QMainWindow {
     void tickPreset();  // ticks the Render menu's preset the settings match
     QList<ControlRow> controls();
 
+    // main_window_docks.cpp
     void buildDocks();
     void buildTradeoffDock();
     // Shown under the settings, a dock squeezed small gets half of the column.
     void giveHalfOfColumn(QDockWidget* settingsDock, QDockWidget* dock);
+
     void sceneReplaced();
     void newScene();
     void openDialog();

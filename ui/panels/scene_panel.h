@@ -9,6 +9,7 @@
 #include "document/scene_document.h"
 
 class QAction;
+class QHBoxLayout;
 class QLineEdit;
 class QListView;
 class QSortFilterProxyModel;
@@ -66,6 +67,7 @@ class ScenePanel : public QWidget {
     const Tab& tab(ItemKind kind) const { return tabs_[static_cast<int>(kind)]; }
     int selectedRow(ItemKind kind) const;
     void buildTab(ItemKind kind, const QString& title, const QString& listName);
+    QHBoxLayout* buildTabButtons(ItemKind kind, QWidget* page);
     void selectRow(ItemKind kind, int row);
     void setFilter(ItemKind kind, const QString& text);
     int shownRow(ItemKind kind, int row) const;
@@ -74,6 +76,7 @@ class ScenePanel : public QWidget {
     void updateEnabled();
     void announce();
 
+    // scene_panel_edits.cpp
     void addItem(ItemKind kind);
     QMenu* buildAddMaterialMenu(QWidget* parent);
     void addMaterial(const MaterialPreset* preset);  // nullptr: a plain material

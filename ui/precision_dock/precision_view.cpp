@@ -62,6 +62,18 @@ QLabel* makeValue(const QString& name, const QString& tip) {
     return label;
 }
 
+// In a short dock a scroll bar, rather than text squeezed into illegible lines.
+void putInScrollArea(QWidget* view, QWidget* content) {
+    auto* scroll = new QScrollArea;
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidgetResizable(true);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setWidget(content);
+    auto* outer = new QVBoxLayout(view);
+    outer->setContentsMargins(0, 0, 0, 0);
+    outer->addWidget(scroll);
+}
+
 }  // namespace
 
 QSize PrecisionView::comparisonSize(const Scene& scene) {
@@ -116,15 +128,7 @@ PrecisionView::PrecisionView(SceneDocument* doc, QWidget* parent) : QWidget(pare
     layout->addWidget(heatMap_, 1);
     layout->addWidget(makeLegend());
     layout->addLayout(form);
-    // In a short dock a scroll bar, rather than text squeezed into illegible lines.
-    auto* scroll = new QScrollArea;
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setWidgetResizable(true);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setWidget(content);
-    auto* outer = new QVBoxLayout(this);
-    outer->setContentsMargins(0, 0, 0, 0);
-    outer->addWidget(scroll);
+    putInScrollArea(this, content);
 
     debounce_.setSingleShot(true);
     connect(&debounce_, &QTimer::timeout, this, &PrecisionView::startWhenMainRenderDone);

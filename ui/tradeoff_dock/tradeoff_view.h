@@ -98,6 +98,13 @@ class TradeoffView : public QWidget {
     void measureFinished(bool cancelled);
 
   private:
+    // The constructor's parts, in order.
+    void buildActions();
+    void buildWidgets();
+    void buildLayout();
+    void connectUpdates();
+
+    // tradeoff_view_pinning.cpp
     void pinCurrent();
     void offerConvergedReference(const RenderFrame& noisy);
     void startConvergedReference();
@@ -107,18 +114,23 @@ class TradeoffView : public QWidget {
     void scoreFrame(const RenderFrame& frame);
     void stopReference();
     void unpinAll();
-    void confirmMeasure();
     void onErrorMeasured(quint64 id, const ErrorStats& error);
+    void updatePinStatus();
+
+    // tradeoff_view_measure.cpp
+    void confirmMeasure();
     void onMeasurePoint(const TradeoffPoint& point, int done, int total);
     void onMeasureFinished(const MeasureResults& results, const QString& error);
-    void updateActions();
-    void updatePinStatus();
     void updateMeasureStatus();
+
+    void updateActions();
     void refreshPlot();
     void arrangeSplit();
     bool plotTabbed() const;
     void setPlotTabbed(bool tabbed);
     void showTable(QTableWidget* table);  // or the plot, where it is a tab of its own
+    // "640 × 480": the pin's and Measure's texts both show sizes.
+    static QString sizeText(int w, int h);
 
     SceneDocument* doc_;
     TradeoffRecord* record_;

@@ -18,6 +18,26 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr int kClickSlop = 4;           // pixels a press may move and still be a click
 constexpr double kKeyOrbit = kPi / 36;  // 5 degrees per arrow key
 constexpr double kKeyWalk = 0.05;       // of the distance to look_at per W/A/S/D/Q/E
+
+struct CameraActionEntry {
+    const char* name;
+    QString text;
+    QList<QKeySequence> keys;
+    std::function<void()> run;
+    // Reset and Frame also sit in the View menu, so they work from anywhere.
+    Qt::ShortcutContext context = Qt::WidgetShortcut;
+};
+
+QAction* addCameraAction(QWidget* view, const CameraActionEntry& e) {
+    auto* action = new QAction(e.text, view);
+    action->setObjectName(QLatin1String(e.name));
+    action->setShortcuts(e.keys);
+    action->setShortcutContext(e.context);
+    QObject::connect(action, &QAction::triggered, view, e.run);
+    view->addAction(action);
+    return action;
+}
+
 }  // namespace
 
 RenderView::RenderView(SceneDocument* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
@@ -200,14 +220,6 @@ void RenderView::frameSelectedSphere() {
 void RenderView::buildCameraActions() {
     // Each action calls the camera code itself: never a synthetic key event,
     // which would come back to the same shortcut (it overflowed the stack).
-    struct Entry {
-        const char* name;
-        QString text;
-        QList<QKeySequence> keys;
-        std::function<void()> run;
-        // Reset and Frame also sit in the View menu, so they work from anywhere.
-        Qt::ShortcutContext context = Qt::WidgetShortcut;
-    };
     auto move = [this](QString text, std::function<Camera(const Camera&)> f) {
         return [this, text, f] { moveCamera(text, f(doc_->scene().camera)); };
     };
@@ -224,7 +236,7 @@ void RenderView::buildCameraActions() {
             moveCamera(tr("Move camera"), walk(doc_->scene().camera, right, up, forward));
         };
     };
-    const std::vector<Entry> entries = {
+    const std::vector<CameraActionEntry> entries = {
         {"orbitLeft", tr("Orbit Left"), {Qt::Key_Left}, turn(kKeyOrbit, 0)},
         {"orbitRight", tr("Orbit Right"), {Qt::Key_Right}, turn(-kKeyOrbit, 0)},
         {"orbitUp", tr("Orbit Up"), {Qt::Key_Up}, turn(0, kKeyOrbit)},
@@ -254,15 +266,7 @@ void RenderView::buildCameraActions() {
          [this] { frameSelectedSphere(); },
          Qt::WindowShortcut},
     };
-    for (const Entry& e : entries) {
-        auto* action = new QAction(e.text, this);
-        action->setObjectName(QLatin1String(e.name));
-        action->setShortcuts(e.keys);
-        action->setShortcutContext(e.context);
-        connect(action, &QAction::triggered, this, e.run);
-        addAction(action);
-        cameraActions_.push_back(action);
-    }
+    for (const CameraActionEntry& e : entries) cameraActions_.push_back(addCameraAction(this, e));
 }
 
 QList<QPair<QString, QString>> RenderView::mouseControls() {

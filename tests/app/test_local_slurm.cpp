@@ -11,8 +11,6 @@
 #include <thread>
 #include <vector>
 
-#include <sys/wait.h>
-
 #include <gtest/gtest.h>
 
 #include "image/image_io.h"
@@ -25,19 +23,16 @@ namespace fs = std::filesystem;
 using test::shellQuote;
 using test::TempDir;
 
-const std::string kSeed = std::string(WHITTED_SCENES_DIR) + "/seed.json";
 const std::string kRender = WHITTED_RENDER_EXE;
-const std::string kFarm = WHITTED_FARM_EXE;
 
-using Shell = test::ShellRun;
-constexpr auto shell = test::runShell;
+using test::ProgramRun;
+using test::runShell;
 
 // Submits a batch job running `script` (a shell command); its id.
 std::string submit(const std::vector<std::string>& flags, const std::string& script) {
-    std::string command = "sbatch --parsable";
-    for (const std::string& f : flags) command.append(" ").append(shellQuote(f));
-    command.append(" --wrap ").append(shellQuote(script));
-    const Shell r = shell(command);
+    const std::string command = test::commandLine(
+        "sbatch", test::appended(test::appended({"--parsable"}, flags), {"--wrap", script}));
+    const ProgramRun r = runShell(command);
     EXPECT_EQ(r.exitCode, 0) << command << "\n" << r.out;
     std::string id = r.out;
     while (!id.empty() && (id.back() == '\n' || id.back() == ' ')) id.pop_back();
@@ -50,7 +45,7 @@ std::vector<std::string> finalStates(const std::string& job) {
     if (job.empty()) return {};  // not submitted (which submit() reported)
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
     for (;;) {
-        const Shell r = shell("squeue -h -t all -j " + job + " -o %T 2>/dev/null");
+        const ProgramRun r = runShell("squeue -h -t all -j " + job + " -o %T 2>/dev/null");
         std::vector<std::string> states;
         std::size_t at = 0;
         for (std::size_t end; (end = r.out.find('\n', at)) != std::string::npos; at = end + 1)
@@ -70,27 +65,28 @@ std::string regionTask(const TempDir& dir, const std::vector<std::string>& regio
     for (std::size_t i = 0; i < regions.size(); ++i)
         cases.append(std::to_string(i)).append(") region=").append(regions[i]).append(" ;; ");
     return "case $SLURM_ARRAY_TASK_ID in " + cases + "esac; exec " + shellQuote(kRender) + " " +
-           shellQuote(kSeed) + " --width 64 --height 48 --spp 2 --quiet --region \"$region\" -o " +
+           shellQuote(test::kSeedScenePath) +
+           " --width 64 --height 48 --spp 2 --quiet --region \"$region\" -o " +
            shellQuote((dir / "part").string()) + "\"$SLURM_ARRAY_TASK_ID\".exr";
 }
 
 std::string mergeTask(const TempDir& dir, int parts, const fs::path& out) {
-    std::string command = "exec " + shellQuote(kRender) + " merge";
+    std::vector<std::string> args = {"merge"};
     for (int i = 0; i < parts; ++i)
-        command.append(" ").append(
-            shellQuote((dir / ("part" + std::to_string(i) + ".exr")).string()));
-    return command + " -o " + shellQuote(out.string()) + " --quiet";
+        args.push_back((dir / ("part" + std::to_string(i) + ".exr")).string());
+    args.insert(args.end(), {"-o", out.string(), "--quiet"});
+    return "exec " + test::commandLine(kRender, args);
 }
 
 TEST(LocalSlurm, RegionsOfAnArrayJobMergeIntoTheLocalRender) {
     ASSERT_NE(std::getenv("SLURM_CONF"), nullptr) << "run through ctest: the fixture starts Slurm";
     TempDir dir;
     const fs::path local = dir / "local.exr", merged = dir / "merged.exr";
-    ASSERT_EQ(
-        std::system((shellQuote(kRender) + " " + shellQuote(kSeed) +
-                     " --width 64 --height 48 --spp 2 --quiet -o " + shellQuote(local.string()))
-                        .c_str()),
-        0);
+    ASSERT_EQ(std::system(
+                  test::commandLine(kRender, {test::kSeedScenePath, "--width", "64", "--height",
+                                              "48", "--spp", "2", "--quiet", "-o", local.string()})
+                      .c_str()),
+              0);
     const std::vector<std::string> regions = {"0,0,32,24", "32,0,64,24", "0,24,32,48",
                                               "32,24,64,48"};
     const std::string tasks = submit({"--array=0-3", "--output=" + (dir / "task-%a.log").string()},
@@ -127,51 +123,43 @@ TEST(LocalSlurm, AFailedTaskCancelsTheMergeAndLeavesTheOutputAlone) {
 // ---- whitted-farm ------------------------------------------------------------------
 
 // whitted-farm with the arguments, its stdout and stderr together.
-Shell farm(const std::vector<std::string>& args) {
-    std::string command = shellQuote(kFarm);
-    for (const std::string& a : args) command.append(" ").append(shellQuote(a));
-    return shell(command + " 2>&1");
-}
+const test::Program farm{WHITTED_FARM_EXE, test::Stderr::Merged};
 
 // The local render of the same command, for comparison.
 void renderLocally(const std::vector<std::string>& args) {
-    std::string command = shellQuote(kRender);
-    for (const std::string& a : args) command.append(" ").append(shellQuote(a));
+    const std::string command = test::commandLine(kRender, args);
     ASSERT_EQ(std::system((command + " --quiet").c_str()), 0) << command;
 }
 
 const std::vector<std::string> kSmall = {"--width", "64", "--height", "48", "--spp", "2"};
 
-std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
-    args.insert(args.end(), more.begin(), more.end());
-    return args;
-}
-
 // A scene and an output whose paths have spaces, quotes and $ in them.
 TEST(WhittedFarm, TilesOnSlurmEqualTheLocalRender_PathsReachTheJobsIntact) {
     TempDir dir;
     const fs::path scene = dir / "my scene 'quoted' $HOME.json";
-    fs::copy_file(kSeed, scene);
+    fs::copy_file(test::kSeedScenePath, scene);
     const fs::path out = dir / "the $1 \"out\" image.png", local = dir / "local.png";
-    const Shell r =
-        farm(with({scene.string(), "-o", out.string(), "--tiles", "4", "--wait"}, kSmall));
+    const ProgramRun r = farm(
+        test::appended({scene.string(), "-o", out.string(), "--tiles", "4", "--wait"}, kSmall));
     ASSERT_EQ(r.exitCode, 0) << r.out;
     EXPECT_NE(r.out.find("4 of 4 regions to render"), std::string::npos) << r.out;
-    renderLocally(with({scene.string(), "-o", local.string()}, kSmall));
+    renderLocally(test::appended({scene.string(), "-o", local.string()}, kSmall));
     EXPECT_TRUE(readImage(out).rgb == readImage(local).rgb);
     // The same command again: nothing to do.
-    const Shell again =
-        farm(with({scene.string(), "-o", out.string(), "--tiles", "4", "--wait"}, kSmall));
+    const ProgramRun again = farm(
+        test::appended({scene.string(), "-o", out.string(), "--tiles", "4", "--wait"}, kSmall));
     EXPECT_EQ(again.exitCode, 0) << again.out;
     EXPECT_NE(again.out.find("already done"), std::string::npos) << again.out;
 }
 
 TEST(WhittedFarm, TurntableFramesOnSlurmEqualTheLocalFrames) {
     TempDir dir;
-    const Shell r = farm(
-        with({kSeed, "-o", (dir / "spin.png").string(), "--turntable", "3", "--wait"}, kSmall));
+    const ProgramRun r = farm(test::appended(
+        {test::kSeedScenePath, "-o", (dir / "spin.png").string(), "--turntable", "3", "--wait"},
+        kSmall));
     ASSERT_EQ(r.exitCode, 0) << r.out;
-    renderLocally(with({kSeed, "-o", (dir / "local.png").string(), "--turntable", "3"}, kSmall));
+    renderLocally(test::appended(
+        {test::kSeedScenePath, "-o", (dir / "local.png").string(), "--turntable", "3"}, kSmall));
     for (const char* n : {"0001", "0002", "0003"})
         EXPECT_TRUE(readImage(dir / (std::string("spin.") + n + ".png")).rgb ==
                     readImage(dir / (std::string("local.") + n + ".png")).rgb)
@@ -184,7 +172,7 @@ std::string jobRunningIn(const std::string& name, const fs::path& work) {
     std::string suffix = " ";  // appended, not " " + ...: GCC 12 warns falsely (-Wrestrict)
     suffix.append(work.string()).append("\n");
     for (int i = 0; i < 200; ++i) {
-        const Shell q = shell("squeue -h -n " + name + " -o '%F %Z' 2>/dev/null");
+        const ProgramRun q = runShell("squeue -h -n " + name + " -o '%F %Z' 2>/dev/null");
         for (std::size_t at = 0, end; (end = q.out.find('\n', at)) != std::string::npos;
              at = end + 1) {
             const std::string line = q.out.substr(at, end + 1 - at);
@@ -201,23 +189,23 @@ std::string jobRunningIn(const std::string& name, const fs::path& work) {
 TEST(WhittedFarm, ACancelledTaskFails_TheRerunRendersOnlyWhatIsMissing) {
     TempDir dir;
     const fs::path out = dir / "out.png", work = dir / "out.png.farm";
-    const std::vector<std::string> args =
-        with({kSeed, "-o", out.string(), "--tiles", "4", "--wait"}, kSmall);
-    Shell failed;
-    std::thread first([&] { failed = farm(with(args, {"--sbatch-arg=--hold"})); });
+    const std::vector<std::string> args = test::appended(
+        {test::kSeedScenePath, "-o", out.string(), "--tiles", "4", "--wait"}, kSmall);
+    ProgramRun failed;
+    std::thread first([&] { failed = farm(test::appended(args, {"--sbatch-arg=--hold"})); });
     // This farm's jobs, by their work directory: the other farm tests may be
     // running theirs at the same time under the same names.
     const std::string job = jobRunningIn("whitted-farm", work);
     const std::string merge = jobRunningIn("whitted-merge", work);
     if (job.empty() || merge.empty()) {  // cancel what did appear, so the farm returns
-        shell("scancel " + job + " " + merge);
+        runShell("scancel " + job + " " + merge);
         first.join();
         FAIL() << "the farm's held jobs never appeared:\n" << failed.out;
     }
-    EXPECT_EQ(shell("scancel " + job + "_2").exitCode, 0);
+    EXPECT_EQ(runShell("scancel " + job + "_2").exitCode, 0);
     // Both held jobs released: a held merge is not cancelled for its failed
     // dependency until it is.
-    EXPECT_EQ(shell("scontrol release " + job + "," + merge).exitCode, 0);
+    EXPECT_EQ(runShell("scontrol release " + job + "," + merge).exitCode, 0);
     first.join();
     EXPECT_EQ(failed.exitCode, 1) << failed.out;
     EXPECT_NE(failed.out.find("task 2 (job " + job + "_2)"), std::string::npos) << failed.out;
@@ -226,11 +214,12 @@ TEST(WhittedFarm, ACancelledTaskFails_TheRerunRendersOnlyWhatIsMissing) {
     EXPECT_FALSE(fs::exists(work / "part.2.exr"));
 
     const auto kept = fs::last_write_time(work / "part.0.exr");
-    const Shell second = farm(args);
+    const ProgramRun second = farm(args);
     ASSERT_EQ(second.exitCode, 0) << second.out;
     EXPECT_NE(second.out.find("1 of 4 regions to render"), std::string::npos) << second.out;
     EXPECT_EQ(fs::last_write_time(work / "part.0.exr"), kept) << "a finished region rendered again";
-    renderLocally(with({kSeed, "-o", (dir / "local.png").string()}, kSmall));
+    renderLocally(
+        test::appended({test::kSeedScenePath, "-o", (dir / "local.png").string()}, kSmall));
     EXPECT_TRUE(readImage(out).rgb == readImage(dir / "local.png").rgb);
 }
 

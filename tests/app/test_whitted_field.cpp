@@ -2,14 +2,10 @@
 // same flags give the same file, scenes/field.json is its output, and a field
 // renders the same through the sphere BVH as by brute force.
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <set>
 #include <string>
 #include <vector>
-
-#include <sys/wait.h>
 
 #include <gtest/gtest.h>
 
@@ -23,36 +19,26 @@ using whitted::test::TempDir;
 
 namespace {
 
-// `command` through the shell, its stdout and stderr together.
-test::ShellRun run(std::string command) {
-    return test::runShell(command.append(" 2>&1"));
+// whitted-field with the flags and "-o out", its stdout and stderr together.
+test::ProgramRun field(const std::vector<std::string>& flags, const fs::path& out) {
+    return test::runProgram(WHITTED_FIELD_EXE, test::appended(flags, {"-o", out.string()}),
+                            test::Stderr::Merged);
 }
 
-std::string quoted(const fs::path& p) {
-    return test::shellQuote(p.string());
-}
-
-// Appended piece by piece: GCC 12 warns falsely (-Wrestrict, bug 105329) on
-// "literal" + std::string chains at -O3.
-test::ShellRun field(const std::string& flags, const fs::path& out) {
-    std::string command = "'" WHITTED_FIELD_EXE "' ";
-    command.append(flags).append(" -o ").append(quoted(out));
-    return run(command);
-}
-
-// A float TIFF, so that equal files mean equal pixels.
-test::ShellRun renderTiff(const std::string& env, const fs::path& scene, const fs::path& out) {
-    std::string command = env;
-    command.append(" '" WHITTED_RENDER_EXE "' ").append(quoted(scene));
-    command.append(" --quiet --width 96 --height 64 -o ").append(quoted(out));
-    return run(command);
+// A float TIFF, so that equal files mean equal pixels; `env` ("NAME=value")
+// before the command.
+test::ProgramRun renderTiff(const std::string& env, const fs::path& scene, const fs::path& out) {
+    return test::runProgram(
+        WHITTED_RENDER_EXE,
+        {scene.string(), "--quiet", "--width", "96", "--height", "64", "-o", out.string()},
+        test::Stderr::Merged, env);
 }
 
 }  // namespace
 
 TEST(WhittedField, Output_LoadsWithCountBallsOfFiveMaterialsAndAFloor) {
     TempDir dir;
-    const test::ShellRun r = field("50 --seed 7", dir / "f.json");
+    const test::ProgramRun r = field({"50", "--seed", "7"}, dir / "f.json");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     const Scene scene = loadScene(dir / "f.json");
     ASSERT_EQ(scene.spheres.size(), 51u);
@@ -68,24 +54,25 @@ TEST(WhittedField, Output_LoadsWithCountBallsOfFiveMaterialsAndAFloor) {
 
 TEST(WhittedField, SameFlags_SameBytes_OtherSeed_OtherBalls) {
     TempDir dir;
-    ASSERT_EQ(field("30 --seed 3", dir / "a.json").exitCode, 0);
-    ASSERT_EQ(field("30 --seed 3", dir / "b.json").exitCode, 0);
-    ASSERT_EQ(field("30 --seed 4", dir / "c.json").exitCode, 0);
+    ASSERT_EQ(field({"30", "--seed", "3"}, dir / "a.json").exitCode, 0);
+    ASSERT_EQ(field({"30", "--seed", "3"}, dir / "b.json").exitCode, 0);
+    ASSERT_EQ(field({"30", "--seed", "4"}, dir / "c.json").exitCode, 0);
     EXPECT_EQ(test::readFile(dir / "a.json"), test::readFile(dir / "b.json"));
     EXPECT_NE(loadScene(dir / "a.json").spheres[0], loadScene(dir / "c.json").spheres[0]);
 }
 
 TEST(WhittedField, BadFlags_ExitTwoAndWriteNothing) {
     TempDir dir;
-    EXPECT_EQ(field("-3", dir / "f.json").exitCode, 2);
-    EXPECT_EQ(field("10 --half-width 0", dir / "f.json").exitCode, 2);
+    EXPECT_EQ(field({"-3"}, dir / "f.json").exitCode, 2);
+    EXPECT_EQ(field({"10", "--half-width", "0"}, dir / "f.json").exitCode, 2);
     EXPECT_FALSE(fs::exists(dir / "f.json"));
 }
 
 // The README's command for the shipped example remakes it byte for byte.
 TEST(WhittedField, ShippedFieldScene_IsTheGeneratorsOutput) {
     TempDir dir;
-    const test::ShellRun r = field("2500 --half-width 12 --length 40 --near 0", dir / "field.json");
+    const test::ProgramRun r =
+        field({"2500", "--half-width", "12", "--length", "40", "--near", "0"}, dir / "field.json");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     EXPECT_TRUE(test::readFile(dir / "field.json") ==
                 test::readFile(WHITTED_SCENES_DIR "/field.json"))
@@ -94,7 +81,7 @@ TEST(WhittedField, ShippedFieldScene_IsTheGeneratorsOutput) {
 
 TEST(WhittedField, ShippedFieldScene_RendersWithWhittedRender) {
     TempDir dir;
-    const test::ShellRun r = renderTiff("", WHITTED_SCENES_DIR "/field.json", dir / "field.tif");
+    const test::ProgramRun r = renderTiff("", WHITTED_SCENES_DIR "/field.json", dir / "field.tif");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     const Image image = readImage(dir / "field.tif");
     EXPECT_EQ(image.width, 96);
@@ -104,7 +91,9 @@ TEST(WhittedField, ShippedFieldScene_RendersWithWhittedRender) {
 // 50 balls is above the automatic crossover; both ways must give the same pixels.
 TEST(WhittedField, GeneratedField_BvhRenderEqualsBruteForceBitForBit) {
     TempDir dir;
-    ASSERT_EQ(field("50 --half-width 2 --length 6 --near 0", dir / "f.json").exitCode, 0);
+    ASSERT_EQ(
+        field({"50", "--half-width", "2", "--length", "6", "--near", "0"}, dir / "f.json").exitCode,
+        0);
     ASSERT_EQ(renderTiff("WHITTED_ACCEL=bvh", dir / "f.json", dir / "bvh.tif").exitCode, 0);
     ASSERT_EQ(renderTiff("WHITTED_ACCEL=brute", dir / "f.json", dir / "brute.tif").exitCode, 0);
     const Image bvh = readImage(dir / "bvh.tif"), brute = readImage(dir / "brute.tif");

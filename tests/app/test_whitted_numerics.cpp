@@ -1,14 +1,11 @@
 // End-to-end tests of the whitted-numerics sweep program on a tiny image and its
 // --quick sweep: exit codes, the report, the CSV and the pictures it links.
-#include <cstdlib>
 #include <map>
 #include <sstream>
 #include <string>
 #include <tuple>
 #include <utility>
 #include <vector>
-
-#include <sys/wait.h>
 
 #include <gtest/gtest.h>
 
@@ -18,30 +15,11 @@ namespace whitted {
 namespace {
 
 namespace fs = std::filesystem;
+using test::ProgramRun;
 using test::TempDir;
 
-const std::string kSeed = std::string(WHITTED_SCENES_DIR) + "/seed.json";
-
-using test::shellQuote;
-
-struct ProgramRun {
-    int exitCode = -1;
-    std::string err;
-};
-
-// Runs whitted-numerics; stdout and stderr go to a file beside `dir`, not in it.
-ProgramRun runNumerics(const TempDir& dir, const std::vector<std::string>& args) {
-    const fs::path errFile = dir.path().parent_path() / (dir.path().filename().string() + ".err");
-    std::string cmd = shellQuote(WHITTED_NUMERICS_EXE);
-    for (const auto& a : args) cmd.append(" ").append(shellQuote(a));
-    cmd.append(" >").append(shellQuote(errFile.string())).append(" 2>&1");
-    const int status = std::system(cmd.c_str());
-    ProgramRun r;
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.err = test::readFile(errFile);
-    fs::remove(errFile);
-    return r;
-}
+// whitted-numerics with the arguments, its stdout and stderr together in `out`.
+const test::Program runNumerics{WHITTED_NUMERICS_EXE, test::Stderr::Merged};
 
 // Fields of one CSV line; a quoted field (the offset "(1e2, 1e2, 1e2)") may hold commas.
 std::vector<std::string> splitCsvLine(const std::string& line) {
@@ -77,8 +55,8 @@ class QuickSweep : public ::testing::Test {
   protected:
     static void SetUpTestSuite() {
         dir_ = new TempDir;
-        run_ = runNumerics(*dir_, {"--scene", kSeed, "--out-dir", dir_->path().string(), "--width",
-                                   "24", "--height", "18", "--threads", "2", "--quick"});
+        run_ = runNumerics({"--scene", test::kSeedScenePath, "--out-dir", dir_->path().string(),
+                            "--width", "24", "--height", "18", "--threads", "2", "--quick"});
     }
     static void TearDownTestSuite() {
         delete dir_;
@@ -91,15 +69,15 @@ TempDir* QuickSweep::dir_ = nullptr;
 ProgramRun QuickSweep::run_;
 
 TEST_F(QuickSweep, ExitsZeroAndWritesReportCsvAndReference) {
-    ASSERT_EQ(run_.exitCode, 0) << run_.err;
+    ASSERT_EQ(run_.exitCode, 0) << run_.out;
     EXPECT_TRUE(fs::is_regular_file(*dir_ / "numerics.md"));
     EXPECT_TRUE(fs::is_regular_file(*dir_ / "numerics.csv"));
     EXPECT_TRUE(fs::is_regular_file(*dir_ / "images/numerics/reference.png"));
-    EXPECT_NE(run_.err.find("numerics.md"), std::string::npos) << run_.err;
+    EXPECT_NE(run_.out.find("numerics.md"), std::string::npos) << run_.out;
 }
 
 TEST_F(QuickSweep, CsvHasOneRowPerQuickPoint_AndPowersOfTwoAreBitIdentical) {
-    ASSERT_EQ(run_.exitCode, 0) << run_.err;
+    ASSERT_EQ(run_.exitCode, 0) << run_.out;
     std::istringstream csv(test::readFile(*dir_ / "numerics.csv"));
     std::string line;
     ASSERT_TRUE(std::getline(csv, line));
@@ -128,7 +106,7 @@ TEST_F(QuickSweep, CsvHasOneRowPerQuickPoint_AndPowersOfTwoAreBitIdentical) {
 }
 
 TEST_F(QuickSweep, ReportHasRangeTableAndEveryPointRow) {
-    ASSERT_EQ(run_.exitCode, 0) << run_.err;
+    ASSERT_EQ(run_.exitCode, 0) << run_.out;
     const std::string md = test::readFile(*dir_ / "numerics.md");
     EXPECT_NE(md.find("Generated"), std::string::npos);
     EXPECT_NE(md.find("--quick"), std::string::npos) << "the header names the command";
@@ -154,7 +132,7 @@ TEST_F(QuickSweep, ReportHasRangeTableAndEveryPointRow) {
 }
 
 TEST_F(QuickSweep, EveryLinkedPictureExists) {
-    ASSERT_EQ(run_.exitCode, 0) << run_.err;
+    ASSERT_EQ(run_.exitCode, 0) << run_.out;
     const std::string md = test::readFile(*dir_ / "numerics.md");
     // Markdown links "](images/numerics/....png)". Not <regex>: GCC 12 warns
     // inside it (-Wmaybe-uninitialized) in the sanitizer builds.
@@ -174,18 +152,18 @@ TEST_F(QuickSweep, EveryLinkedPictureExists) {
 
 TEST(WhittedNumerics, BadFlag_ExitsTwo) {
     TempDir dir;
-    const ProgramRun r = runNumerics(dir, {"--width", "0", "--out-dir", dir.path().string()});
-    EXPECT_EQ(r.exitCode, 2) << r.err;
-    EXPECT_NE(r.err.find("--width"), std::string::npos) << r.err;
+    const ProgramRun r = runNumerics({"--width", "0", "--out-dir", dir.path().string()});
+    EXPECT_EQ(r.exitCode, 2) << r.out;
+    EXPECT_NE(r.out.find("--width"), std::string::npos) << r.out;
     EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
 }
 
 TEST(WhittedNumerics, MissingScene_ExitsTwo) {
     TempDir dir;
-    const ProgramRun r = runNumerics(
-        dir, {"--scene", (dir / "none.json").string(), "--out-dir", dir.path().string()});
-    EXPECT_EQ(r.exitCode, 2) << r.err;
-    EXPECT_NE(r.err.find("none.json"), std::string::npos) << r.err;
+    const ProgramRun r =
+        runNumerics({"--scene", (dir / "none.json").string(), "--out-dir", dir.path().string()});
+    EXPECT_EQ(r.exitCode, 2) << r.out;
+    EXPECT_NE(r.out.find("none.json"), std::string::npos) << r.out;
     EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
 }
 

@@ -6,49 +6,22 @@
 #include <string>
 #include <vector>
 
-#include <sys/wait.h>
-
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "image/image_io.h"
+#include "support/core_support.h"
 #include "support/test_support.h"
 
 namespace whitted {
 namespace {
 
 namespace fs = std::filesystem;
+using test::ProgramRun;
 using test::TempDir;
 
-const std::string kSeed = std::string(WHITTED_SCENES_DIR) + "/seed.json";
-
-using test::shellQuote;
-
-struct ProgramRun {
-    int exitCode = -1;
-    std::string err;  // everything on stderr
-    std::string out;  // everything on stdout
-};
-
-// Runs whitted-render with the arguments, stdout and stderr captured in files of `dir`.
-ProgramRun runRender(const TempDir& dir, const std::vector<std::string>& args) {
-    const fs::path errFile = dir.path().parent_path() / (dir.path().filename().string() + ".err");
-    const fs::path outFile = dir.path().parent_path() / (dir.path().filename().string() + ".out");
-    std::string cmd = shellQuote(WHITTED_RENDER_EXE);
-    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict, bug 105329) on
-    // "literal" + std::string chains at -O3.
-    for (const auto& a : args) cmd.append(" ").append(shellQuote(a));
-    cmd.append(" >").append(shellQuote(outFile.string()));
-    cmd.append(" 2>").append(shellQuote(errFile.string()));
-    const int status = std::system(cmd.c_str());
-    ProgramRun r;
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.err = test::readFile(errFile);
-    r.out = test::readFile(outFile);
-    fs::remove(errFile);
-    fs::remove(outFile);
-    return r;
-}
+// whitted-render with the arguments, its stdout and stderr captured apart.
+const test::Program runRender{WHITTED_RENDER_EXE};
 
 std::string describe(const ProgramRun& r) {
     return "exit " + std::to_string(r.exitCode) + "\n--- stderr ---\n" + r.err;
@@ -57,8 +30,8 @@ std::string describe(const ProgramRun& r) {
 TEST(WhittedRender, SmallRender_ExitsZeroAndWritesImageOfRequestedSize) {
     TempDir dir;
     const fs::path out = dir / "seed.png";
-    const ProgramRun r = runRender(
-        dir, {kSeed, "-o", out.string(), "--width", "64", "--height", "48", "--threads", "2"});
+    const ProgramRun r = runRender({test::kSeedScenePath, "-o", out.string(), "--width", "64",
+                                    "--height", "48", "--threads", "2"});
     ASSERT_EQ(r.exitCode, 0) << describe(r);
     const Image img = readImage(out);
     EXPECT_EQ(img.width, 64);
@@ -75,8 +48,8 @@ TEST(WhittedRender, EveryFormat_WritesReadableImage) {
     TempDir dir;
     for (const char* name : {"o.png", "o.jpg", "o.tif", "o.exr", "o.hdr"}) {
         const fs::path out = dir / name;
-        const ProgramRun r = runRender(
-            dir, {kSeed, "-o", out.string(), "--width", "31", "--height", "17", "--quiet"});
+        const ProgramRun r = runRender({test::kSeedScenePath, "-o", out.string(), "--width", "31",
+                                        "--height", "17", "--quiet"});
         ASSERT_EQ(r.exitCode, 0) << name << "\n" << describe(r);
         const Image img = readImage(out);
         EXPECT_EQ(img.width, 31) << name;
@@ -88,8 +61,8 @@ TEST(WhittedRender, Stats_HaveEverySpecKeyAndConsistentRayCounts) {
     TempDir dir;
     const fs::path out = dir / "o.exr", stats = dir / "stats.json";
     const ProgramRun r =
-        runRender(dir, {kSeed, "-o", out.string(), "--width", "40", "--height", "30", "--spp", "3",
-                        "--depth", "4", "--threads", "2", "--stats", stats.string()});
+        runRender({test::kSeedScenePath, "-o", out.string(), "--width", "40", "--height", "30",
+                   "--spp", "3", "--depth", "4", "--threads", "2", "--stats", stats.string()});
     ASSERT_EQ(r.exitCode, 0) << describe(r);
     const nlohmann::json j = nlohmann::json::parse(test::readFile(stats));
     for (const char* key : {"width", "height", "samples_per_pixel", "max_depth", "precision",
@@ -119,8 +92,8 @@ TEST(WhittedRender, Flags_OverrideSceneSettings) {
     TempDir dir;
     const fs::path out = dir / "o.tif", stats = dir / "stats.json";
     const ProgramRun r =
-        runRender(dir, {kSeed, "-o", out.string(), "--width", "20", "--height", "10", "--precision",
-                        "double", "--depth", "0", "--stats", stats.string(), "--quiet"});
+        runRender({test::kSeedScenePath, "-o", out.string(), "--width", "20", "--height", "10",
+                   "--precision", "double", "--depth", "0", "--stats", stats.string(), "--quiet"});
     ASSERT_EQ(r.exitCode, 0) << describe(r);
     const nlohmann::json j = nlohmann::json::parse(test::readFile(stats));
     EXPECT_EQ(j["precision"], "double");
@@ -132,8 +105,8 @@ TEST(WhittedRender, Flags_OverrideSceneSettings) {
 
 TEST(WhittedRender, Quiet_PrintsNothingOnSuccess) {
     TempDir dir;
-    const ProgramRun r = runRender(
-        dir, {kSeed, "-o", (dir / "q.png").string(), "--width", "16", "--height", "12", "--quiet"});
+    const ProgramRun r = runRender({test::kSeedScenePath, "-o", (dir / "q.png").string(), "--width",
+                                    "16", "--height", "12", "--quiet"});
     ASSERT_EQ(r.exitCode, 0) << describe(r);
     EXPECT_EQ(r.err, "");
     EXPECT_EQ(r.out, "");
@@ -143,7 +116,7 @@ TEST(WhittedRender, WithoutQuiet_ReportsWhatItWrote) {
     TempDir dir;
     const fs::path out = dir / "v.png";
     const ProgramRun r =
-        runRender(dir, {kSeed, "-o", out.string(), "--width", "16", "--height", "12"});
+        runRender({test::kSeedScenePath, "-o", out.string(), "--width", "16", "--height", "12"});
     ASSERT_EQ(r.exitCode, 0) << describe(r);
     EXPECT_NE(r.err.find(out.string()), std::string::npos) << r.err;
 }
@@ -152,11 +125,11 @@ TEST(WhittedRender, WithoutQuiet_ReportsWhatItWrote) {
 
 TEST(WhittedRender, BadSceneFile_ExitsTwoNamingFileAndJsonPath) {
     TempDir dir;
-    nlohmann::json j = nlohmann::json::parse(test::readFile(kSeed));
+    nlohmann::json j = nlohmann::json::parse(test::readFile(test::kSeedScenePath));
     j["spheres"][2]["radius"] = -0.6;
     const fs::path scene = dir / "bad.json", out = dir / "o.png";
     test::writeFile(scene, j.dump(2));
-    const ProgramRun r = runRender(dir, {scene.string(), "-o", out.string()});
+    const ProgramRun r = runRender({scene.string(), "-o", out.string()});
     EXPECT_EQ(r.exitCode, 2) << describe(r);
     EXPECT_NE(r.err.find(scene.string()), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("spheres[2].radius"), std::string::npos) << r.err;
@@ -166,13 +139,13 @@ TEST(WhittedRender, BadSceneFile_ExitsTwoNamingFileAndJsonPath) {
 
 TEST(WhittedRender, SceneWithInfiniteNumber_ExitsTwoNamingJsonPath) {
     TempDir dir;
-    std::string text = test::readFile(kSeed);
+    std::string text = test::readFile(test::kSeedScenePath);
     const std::string from = "\"radius\": 0.6";
     ASSERT_NE(text.find(from), std::string::npos);
     text.replace(text.find(from), from.size(), "\"radius\": 1e999");  // spheres[0]
     const fs::path scene = dir / "inf.json", out = dir / "o.png";
     test::writeFile(scene, text);
-    const ProgramRun r = runRender(dir, {scene.string(), "-o", out.string()});
+    const ProgramRun r = runRender({scene.string(), "-o", out.string()});
     EXPECT_EQ(r.exitCode, 2) << describe(r);
     EXPECT_NE(r.err.find(scene.string()), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("spheres[0].radius"), std::string::npos) << r.err;
@@ -183,7 +156,7 @@ TEST(WhittedRender, InvalidJson_ExitsTwoNamingFile) {
     TempDir dir;
     const fs::path scene = dir / "broken.json", out = dir / "o.png";
     test::writeFile(scene, "{\"format\": \"whitted-scene\", \"version\": 1,");
-    const ProgramRun r = runRender(dir, {scene.string(), "-o", out.string()});
+    const ProgramRun r = runRender({scene.string(), "-o", out.string()});
     EXPECT_EQ(r.exitCode, 2) << describe(r);
     EXPECT_NE(r.err.find(scene.string()), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(out));
@@ -192,7 +165,7 @@ TEST(WhittedRender, InvalidJson_ExitsTwoNamingFile) {
 TEST(WhittedRender, MissingSceneFile_ExitsTwo) {
     TempDir dir;
     const fs::path scene = dir / "nothing here.json", out = dir / "o.png";
-    const ProgramRun r = runRender(dir, {scene.string(), "-o", out.string()});
+    const ProgramRun r = runRender({scene.string(), "-o", out.string()});
     EXPECT_EQ(r.exitCode, 2) << describe(r);
     EXPECT_NE(r.err.find("nothing here.json"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(out));
@@ -207,9 +180,9 @@ TEST(WhittedRender, BadFlags_ExitTwoWithMessageAndNoOutput) {
         {"--width", "many"},   {"--frobnicate"},
     };
     for (const auto& flags : cases) {
-        std::vector<std::string> args = {kSeed, "-o", out.string()};
+        std::vector<std::string> args = {test::kSeedScenePath, "-o", out.string()};
         args.insert(args.end(), flags.begin(), flags.end());
-        const ProgramRun r = runRender(dir, args);
+        const ProgramRun r = runRender(args);
         std::string label;
         for (const auto& f : flags) label += f + " ";
         EXPECT_EQ(r.exitCode, 2) << label << describe(r);
@@ -217,8 +190,8 @@ TEST(WhittedRender, BadFlags_ExitTwoWithMessageAndNoOutput) {
         EXPECT_FALSE(fs::exists(out)) << label;
     }
     // No output flag at all, and no scene at all.
-    EXPECT_EQ(runRender(dir, {kSeed}).exitCode, 2);
-    EXPECT_EQ(runRender(dir, {"-o", out.string()}).exitCode, 2);
+    EXPECT_EQ(runRender({test::kSeedScenePath}).exitCode, 2);
+    EXPECT_EQ(runRender({"-o", out.string()}).exitCode, 2);
     EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
 }
 
@@ -227,7 +200,7 @@ TEST(WhittedRender, UnknownOutputExtension_ExitsTwoAndWritesNothing) {
     for (const char* name : {"o.bmp", "o", "o.gif"}) {
         const fs::path out = dir / name;
         const ProgramRun r =
-            runRender(dir, {kSeed, "-o", out.string(), "--width", "8", "--height", "8"});
+            runRender({test::kSeedScenePath, "-o", out.string(), "--width", "8", "--height", "8"});
         EXPECT_EQ(r.exitCode, 2) << name << "\n" << describe(r);
         EXPECT_NE(r.err.find(name), std::string::npos) << r.err;
     }
@@ -236,25 +209,20 @@ TEST(WhittedRender, UnknownOutputExtension_ExitsTwoAndWritesNothing) {
 
 // ---- frames and regions (issue 14) -------------------------------------------------
 
-bool samePixels(const Image& a, const Image& b) {
-    return a.width == b.width && a.height == b.height && a.rgb == b.rgb;
-}
-
 // Four regions rendered apart and merged: the whole render, bit for bit.
 TEST(WhittedRender, RegionsMergeIntoTheWholeRenderBitForBit) {
     TempDir dir;
     const std::vector<std::string> size = {"--width", "61", "--height", "37",
                                            "--spp",   "2",  "--quiet"};
-    auto withSize = [&](std::vector<std::string> args) {
-        args.insert(args.end(), size.begin(), size.end());
-        return args;
-    };
-    ASSERT_EQ(runRender(dir, withSize({kSeed, "-o", (dir / "whole.exr").string()})).exitCode, 0);
+    ASSERT_EQ(
+        runRender(test::appended({test::kSeedScenePath, "-o", (dir / "whole.exr").string()}, size))
+            .exitCode,
+        0);
     std::vector<std::string> parts;
     for (const char* region : {"0,0,30,20", "30,0,61,20", "0,20,40,37", "40,20,61,37"}) {
         const fs::path part = dir / (std::string("part ") + region + ".exr");
-        const ProgramRun r =
-            runRender(dir, withSize({kSeed, "-o", part.string(), "--region", region}));
+        const ProgramRun r = runRender(
+            test::appended({test::kSeedScenePath, "-o", part.string(), "--region", region}, size));
         ASSERT_EQ(r.exitCode, 0) << region << "\n" << describe(r);
         parts.push_back(part.string());
     }
@@ -263,9 +231,9 @@ TEST(WhittedRender, RegionsMergeIntoTheWholeRenderBitForBit) {
         files.insert(files.end(), {"-o", out.string(), "--quiet"});
         return files;
     };
-    const ProgramRun merged = runRender(dir, mergeArgs(parts, dir / "merged.exr"));
+    const ProgramRun merged = runRender(mergeArgs(parts, dir / "merged.exr"));
     ASSERT_EQ(merged.exitCode, 0) << describe(merged);
-    EXPECT_TRUE(samePixels(readImage(dir / "merged.exr"), readImage(dir / "whole.exr")));
+    EXPECT_TRUE(test::samePixels(readImage(dir / "merged.exr"), readImage(dir / "whole.exr")));
     // A region's file is the region only, and says where it belongs.
     const ImagePart part = readImagePart(dir / "part 30,0,61,20.exr");
     EXPECT_EQ(part.image.width, 31);
@@ -274,7 +242,7 @@ TEST(WhittedRender, RegionsMergeIntoTheWholeRenderBitForBit) {
 
     // Without one of the parts the merge refuses, naming the first missing pixel.
     const fs::path gap = dir / "gap.png";
-    const ProgramRun refused = runRender(dir, mergeArgs({parts[0], parts[2], parts[3]}, gap));
+    const ProgramRun refused = runRender(mergeArgs({parts[0], parts[2], parts[3]}, gap));
     EXPECT_EQ(refused.exitCode, 2) << describe(refused);
     EXPECT_NE(refused.err.find("pixel (30, 0)"), std::string::npos) << refused.err;
     EXPECT_FALSE(fs::exists(gap));
@@ -294,8 +262,8 @@ TEST(WhittedRender, BadRegionOrFrames_ExitTwoAndWriteNothing) {
         {"-o", png, "--turntable", "0"},
     };
     for (auto args : cases) {
-        args.insert(args.begin(), kSeed);
-        const ProgramRun r = runRender(dir, args);
+        args.insert(args.begin(), test::kSeedScenePath);
+        const ProgramRun r = runRender(args);
         std::string label;
         for (const auto& a : args) label += a + " ";
         EXPECT_EQ(r.exitCode, 2) << label << describe(r);
@@ -309,22 +277,24 @@ TEST(WhittedRender, BadRegionOrFrames_ExitTwoAndWriteNothing) {
 TEST(WhittedRender, TurntableWritesNumberedFramesAndFramesRenderAlike) {
     TempDir dir;
     const std::vector<std::string> size = {"--width", "40", "--height", "30", "--quiet"};
-    auto withSize = [&](std::vector<std::string> args) {
-        args.insert(args.end(), size.begin(), size.end());
-        return args;
-    };
-    ASSERT_EQ(runRender(dir, withSize({kSeed, "-o", (dir / "still.png").string()})).exitCode, 0);
-    const ProgramRun all =
-        runRender(dir, withSize({kSeed, "-o", (dir / "spin.exr").string(), "--turntable", "3"}));
+    ASSERT_EQ(
+        runRender(test::appended({test::kSeedScenePath, "-o", (dir / "still.png").string()}, size))
+            .exitCode,
+        0);
+    const ProgramRun all = runRender(test::appended(
+        {test::kSeedScenePath, "-o", (dir / "spin.exr").string(), "--turntable", "3"}, size));
     ASSERT_EQ(all.exitCode, 0) << describe(all);
-    const ProgramRun some = runRender(dir, withSize({kSeed, "-o", (dir / "again.exr").string(),
-                                                     "--turntable", "3", "--frames", "3-3"}));
+    const ProgramRun some =
+        runRender(test::appended({test::kSeedScenePath, "-o", (dir / "again.exr").string(),
+                                  "--turntable", "3", "--frames", "3-3"},
+                                 size));
     ASSERT_EQ(some.exitCode, 0) << describe(some);
     EXPECT_EQ(test::joined(dir.entries()),
               "[again.0003.exr, spin.0001.exr, spin.0002.exr, spin.0003.exr, still.png]");
     const Image first = readImage(dir / "spin.0001.exr"), second = readImage(dir / "spin.0002.exr");
-    EXPECT_TRUE(samePixels(readImage(dir / "again.0003.exr"), readImage(dir / "spin.0003.exr")));
-    EXPECT_FALSE(samePixels(first, second)) << "the camera did not turn";
+    EXPECT_TRUE(
+        test::samePixels(readImage(dir / "again.0003.exr"), readImage(dir / "spin.0003.exr")));
+    EXPECT_FALSE(test::samePixels(first, second)) << "the camera did not turn";
     // The still as PNG against frame 1 as float, both through 8-bit sRGB.
     const Image still = readImage(dir / "still.png");
     int differing = 0;
@@ -338,8 +308,8 @@ TEST(WhittedRender, TurntableWritesNumberedFramesAndFramesRenderAlike) {
 TEST(WhittedRender, UnwritableOutput_ExitsOneAndLeavesNoFile) {
     TempDir dir;
     const fs::path out = dir / "no such dir" / "o.png";
-    const ProgramRun r =
-        runRender(dir, {kSeed, "-o", out.string(), "--width", "8", "--height", "8", "--quiet"});
+    const ProgramRun r = runRender(
+        {test::kSeedScenePath, "-o", out.string(), "--width", "8", "--height", "8", "--quiet"});
     EXPECT_EQ(r.exitCode, 1) << describe(r);
     EXPECT_NE(r.err.find("o.png"), std::string::npos) << r.err;
     EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
@@ -348,8 +318,8 @@ TEST(WhittedRender, UnwritableOutput_ExitsOneAndLeavesNoFile) {
 TEST(WhittedRender, UnwritableStats_ExitsOneAndRemovesTheImage) {
     TempDir dir;
     const fs::path out = dir / "o.png", stats = dir / "no such dir" / "stats.json";
-    const ProgramRun r = runRender(dir, {kSeed, "-o", out.string(), "--width", "8", "--height", "8",
-                                         "--stats", stats.string(), "--quiet"});
+    const ProgramRun r = runRender({test::kSeedScenePath, "-o", out.string(), "--width", "8",
+                                    "--height", "8", "--stats", stats.string(), "--quiet"});
     EXPECT_EQ(r.exitCode, 1) << describe(r);
     EXPECT_NE(r.err.find("stats.json"), std::string::npos) << r.err;
     EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());

@@ -5,10 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <string>
 
 #include "scene/scene_io.h"
+#include "support/test_support.h"
 
 namespace whitted {
 namespace {
@@ -17,11 +17,9 @@ TEST(FuzzCorpus, EveryInput_LoadsAndRoundTripsOrIsRefusedWithAMessage) {
     int loaded = 0, refused = 0;
     for (const auto& entry : std::filesystem::directory_iterator(WHITTED_FUZZ_CORPUS_DIR)) {
         SCOPED_TRACE(entry.path().filename().string());
-        std::ifstream in(entry.path(), std::ios::binary);
-        std::stringstream text;
-        text << in.rdbuf();
+        const std::string text = test::readFile(entry.path());
         try {
-            const Scene scene = parseScene(text.str(), "input.json");
+            const Scene scene = parseScene(text, "input.json");
             const std::string canonical = sceneToJson(scene);
             const Scene again = parseScene(canonical, "canonical.json");
             EXPECT_EQ(again, scene);

@@ -16,6 +16,7 @@
 #include "image/image_io.h"
 #include "image/image_parts.h"
 #include "scene/scene_io.h"
+#include "support/core_support.h"
 #include "support/test_support.h"
 #include "tracer/renderer.h"
 
@@ -26,9 +27,7 @@ namespace fs = std::filesystem;
 
 // The seed at 97x61 with 3 samples (odd sizes: regions cut tiles).
 Scene smallSeed() {
-    Scene s = loadScene(std::string(WHITTED_SCENES_DIR) + "/seed.json");
-    s.render.width = 97;
-    s.render.height = 61;
+    Scene s = test::seedScene(97, 61);
     s.render.samplesPerPixel = 3;
     return s;
 }
@@ -38,11 +37,6 @@ RenderResult renderRegion(const Scene& scene, std::optional<PixelRect> region, i
     o.threads = threads;
     o.region = region;
     return render(scene, o);
-}
-
-bool samePixels(const Image& a, const Image& b) {
-    return a.width == b.width && a.height == b.height &&
-           std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)) == 0;
 }
 
 TEST(RenderRegion, EqualsThatPartOfTheWholeRenderAndIsZeroElsewhere) {
@@ -57,7 +51,7 @@ TEST(RenderRegion, EqualsThatPartOfTheWholeRenderAndIsZeroElsewhere) {
                          std::to_string(r.width) + "x" + std::to_string(r.height));
             const Image part = renderRegion(scene, r, 3).image;
             ASSERT_EQ(part.width, 97);
-            EXPECT_TRUE(samePixels(cropImage(part, r), cropImage(whole, r)));
+            EXPECT_TRUE(test::samePixels(cropImage(part, r), cropImage(whole, r)));
             int lit = 0;
             for (int y = 0; y < part.height; ++y)
                 for (int x = 0; x < part.width; ++x) {
@@ -106,7 +100,7 @@ TEST(ImageParts, ExrPartsKeepTheirPlaceAndMergeIntoTheWhole) {
         EXPECT_EQ(parts.back().fullHeight, 61);
         EXPECT_EQ(parts.back().metadata.settings.samplesPerPixel, 3);
     }
-    EXPECT_TRUE(samePixels(mergeParts(parts, names), whole));
+    EXPECT_TRUE(test::samePixels(mergeParts(parts, names), whole));
     // A plain image is a part that is the whole picture.
     const ImagePart plain = readImagePart(dir / "part0.exr");
     EXPECT_EQ(plain.image.width, 50);
@@ -130,7 +124,7 @@ TEST(ImageParts, MergeRefusesGapsOverlapsAndOtherPictures) {
         return std::string("merged");
     };
     const ImagePart left = part({0, 0, 3, 4}), right = part({3, 0, 3, 4});
-    EXPECT_TRUE(samePixels(mergeParts({left, right}, {"l", "r"}), whole));
+    EXPECT_TRUE(test::samePixels(mergeParts({left, right}, {"l", "r"}), whole));
     EXPECT_EQ(problem({left}), "pixel (3, 0) of the 6x4 picture is in no part");
     EXPECT_EQ(problem({left, right, part({2, 1, 2, 2})}), "p2 and p0 overlap at pixel (2, 1)");
     ImagePart other = right;
@@ -143,7 +137,7 @@ TEST(ImageParts, MergeRefusesGapsOverlapsAndOtherPictures) {
 }
 
 TEST(Turntable, FrameOneIsTheCameraAndEachFrameTurnsAboutLookAt) {
-    const Camera c = loadScene(std::string(WHITTED_SCENES_DIR) + "/seed.json").camera;
+    const Camera c = test::seedScene().camera;
     const Camera first = turntableCamera(c, 1, 8);
     EXPECT_EQ(first.position, c.position);
     const Vec3 up = glm::normalize(c.up), offset = c.position - c.lookAt;

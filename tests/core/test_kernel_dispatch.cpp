@@ -10,12 +10,11 @@
 #include <string>
 #include <vector>
 
-#include <sys/wait.h>
-
 #include <gtest/gtest.h>
 
 #include "image/image_io.h"
 #include "scene/scene_io.h"
+#include "support/core_support.h"
 #include "support/test_support.h"
 #include "tracer/kernel_dispatch.h"
 #include "tracer/renderer.h"
@@ -124,23 +123,11 @@ TEST_F(KernelDispatch, EnvironmentVariableForcesAKernel) {
 
 // whitted-render run with one environment variable set ("NAME=value"): its
 // exit status (-1 for a signal, SIGILL included) and everything it printed.
-struct ProgramRun {
-    int exitCode = -1;
-    std::string output;
-};
-
-ProgramRun renderWith(const std::string& variable, const std::filesystem::path& image) {
-    std::string cmd = variable + " '" WHITTED_RENDER_EXE "' '";
-    cmd.append(WHITTED_SCENES_DIR "/seed.json' --quiet --width 16 --height 12 -o '");
-    cmd.append(image.string()).append("' 2>&1");
-    ProgramRun run;
-    FILE* pipe = popen(cmd.c_str(), "r");
-    if (!pipe) return {-1, "cannot start: " + cmd};
-    char buffer[256];
-    while (std::fgets(buffer, sizeof buffer, pipe)) run.output += buffer;
-    const int status = pclose(pipe);
-    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return run;
+test::ProgramRun renderWith(const std::string& variable, const std::filesystem::path& image) {
+    return test::runProgram(
+        WHITTED_RENDER_EXE,
+        {test::kSeedScenePath, "--quiet", "--width", "16", "--height", "12", "-o", image.string()},
+        test::Stderr::Merged, variable);
 }
 
 TEST_F(KernelDispatch, WhittedRenderRefusesKernelsItCannotRun) {
@@ -149,35 +136,32 @@ TEST_F(KernelDispatch, WhittedRenderRefusesKernelsItCannotRun) {
     for (const std::string& name : builtKernelNames())
         if (!contains(supportedKernelNames(), name)) refused.push_back(name);
     for (const std::string& kernel : refused) {
-        const ProgramRun run = renderWith("WHITTED_KERNEL=" + kernel, dir.path() / "out.png");
+        const test::ProgramRun run = renderWith("WHITTED_KERNEL=" + kernel, dir.path() / "out.png");
         std::printf("WHITTED_KERNEL=%s: exit %d, %s", kernel.c_str(), run.exitCode,
-                    run.output.c_str());
-        EXPECT_EQ(run.exitCode, 2) << run.output;
-        EXPECT_NE(run.output.find("WHITTED_KERNEL: "), std::string::npos) << run.output;
-        EXPECT_NE(run.output.find("\"" + kernel + "\""), std::string::npos) << run.output;
+                    run.out.c_str());
+        EXPECT_EQ(run.exitCode, 2) << run.out;
+        EXPECT_NE(run.out.find("WHITTED_KERNEL: "), std::string::npos) << run.out;
+        EXPECT_NE(run.out.find("\"" + kernel + "\""), std::string::npos) << run.out;
         EXPECT_FALSE(std::filesystem::exists(dir.path() / "out.png"));
     }
-    const ProgramRun baseline = renderWith("WHITTED_KERNEL=baseline", dir.path() / "out.png");
-    EXPECT_EQ(baseline.exitCode, 0) << baseline.output;
+    const test::ProgramRun baseline = renderWith("WHITTED_KERNEL=baseline", dir.path() / "out.png");
+    EXPECT_EQ(baseline.exitCode, 0) << baseline.out;
     EXPECT_TRUE(std::filesystem::exists(dir.path() / "out.png"));
 }
-
-std::string firstDifference(const Image& a, const Image& b);
 
 // WHITTED_ACCEL is refused like WHITTED_KERNEL when it names no structure; a
 // forced BVH renders the seed to the same file as its own brute force.
 TEST_F(KernelDispatch, WhittedRenderRefusesAnUnknownAcceleration) {
     test::TempDir dir;
-    const ProgramRun bad = renderWith("WHITTED_ACCEL=octree", dir.path() / "out.png");
-    EXPECT_EQ(bad.exitCode, 2) << bad.output;
-    EXPECT_NE(bad.output.find("WHITTED_ACCEL: unknown value 'octree'"), std::string::npos)
-        << bad.output;
+    const test::ProgramRun bad = renderWith("WHITTED_ACCEL=octree", dir.path() / "out.png");
+    EXPECT_EQ(bad.exitCode, 2) << bad.out;
+    EXPECT_NE(bad.out.find("WHITTED_ACCEL: unknown value 'octree'"), std::string::npos) << bad.out;
     EXPECT_FALSE(std::filesystem::exists(dir.path() / "out.png"));
     ASSERT_EQ(renderWith("WHITTED_ACCEL=bvh", dir.path() / "bvh.png").exitCode, 0);
     ASSERT_EQ(renderWith("WHITTED_ACCEL=brute", dir.path() / "brute.png").exitCode, 0);
-    EXPECT_EQ(
-        firstDifference(readImage(dir.path() / "bvh.png"), readImage(dir.path() / "brute.png")),
-        "");
+    EXPECT_EQ(test::firstDifference(readImage(dir.path() / "bvh.png"),
+                                    readImage(dir.path() / "brute.png")),
+              "");
 }
 
 // Renders of the repository's scenes, one per kernel this CPU runs.
@@ -196,17 +180,6 @@ RenderResult renderWith(const std::string& kernel, const Scene& scene) {
     return render(scene, options);
 }
 
-// The first pixel where two images differ, as "(x, y)", or "" when they are the same.
-std::string firstDifference(const Image& a, const Image& b) {
-    if (a.width != b.width || a.height != b.height) return "size";
-    for (int y = 0; y < a.height; ++y)
-        for (int x = 0; x < a.width; ++x)
-            for (int c = 0; c < 3; ++c)
-                if (a.pixel(x, y)[c] != b.pixel(x, y)[c])
-                    return "(" + std::to_string(x) + ", " + std::to_string(y) + ")";
-    return "";
-}
-
 TEST_P(KernelsRenderAlike, BitForBit) {
     const std::vector<std::string> kernels = supportedKernelNames();
     if (kernels.size() < 2) GTEST_SKIP() << "this CPU runs one kernel: nothing to compare";
@@ -215,7 +188,7 @@ TEST_P(KernelsRenderAlike, BitForBit) {
     const RenderResult reference = renderWith(kernels.back(), scene);
     for (std::size_t k = 0; k + 1 < kernels.size(); ++k) {
         const RenderResult other = renderWith(kernels[k], scene);
-        EXPECT_EQ(firstDifference(other.image, reference.image), "")
+        EXPECT_EQ(test::firstDifference(other.image, reference.image), "")
             << kernels[k] << " against " << kernels.back();
         EXPECT_EQ(other.rays.total(), reference.rays.total()) << kernels[k];
     }

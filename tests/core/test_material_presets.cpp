@@ -6,17 +6,12 @@
 #include <string>
 
 #include "scene/material_presets.h"
-#include "scene/scene_io.h"
+#include "support/core_support.h"
 
 namespace whitted {
 namespace {
 
-const MaterialPreset& preset(std::string_view name) {
-    for (const MaterialPreset& p : materialPresets())
-        if (p.name == name) return p;
-    ADD_FAILURE() << "no preset " << name;
-    return materialPresets().front();
-}
+using test::preset;
 
 TEST(MaterialPresets, SixWithUniqueNames_InMenuOrder) {
     std::set<std::string_view> names;
@@ -28,7 +23,7 @@ TEST(MaterialPresets, SixWithUniqueNames_InMenuOrder) {
 }
 
 TEST(MaterialPresets, EveryPreset_OnASphere_PassesValidateScene) {
-    Scene scene = loadScene(WHITTED_SCENES_DIR "/seed.json");
+    Scene scene = test::seedScene();
     for (const MaterialPreset& p : materialPresets()) {
         Scene s = scene;
         s.materials.push_back(presetMaterial(p, "preset"));

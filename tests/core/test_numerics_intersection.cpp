@@ -84,16 +84,7 @@ void checkCameraRays() {
         const Vec3 centre = cam + test::randomUnit(rng) * (ratio * r);
         const Vec3 w = glm::normalize(centre - cam);
 
-        Scene scene;
-        scene.camera.position = cam;
-        scene.camera.lookAt = centre;
-        Vec3 up = test::randomUnit(rng);
-        while (glm::length(glm::cross(up, w)) < 0.1) up = test::randomUnit(rng);
-        scene.camera.up = up;
-        scene.render.width = scene.render.height = 1;
-        scene.render.precision = test::precisionOf<T>();
-        scene.materials = {test::makeMaterial("m", {0.8, 0.8, 0.8})};
-        scene.spheres = {test::makeSphere("s", centre, r, "m")};
+        const Scene scene = test::oneSphereScene(rng, cam, centre, r, test::precisionOf<T>());
         const PreparedScene<T> s = prepareScene<T>(scene);
 
         const QVec O(cam), C(centre);

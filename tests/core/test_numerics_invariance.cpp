@@ -71,10 +71,6 @@ std::string percent(double fraction) {
     return s.str();
 }
 
-std::string label(Precision p) {
-    return std::string(precisionName(p));
-}
-
 // ---- scale ----------------------------------------------------------------------
 
 void checkPowerOfTwoScaling(Precision precision) {
@@ -91,10 +87,10 @@ void checkPowerOfTwoScaling(Precision precision) {
           << " pixels differ, largest display difference " << d.largest * 255 << "/255, "
           << compareImages(base, scaled, kDisplayStep).over << " by more than 1/255; "
           << writeFailure(base, scaled, kDisplayStep,
-                          "scale-2^" + std::to_string(k) + "-" + label(precision));
+                          "scale-2^" + std::to_string(k) + "-" + test::label(precision));
         failures += o.str();
     }
-    std::cout << "[ MEASURED ] " << label(precision) << " 2^k scaling, k in [-20, 20]: "
+    std::cout << "[ MEASURED ] " << test::label(precision) << " 2^k scaling, k in [-20, 20]: "
               << (failures.empty() ? "all bit-identical" : failures) << std::endl;
     EXPECT_TRUE(failures.empty()) << "not bit-identical:" << failures;
 }
@@ -125,11 +121,11 @@ void checkNearlyInvariant(Precision precision, int kLo, int kHi, double share, c
               << "/255";
         if (within < share)
             failures << "\n  k = " << k << ": " << percent(within) << " within 1/255, "
-                     << writeFailure(
-                            base, image, kDisplayStep,
-                            std::string(what) + "-1e" + std::to_string(k) + "-" + label(precision));
+                     << writeFailure(base, image, kDisplayStep,
+                                     std::string(what) + "-1e" + std::to_string(k) + "-" +
+                                         test::label(precision));
     }
-    std::cout << "[ MEASURED ] " << label(precision) << " " << what << " by 10^k (needs "
+    std::cout << "[ MEASURED ] " << test::label(precision) << " " << what << " by 10^k (needs "
               << percent(share) << " within 1/255):" << table.str() << std::endl;
     EXPECT_TRUE(failures.str().empty()) << "below " << percent(share) << ":" << failures.str();
 }

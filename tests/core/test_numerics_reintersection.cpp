@@ -70,16 +70,7 @@ void checkReintersection() {
         const Vec3 w = glm::normalize(centre - cam);
         const bool atOrigin = centre == Vec3(0.0);
 
-        Scene scene;
-        scene.camera.position = cam;
-        scene.camera.lookAt = centre;
-        Vec3 up = test::randomUnit(rng);
-        while (glm::length(glm::cross(up, w)) < 0.1) up = test::randomUnit(rng);
-        scene.camera.up = up;
-        scene.render.width = scene.render.height = 1;
-        scene.render.precision = test::precisionOf<T>();
-        scene.materials = {test::makeMaterial("m", {0.8, 0.8, 0.8})};  // opaque
-        scene.spheres = {test::makeSphere("s", centre, r, "m")};
+        const Scene scene = test::oneSphereScene(rng, cam, centre, r, test::precisionOf<T>());
         const PreparedScene<T> s = prepareScene<T>(scene);
 
         auto describe = [&](const std::string& what) {

@@ -25,14 +25,7 @@ namespace {
 
 using test::Rng;
 
-constexpr double kRelTol = 1e-5;
-constexpr double kAbsTol = 1e-7;
-
 const Precision kPrecisions[] = {Precision::Float, Precision::Double};
-
-std::string label(Precision p) {
-    return std::string(precisionName(p));
-}
 
 // Pixels with at least one NaN or infinite channel.
 long nonFinitePixels(const Image& image) {
@@ -43,31 +36,10 @@ long nonFinitePixels(const Image& image) {
     return bad;
 }
 
-// Camera at `from` looking at `at`, black background, no ambient, a 1x1 image.
-Scene pixelScene(Precision precision, Vec3 from = {0, 0, 0}, Vec3 at = {0, 0, 1}) {
-    Scene s;
-    s.camera.position = from;
-    s.camera.lookAt = at;
-    s.camera.up = {0, 1, 0};
-    s.camera.vfovDegrees = 60;
-    s.render.width = s.render.height = 1;
-    s.render.maxDepth = 5;
-    s.render.precision = precision;
-    s.background = {0, 0, 0};
-    s.ambient = {0, 0, 0};
-    return s;
-}
-
 Vec3 onlyPixel(const Scene& s) {
     const Image image = test::renderImage(s);
     const float* p = image.pixel(0, 0);
     return {p[0], p[1], p[2]};
-}
-
-void expectColour(const Vec3& actual, const Vec3& expected, const std::string& what) {
-    for (int c = 0; c < 3; ++c)
-        EXPECT_NEAR(actual[c], expected[c], kRelTol * std::fabs(expected[c]) + kAbsTol)
-            << what << ", channel " << c;
 }
 
 // ---- no NaN or Inf: random scenes ----------------------------------------------------
@@ -222,7 +194,7 @@ void checkRandomScenesFinite(Precision precision) {
             firstFailure = "scene " + std::to_string(n) + " (" + std::to_string(bad) +
                            " pixels):\n" + sceneToJson(scene);
     }
-    std::cout << "[ MEASURED ] " << label(precision) << ": " << failed << " of " << rendered
+    std::cout << "[ MEASURED ] " << test::label(precision) << ": " << failed << " of " << rendered
               << " random scenes with NaN or Inf pixels (" << badPixels << " pixels); "
               << 100.0 * double(hitPixels) / double(allPixels) << " % of pixels not background"
               << std::endl;
@@ -356,10 +328,10 @@ TEST(NumericsRobustness, FormatLimits_EachCase_EveryChannelFinite) {
                 continue;
             }
             const long bad = nonFinitePixels(test::renderImage(scene));
-            std::cout << "[ MEASURED ] " << label(precision) << ", " << c.name << ": " << bad
+            std::cout << "[ MEASURED ] " << test::label(precision) << ", " << c.name << ": " << bad
                       << " of " << scene.render.width * scene.render.height << " pixels NaN or Inf"
                       << std::endl;
-            EXPECT_EQ(bad, 0) << label(precision) << ", " << c.name;
+            EXPECT_EQ(bad, 0) << test::label(precision) << ", " << c.name;
         }
     }
 }
@@ -372,7 +344,7 @@ TEST(NumericsRobustness, FormatLimits_EachCase_EveryChannelFinite) {
 // of an odd-sized image is kd (ambient + c) exactly (N.L = 1).
 TEST(NumericsRobustness, FarSphere_At1e30_RenderedOrBackgroundNeverInf) {
     for (const Precision precision : kPrecisions) {
-        Scene s = pixelScene(precision);
+        Scene s = test::centreRayScene(precision);
         s.render.width = 33;
         s.render.height = 25;  // pixel (16, 12) is exactly the centre ray
         s.background = {0.25, 0.5, 0.125};
@@ -381,7 +353,7 @@ TEST(NumericsRobustness, FarSphere_At1e30_RenderedOrBackgroundNeverInf) {
         s.spheres = {test::makeSphere("far", {0, 0, 1e30}, 5e29, "m")};
         s.lights = {test::makeLight("at camera", {0, 0, 0}, {1, 1, 1}, 2)};
         const Image image = test::renderImage(s);
-        EXPECT_EQ(nonFinitePixels(image), 0) << label(precision);
+        EXPECT_EQ(nonFinitePixels(image), 0) << test::label(precision);
         const float* p = image.pixel(16, 12);
         const Vec3 centre{p[0], p[1], p[2]};
         const Vec3 lit{0.5 * 2.1, 0.25 * 2.1, 1 * 2.1};
@@ -389,16 +361,16 @@ TEST(NumericsRobustness, FarSphere_At1e30_RenderedOrBackgroundNeverInf) {
         long sphere = 0;
         for (std::size_t i = 0; i < image.rgb.size(); i += 3)
             sphere += Vec3(image.rgb[i], image.rgb[i + 1], image.rgb[i + 2]) != background;
-        std::cout << "[ MEASURED ] " << label(precision) << ": sphere 1e30 away covers " << sphere
-                  << " of 825 pixels" << std::endl;
+        std::cout << "[ MEASURED ] " << test::label(precision) << ": sphere 1e30 away covers "
+                  << sphere << " of 825 pixels" << std::endl;
         if (precision == Precision::Double || centre != background)
-            expectColour(centre, lit, label(precision) + ", centre pixel");
+            test::expectColour(centre, lit, test::label(precision) + ", centre pixel");
     }
 }
 
 template <typename T>
 void checkHugeFiniteDistances(double distance) {
-    Scene scene = pixelScene(test::precisionOf<T>());
+    Scene scene = test::centreRayScene(test::precisionOf<T>());
     scene.materials = {test::makeMaterial("m", {1, 1, 1})};
     scene.spheres = {test::makeSphere("far", {0, 0, distance}, distance / 10, "m")};
     const PreparedScene<T> s = prepareScene<T>(scene);
@@ -430,7 +402,7 @@ TEST(NumericsRobustness, ClosestHit_HugeButFiniteT_FoundAndComparedWithTMax) {
 
 template <typename T>
 void checkMissIsBackground() {
-    Scene scene = pixelScene(test::precisionOf<T>());
+    Scene scene = test::centreRayScene(test::precisionOf<T>());
     scene.background = {0.3, 0.2, 0.1};
     scene.ambient = {1, 1, 1};
     scene.materials = {test::makeMaterial("m", {1, 1, 1}, 1, 0.5)};
@@ -467,16 +439,17 @@ TEST(NumericsRobustness, Miss_AnyPrecision_ReturnsBackgroundExactly) {
 // kd (ambient + c N.L). With the light outside, the sphere shadows it: kd ambient.
 TEST(NumericsRobustness, CameraInsideSphere_SeesItsInsideLitFromWithin) {
     for (const Precision precision : kPrecisions) {
-        Scene s = pixelScene(precision);
+        Scene s = test::centreRayScene(precision);
         s.ambient = {0.1, 0.1, 0.1};
         s.materials = {test::makeMaterial("m", {0.5, 0.6, 0.7})};
         s.spheres = {test::makeSphere("room", {0, 0, 0}, 10, "m")};
         s.lights = {test::makeLight("inside", {1, 2, 3})};
         const double nl = 7 / std::sqrt(54.0);
-        expectColour(onlyPixel(s), Vec3(0.5, 0.6, 0.7) * (0.1 + nl),
-                     label(precision) + ", light inside");
+        test::expectColour(onlyPixel(s), Vec3(0.5, 0.6, 0.7) * (0.1 + nl),
+                           test::label(precision) + ", light inside");
         s.lights = {test::makeLight("outside", {0, 0, -20})};
-        expectColour(onlyPixel(s), Vec3(0.5, 0.6, 0.7) * 0.1, label(precision) + ", light outside");
+        test::expectColour(onlyPixel(s), Vec3(0.5, 0.6, 0.7) * 0.1,
+                           test::label(precision) + ", light outside");
     }
 }
 
@@ -487,17 +460,18 @@ TEST(NumericsRobustness, CameraInsideSphere_SeesItsInsideLitFromWithin) {
 // glass once: S = 0.5. Colour kd (ambient + 0.5 c). An opaque ball there: kd ambient.
 TEST(NumericsRobustness, LightInsideTransparentSphere_LightsOutsideByItsTransparency) {
     for (const Precision precision : kPrecisions) {
-        Scene s = pixelScene(precision, {0, 0, 2}, {0, 0, 5});
+        Scene s = test::centreRayScene(precision, {0, 0, 2}, {0, 0, 5});
         s.ambient = {0.1, 0.1, 0.1};
         s.materials = {test::makeMaterial("white", {0.8, 0.9, 1.0}),
                        test::makeMaterial("glass", {0, 0, 0}, 0, 0, 0.5, 1.5)};
         s.spheres = {test::makeSphere("lamp shade", {0, 0, 0}, 1, "glass"),
                      test::makeSphere("target", {0, 0, 5}, 1, "white")};
         s.lights = {test::makeLight("lamp", {0, 0, 0}, {1, 1, 1}, 2)};
-        expectColour(onlyPixel(s), Vec3(0.8, 0.9, 1.0) * (0.1 + 0.5 * 2),
-                     label(precision) + ", glass shade");
+        test::expectColour(onlyPixel(s), Vec3(0.8, 0.9, 1.0) * (0.1 + 0.5 * 2),
+                           test::label(precision) + ", glass shade");
         s.materials[1].transparency = 0;
-        expectColour(onlyPixel(s), Vec3(0.8, 0.9, 1.0) * 0.1, label(precision) + ", opaque shade");
+        test::expectColour(onlyPixel(s), Vec3(0.8, 0.9, 1.0) * 0.1,
+                           test::label(precision) + ", opaque shade");
     }
 }
 
@@ -508,13 +482,13 @@ TEST(NumericsRobustness, LightInsideTransparentSphere_LightsOutsideByItsTranspar
 // distance 2: no shadow, colour kd (ambient + c).
 TEST(NumericsRobustness, OccluderBehindLight_DoesNotShadow) {
     for (const Precision precision : kPrecisions) {
-        Scene s = pixelScene(precision, {0, 0, 1.8}, {0, 0, 5});
+        Scene s = test::centreRayScene(precision, {0, 0, 1.8}, {0, 0, 5});
         s.ambient = {0.1, 0.1, 0.1};
         s.materials = {test::makeMaterial("white", {0.8, 0.9, 1.0})};
         s.spheres = {test::makeSphere("lit", {0, 0, 5}, 1, "white"),
                      test::makeSphere("occluder", {0, 0, 1}, 0.5, "white")};
         s.lights = {test::makeLight("between", {0, 0, 2}, {1, 1, 1}, 1.5)};
-        expectColour(onlyPixel(s), Vec3(0.8, 0.9, 1.0) * (0.1 + 1.5), label(precision));
+        test::expectColour(onlyPixel(s), Vec3(0.8, 0.9, 1.0) * (0.1 + 1.5), test::label(precision));
     }
 }
 
@@ -539,7 +513,7 @@ TEST(NumericsRobustness, UpNearlyParallelToView_OrthonormalBasisAndFiniteRender)
             for (int trial = 0; trial < kTrials; ++trial) {
                 const Vec3 f = test::randomUnit(rng);
                 const Vec3 across = test::randomPerpendicular(rng, f);
-                Scene scene = pixelScene(Precision::Double);
+                Scene scene = test::centreRayScene(Precision::Double);
                 scene.camera.position = test::randomUnit(rng) * test::uniform(rng, 0, 10);
                 scene.camera.lookAt = scene.camera.position + f;
                 scene.camera.up = side * std::cos(angle) * f + std::sin(angle) * across;
@@ -609,7 +583,7 @@ TEST(NumericsRobustness, TotalInternalReflection_RefractedShareFollowsReflection
     };
     for (const Precision precision : kPrecisions) {
         for (const Case c : {Case{0.25, 0.5, 5}, Case{0.1, 0.9, 64}}) {
-            Scene s = pixelScene(precision);
+            Scene s = test::centreRayScene(precision);
             s.ambient = {0.5, 0.25, 0.125};
             s.render.maxDepth = c.depth;
             s.materials = {test::makeMaterial("glass", {0.02, 0.04, 0.08}, 0, c.kr, c.kt, 1.5)};
@@ -619,11 +593,11 @@ TEST(NumericsRobustness, TotalInternalReflection_RefractedShareFollowsReflection
             const Vec3 expected = Vec3(0.5 * 0.02, 0.25 * 0.04, 0.125 * 0.08) * sum;
             const Vec3 pixel = onlyPixel(s);
             std::ostringstream what;
-            what << label(precision) << ", kr " << c.kr << ", kt " << c.kt << ", max_depth "
+            what << test::label(precision) << ", kr " << c.kr << ", kt " << c.kt << ", max_depth "
                  << c.depth;
             EXPECT_TRUE(std::isfinite(pixel.x) && std::isfinite(pixel.y) && std::isfinite(pixel.z))
                 << what.str();
-            expectColour(pixel, expected, what.str());
+            test::expectColour(pixel, expected, what.str());
         }
     }
 }

@@ -16,7 +16,7 @@
 
 #include "analysis/precision_compare.h"
 #include "image/image_compare.h"
-#include "scene/scene_io.h"
+#include "support/core_support.h"
 
 namespace whitted {
 namespace {
@@ -80,7 +80,7 @@ Scene baseScene() {
 
 TEST(CompareScenes, SeedAgainstItself_NoDifferenceInEitherPrecision) {
     for (Precision p : {Precision::Float, Precision::Double}) {
-        Scene seed = loadScene(WHITTED_SCENES_DIR "/seed.json");
+        Scene seed = test::seedScene();
         seed.render.precision = p;
         const PrecisionComparison c = compareScenes(seed, seed, kW, kH);
         SCOPED_TRACE(std::string(precisionName(p)));
@@ -219,7 +219,7 @@ TEST(CompareScenes, IorLowered_TirCountIsTheRingBetweenTheCriticalAngles) {
 // The contract's figure for the seed (issue 4): at most 0.1 % of pixels differ by
 // more than 2/255 between float and double.
 TEST(ComparePrecisions, SeedScene_FloatAndDoubleAgreeAlmostEverywhere) {
-    const Scene seed = loadScene(WHITTED_SCENES_DIR "/seed.json");
+    const Scene seed = test::seedScene();
     const PrecisionComparison c = comparePrecisions(seed, 320, 240);
     EXPECT_FALSE(c.stopped);
     EXPECT_EQ(c.pixels, 320u * 240u);
@@ -231,9 +231,7 @@ TEST(ComparePrecisions, SeedScene_FloatAndDoubleAgreeAlmostEverywhere) {
     f.render.width = d.render.width = 320;
     f.render.height = d.render.height = 240;
     d.render.precision = Precision::Double;
-    RenderOptions o;
-    o.progressive = false;
-    const Image fi = render(f, o).image, di = render(d, o).image;
+    const Image fi = test::renderImage(f), di = test::renderImage(d);
     EXPECT_EQ(c.over1, compareImages(fi, di, 1.0f / 255.0f).over);
     EXPECT_EQ(c.over2, compareImages(fi, di, 2.0f / 255.0f).over);
     EXPECT_EQ(c.largest, compareImages(fi, di, 0.0f).largest);
@@ -244,7 +242,7 @@ TEST(ComparePrecisions, SeedScene_FloatAndDoubleAgreeAlmostEverywhere) {
 }
 
 TEST(ComparePrecisions, StopAtOnce_StoppedQuickly) {
-    const Scene seed = loadScene(WHITTED_SCENES_DIR "/seed.json");
+    const Scene seed = test::seedScene();
     const auto start = std::chrono::steady_clock::now();
     const PrecisionComparison c = comparePrecisions(seed, 1920, 1440, [] { return true; });
     const double seconds =

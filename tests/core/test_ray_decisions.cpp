@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "analysis/ray_decisions.h"
-#include "scene/scene_io.h"
+#include "support/core_support.h"
 #include "tracer/renderer.h"
 
 namespace whitted {
@@ -18,13 +18,6 @@ using D = Decision;
 constexpr auto kHit = DecisionKind::Hit;
 constexpr auto kShadow = DecisionKind::Shadow;
 constexpr auto kTir = DecisionKind::Tir;
-
-Material material(const std::string& name, Vec3 diffuse) {
-    Material m;
-    m.name = name;
-    m.diffuse = diffuse;
-    return m;
-}
 
 // A 1x1 image looking down +z from `eye`: the only ray is the centre ray, exactly (0,0,1).
 Scene centreRay(Vec3 eye, Precision precision) {
@@ -56,7 +49,7 @@ TYPED_TEST(RayDecisionsTest, EmptyScene_OneMiss) {
 
 TYPED_TEST(RayDecisionsTest, Mirror_HitThenReflectedMiss_OneShadowPerLight) {
     Scene s = centreRay({0, 0, 0}, Precision::Double);
-    Material mirror = material("mirror", {0.5, 0.5, 0.5});
+    Material mirror = test::makeMaterial("mirror", {0.5, 0.5, 0.5});
     mirror.reflectivity = 1;
     s.materials = {mirror};
     s.spheres = {Sphere{"ball", {0, 0, 5}, 1, "mirror"}};
@@ -74,7 +67,7 @@ TYPED_TEST(RayDecisionsTest, Mirror_HitThenReflectedMiss_OneShadowPerLight) {
 
 TYPED_TEST(RayDecisionsTest, Occluder_ShadowBitSet) {
     Scene s = centreRay({0, 0, 0}, Precision::Double);
-    s.materials = {material("grey", {0.5, 0.5, 0.5})};
+    s.materials = {test::makeMaterial("grey", {0.5, 0.5, 0.5})};
     // The hit point is (0,0,4); the way to the light passes (0,2,2.4) at 0.4 of its length.
     s.spheres = {Sphere{"ball", {0, 0, 5}, 1, "grey"}, Sphere{"blocker", {0, 2, 2.4}, 0.5, "grey"}};
     s.lights = {Light{"key", {0, 5, 0}, {1, 1, 1}, 1}};
@@ -89,7 +82,7 @@ TYPED_TEST(RayDecisionsTest, Occluder_ShadowBitSet) {
 // (ior 1.05: sin = 0.952) the ray leaves.
 TYPED_TEST(RayDecisionsTest, CameraInGlass_TirDecidedBySnell) {
     Scene s = centreRay({0.9, 0, 0}, Precision::Double);
-    Material glass = material("glass", {0, 0, 0});
+    Material glass = test::makeMaterial("glass", {0, 0, 0});
     glass.transparency = 0.9;
     glass.ior = 1.5;
     s.materials = {glass};
@@ -111,15 +104,11 @@ TYPED_TEST(RayDecisionsTest, CameraInGlass_TirDecidedBySnell) {
 // background where its ray misses and exactly ambient * diffuse where it is shadowed.
 // Checked over every pixel of the seed scene, in both precisions.
 TYPED_TEST(RayDecisionsTest, SeedScene_DecisionsMatchTheRenderedPixels) {
-    Scene s = loadScene(WHITTED_SCENES_DIR "/seed.json");
-    s.render.width = 160;
-    s.render.height = 120;
+    Scene s = test::seedScene(160, 120);
     s.render.maxDepth = 0;
     s.render.precision = std::is_same_v<TypeParam, float> ? Precision::Float : Precision::Double;
     for (Material& m : s.materials) m.checker.reset();  // one diffuse colour per sphere
-    RenderOptions o;
-    o.progressive = false;
-    const Image image = render(s, o).image;
+    const Image image = test::renderImage(s);
     const PreparedScene<TypeParam> p = prepareScene<TypeParam>(s);
     std::vector<Decision> d;
     int misses = 0, shadowed = 0;

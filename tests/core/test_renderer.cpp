@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "scene/scene_io.h"
+#include "support/core_support.h"
 #include "tracer/renderer.h"
 
 namespace whitted {
@@ -23,11 +24,8 @@ namespace {
 
 // scenes/seed.json at 97x61 (odd sizes, so tiles of 7, 16 and 64 all have ragged edges).
 Scene smallSeed(int spp, Precision precision) {
-    Scene s = loadScene(std::string(WHITTED_SCENES_DIR) + "/seed.json");
-    s.render.width = 97;
-    s.render.height = 61;
+    Scene s = test::seedScene(97, 61, precision);
     s.render.samplesPerPixel = spp;
-    s.render.precision = precision;
     return s;
 }
 
@@ -37,26 +35,6 @@ RenderOptions options(int threads, int tileSize, bool progressive) {
     o.tileSize = tileSize;
     o.progressive = progressive;
     return o;
-}
-
-// The first differing component, for a readable failure.
-std::string firstDifference(const Image& a, const Image& b) {
-    if (a.width != b.width || a.height != b.height)
-        return "sizes differ: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
-               " vs " + std::to_string(b.width) + "x" + std::to_string(b.height);
-    for (size_t k = 0; k < a.rgb.size(); ++k)
-        if (std::memcmp(&a.rgb[k], &b.rgb[k], sizeof(float)) != 0) {
-            const size_t p = k / 3;
-            return "pixel (" + std::to_string(p % a.width) + ", " + std::to_string(p / a.width) +
-                   ") channel " + std::to_string(k % 3) + ": " + std::to_string(a.rgb[k]) + " vs " +
-                   std::to_string(b.rgb[k]);
-        }
-    return "identical";
-}
-
-bool bitIdentical(const Image& a, const Image& b) {
-    return a.width == b.width && a.height == b.height && a.rgb.size() == b.rgb.size() &&
-           std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)) == 0;
 }
 
 struct DeterminismCase {
@@ -87,8 +65,8 @@ TEST_P(RendererDeterminism, AnyThreadsTilesOrPasses_GiveBitIdenticalImage) {
                                           std::to_string(threads);
                 EXPECT_TRUE(r.completed) << label;
                 EXPECT_EQ(r.samples, GetParam().spp) << label;
-                EXPECT_TRUE(bitIdentical(r.image, reference.image))
-                    << label << ": " << firstDifference(r.image, reference.image);
+                EXPECT_TRUE(test::samePixels(r.image, reference.image))
+                    << label << ": " << test::firstDifference(r.image, reference.image);
             }
 }
 
@@ -323,9 +301,7 @@ TEST(Renderer, OneShotRender_HasNoPreviewAndOnePass) {
 TEST(Renderer, StopAfterThreeTiles_ReturnsIncompleteWithoutReportingLaterTiles) {
     // A render big enough that finishing it would take far longer than stopping:
     // 640x480 at 16 spp is ~4.9M camera rays.
-    Scene scene = loadScene(std::string(WHITTED_SCENES_DIR) + "/seed.json");
-    scene.render.width = 640;
-    scene.render.height = 480;
+    Scene scene = test::seedScene(640, 480);
     scene.render.samplesPerPixel = 16;
     for (const int threads : {1, 2}) {
         SCOPED_TRACE("threads " + std::to_string(threads));
@@ -392,9 +368,7 @@ TEST(Renderer, ResolveThreadCount_ZeroMeansAllCoresOtherwiseAsAsked) {
 // is far above the measured figures printed here and far below what zeroing
 // 9.7 GB or finishing the preview would take.
 TEST(Renderer, LargestSceneTheFormatAllows_StartsAndStopsAtOnce) {
-    Scene scene = loadScene(WHITTED_SCENES_DIR "/seed.json");
-    scene.render.width = kMaxImageSize;
-    scene.render.height = kMaxImageSize;
+    Scene scene = test::seedScene(kMaxImageSize, kMaxImageSize);
     scene.render.samplesPerPixel = kMaxSamplesPerPixel;
     using Clock = std::chrono::steady_clock;
     const Clock::time_point start = Clock::now();

@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scene/scene_io.h"
+#include "support/core_support.h"
 #include "support/test_support.h"
 
 namespace whitted {
@@ -593,7 +594,7 @@ TEST(SceneIo, SaveToFullDisk_ThrowsNoSpaceNamingTheFile) {
     const fs::path link = dir / "scene.json";
     fs::create_symlink("/dev/full", link);
     try {
-        saveScene(loadScene(WHITTED_SCENES_DIR "/seed.json"), link);
+        saveScene(test::seedScene(), link);
         ADD_FAILURE() << "saved to a full disk";
     } catch (const std::runtime_error& e) {
         EXPECT_EQ(std::string(e.what()), link.string() + ": No space left on device");

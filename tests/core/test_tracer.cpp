@@ -7,7 +7,7 @@
 //
 // Tolerance: pixels are compared to 1e-5 relative (plus 1e-7 absolute for values
 // near zero) in both precisions; the image stores float, and a float render loses a
-// few ulps (1.2e-7 each) per operation.
+// few ulps (1.2e-7 each) per operation (test::expectColour, tests/support/core_support.h).
 #include <cmath>
 #include <cstdio>
 #include <ostream>
@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/core_support.h"
 #include "tracer/renderer.h"
 #include "tracer/tracer.h"
 
@@ -27,51 +28,6 @@ inline void PrintTo(Precision p, std::ostream* os) {
 }
 
 namespace {
-
-constexpr double kRelTol = 1e-5;
-constexpr double kAbsTol = 1e-7;
-
-Material material(const std::string& name, Vec3 diffuse) {
-    Material m;
-    m.name = name;
-    m.diffuse = diffuse;
-    return m;
-}
-
-Sphere sphere(const std::string& name, Vec3 centre, double radius, const std::string& mat) {
-    Sphere s;
-    s.name = name;
-    s.center = centre;
-    s.radius = radius;
-    s.material = mat;
-    return s;
-}
-
-Light light(const std::string& name, Vec3 position, Vec3 colour, double intensity) {
-    Light l;
-    l.name = name;
-    l.position = position;
-    l.color = colour;
-    l.intensity = intensity;
-    return l;
-}
-
-// 1x1 image, camera at the origin looking down +z; black background, no ambient.
-Scene centreRayScene(Precision precision) {
-    Scene s;
-    s.camera.position = {0, 0, 0};
-    s.camera.lookAt = {0, 0, 1};
-    s.camera.up = {0, 1, 0};
-    s.camera.vfovDegrees = 60;
-    s.render.width = 1;
-    s.render.height = 1;
-    s.render.maxDepth = 5;
-    s.render.samplesPerPixel = 1;
-    s.render.precision = precision;
-    s.background = {0, 0, 0};
-    s.ambient = {0, 0, 0};
-    return s;
-}
 
 RenderResult renderOneThread(const Scene& s) {
     RenderOptions o;
@@ -87,12 +43,6 @@ Vec3 centrePixel(const Scene& s, RayCounts* rays = nullptr) {
     const int x = r.image.width / 2, y = r.image.height / 2;
     const float* p = r.image.pixel(x, y);
     return {p[0], p[1], p[2]};
-}
-
-void expectColour(const Vec3& actual, const Vec3& expected, const char* what) {
-    for (int c = 0; c < 3; ++c)
-        EXPECT_NEAR(actual[c], expected[c], kRelTol * std::fabs(expected[c]) + kAbsTol)
-            << what << ", channel " << c;
 }
 
 // ---- reflect / refract -------------------------------------------------------
@@ -172,7 +122,7 @@ TYPED_TEST(ReflectRefractTest, RefractAtEveryAngle_IsUnitSnellOrNothingNeverNaN)
 
 class ShadingTest : public ::testing::TestWithParam<Precision> {
   protected:
-    Scene scene() const { return centreRayScene(GetParam()); }
+    Scene scene() const { return test::centreRayScene(GetParam()); }
 };
 
 std::string precisionLabel(const ::testing::TestParamInfo<Precision>& info) {
@@ -182,83 +132,83 @@ std::string precisionLabel(const ::testing::TestParamInfo<Precision>& info) {
 TEST_P(ShadingTest, AmbientOnly_IsAmbientTimesDiffuse) {
     Scene s = scene();
     s.ambient = {0.1, 0.2, 0.3};
-    s.materials = {material("m", {0.5, 0.25, 1})};
-    s.spheres = {sphere("ball", {0, 0, 5}, 1, "m")};
+    s.materials = {test::makeMaterial("m", {0.5, 0.25, 1})};
+    s.spheres = {test::makeSphere("ball", {0, 0, 5}, 1, "m")};
     // (0.1*0.5, 0.2*0.25, 0.3*1)
-    expectColour(centrePixel(s), {0.05, 0.05, 0.3}, "ambient");
+    test::expectColour(centrePixel(s), {0.05, 0.05, 0.3}, "ambient");
 }
 
 TEST_P(ShadingTest, NothingHit_IsBackground) {
     Scene s = scene();
     s.background = {0.25, 0.5, 0.125};
     s.ambient = {1, 1, 1};
-    s.materials = {material("m", {1, 1, 1})};
-    s.spheres = {sphere("beside", {3, 0, 5}, 1, "m")};
-    expectColour(centrePixel(s), {0.25, 0.5, 0.125}, "background");
+    s.materials = {test::makeMaterial("m", {1, 1, 1})};
+    s.spheres = {test::makeSphere("beside", {3, 0, 5}, 1, "m")};
+    test::expectColour(centrePixel(s), {0.25, 0.5, 0.125}, "background");
 }
 
 // Light at (0,3,0): L = ((0,3,0) - (0,0,4)) / 5 = (0, 0.6, -0.8), so N.L = 0.8.
 // c = (1, 0.5, 0.25) * 2 = (2, 1, 0.5).
 Light keyLight() {
-    return light("key", {0, 3, 0}, {1, 0.5, 0.25}, 2);
+    return test::makeLight("key", {0, 3, 0}, {1, 0.5, 0.25}, 2);
 }
 
 TEST_P(ShadingTest, Diffuse_IsLightTimesKdTimesNdotL) {
     Scene s = scene();
     s.ambient = {0.1, 0.1, 0.1};
-    s.materials = {material("m", {0.5, 0.5, 0.5})};
+    s.materials = {test::makeMaterial("m", {0.5, 0.5, 0.5})};
     s.lights = {keyLight()};
-    s.spheres = {sphere("ball", {0, 0, 5}, 1, "m")};
+    s.spheres = {test::makeSphere("ball", {0, 0, 5}, 1, "m")};
     // 0.1*0.5 + (2,1,0.5) * 0.5 * 0.8 = 0.05 + (0.8, 0.4, 0.2)
-    expectColour(centrePixel(s), {0.85, 0.45, 0.25}, "diffuse");
+    test::expectColour(centrePixel(s), {0.85, 0.45, 0.25}, "diffuse");
 }
 
 TEST_P(ShadingTest, LightIntensityScalesLinearlyWithoutFalloff) {
     Scene s = scene();
-    s.materials = {material("m", {0.5, 0.5, 0.5})};
+    s.materials = {test::makeMaterial("m", {0.5, 0.5, 0.5})};
     // Same direction as keyLight but 10x further: (0,30,-36); no fall-off with distance.
-    s.lights = {light("far", {0, 30, 4 - 40}, {1, 1, 1}, 0.5)};
-    s.spheres = {sphere("ball", {0, 0, 5}, 1, "m")};
+    s.lights = {test::makeLight("far", {0, 30, 4 - 40}, {1, 1, 1}, 0.5)};
+    s.spheres = {test::makeSphere("ball", {0, 0, 5}, 1, "m")};
     // 0.5 * 0.5 * 0.8 = 0.2
-    expectColour(centrePixel(s), {0.2, 0.2, 0.2}, "far light");
+    test::expectColour(centrePixel(s), {0.2, 0.2, 0.2}, "far light");
 }
 
 TEST_P(ShadingTest, Specular_IsKsTimesNdotHToTheShininess) {
     Scene s = scene();
-    Material m = material("m", {0, 0, 0});
+    Material m = test::makeMaterial("m", {0, 0, 0});
     m.specular = 0.5;
     m.shininess = 10;
     s.materials = {m};
     s.lights = {keyLight()};
-    s.spheres = {sphere("ball", {0, 0, 5}, 1, "m")};
+    s.spheres = {test::makeSphere("ball", {0, 0, 5}, 1, "m")};
     // H = normalize(L + V) = normalize(0, 0.6, -1.8); N.H = 1.8 / sqrt(3.6), (N.H)^2 = 0.9,
     // so (N.H)^10 = 0.9^5 = 0.59049. colour = (2,1,0.5) * 0.5 * 0.59049.
-    expectColour(centrePixel(s), {0.59049, 0.295245, 0.1476225}, "specular, n = 10");
+    test::expectColour(centrePixel(s), {0.59049, 0.295245, 0.1476225}, "specular, n = 10");
 
     s.materials[0].shininess = 10.5;  // not a whole number: (N.H)^10.5 = 0.9^5.25 = 0.5751395
-    expectColour(
+    test::expectColour(
         centrePixel(s),
         {2 * 0.5 * 0.5751394722266736, 0.5 * 0.5751394722266736, 0.25 * 0.5751394722266736},
         "specular, n = 10.5");
 
     s.materials[0].diffuse = {0.5, 0.5, 0.5};  // diffuse and specular add up
     s.materials[0].shininess = 10;
-    expectColour(centrePixel(s), {0.8 + 0.59049, 0.4 + 0.295245, 0.2 + 0.1476225},
-                 "diffuse + specular");
+    test::expectColour(centrePixel(s), {0.8 + 0.59049, 0.4 + 0.295245, 0.2 + 0.1476225},
+                       "diffuse + specular");
 }
 
 TEST_P(ShadingTest, LightBehindSurface_GivesNoDiffuseAndNoSpecular) {
     Scene s = scene();
     s.ambient = {0.1, 0.1, 0.1};
-    Material m = material("m", {0.5, 0.5, 0.5});
+    Material m = test::makeMaterial("m", {0.5, 0.5, 0.5});
     m.specular = 1;
     m.shininess = 1;
     s.materials = {m};
     // Light at (0,10,5): L = (0,10,1)/sqrt(101), N.L = -0.0995 < 0, but
     // N.H = 0.67 > 0: the specular term must still be skipped (only where N.L > 0).
-    s.lights = {light("above", {0, 10, 5}, {1, 1, 1}, 1)};
-    s.spheres = {sphere("ball", {0, 0, 5}, 1, "m")};
-    expectColour(centrePixel(s), {0.05, 0.05, 0.05}, "ambient only");
+    s.lights = {test::makeLight("above", {0, 10, 5}, {1, 1, 1}, 1)};
+    s.spheres = {test::makeSphere("ball", {0, 0, 5}, 1, "m")};
+    test::expectColour(centrePixel(s), {0.05, 0.05, 0.05}, "ambient only");
 }
 
 // Blockers on the segment from P = (0,0,4) to the light (0,3,0): P + s (0,3,-4) at
@@ -266,54 +216,58 @@ TEST_P(ShadingTest, LightBehindSurface_GivesNoDiffuseAndNoSpecular) {
 TEST_P(ShadingTest, ShadowThroughTransparentSpheres_IsProductOfTransparencies) {
     Scene s = scene();
     s.ambient = {0.1, 0.1, 0.1};
-    Material glassA = material("glassA", {0, 0, 0});
+    Material glassA = test::makeMaterial("glassA", {0, 0, 0});
     glassA.transparency = 0.5;
-    Material glassB = material("glassB", {0, 0, 0});
+    Material glassB = test::makeMaterial("glassB", {0, 0, 0});
     glassB.transparency = 0.4;
-    s.materials = {material("m", {0.5, 0.5, 0.5}), glassA, glassB};
+    s.materials = {test::makeMaterial("m", {0.5, 0.5, 0.5}), glassA, glassB};
     s.lights = {keyLight()};
-    s.spheres = {sphere("ball", {0, 0, 5}, 1, "m"), sphere("a", {0, 1.5, 2}, 0.5, "glassA")};
+    s.spheres = {test::makeSphere("ball", {0, 0, 5}, 1, "m"),
+                 test::makeSphere("a", {0, 1.5, 2}, 0.5, "glassA")};
     // S = 0.5: 0.05 + 0.5 * (0.8, 0.4, 0.2)
-    expectColour(centrePixel(s), {0.45, 0.25, 0.15}, "one blocker, S = 0.5");
-    s.spheres.push_back(sphere("b", {0, 0.75, 3}, 0.3, "glassB"));
+    test::expectColour(centrePixel(s), {0.45, 0.25, 0.15}, "one blocker, S = 0.5");
+    s.spheres.push_back(test::makeSphere("b", {0, 0.75, 3}, 0.3, "glassB"));
     // S = 0.5 * 0.4 = 0.2: 0.05 + 0.2 * (0.8, 0.4, 0.2)
-    expectColour(centrePixel(s), {0.21, 0.13, 0.09}, "two blockers, S = 0.2");
+    test::expectColour(centrePixel(s), {0.21, 0.13, 0.09}, "two blockers, S = 0.2");
 }
 
 TEST_P(ShadingTest, ShadowByOpaqueSphere_LeavesAmbientOnly) {
     Scene s = scene();
     s.ambient = {0.1, 0.1, 0.1};
-    Material m = material("m", {0.5, 0.5, 0.5});
+    Material m = test::makeMaterial("m", {0.5, 0.5, 0.5});
     m.specular = 1;
-    s.materials = {m, material("opaque", {1, 1, 1})};
+    s.materials = {m, test::makeMaterial("opaque", {1, 1, 1})};
     s.lights = {keyLight()};
-    s.spheres = {sphere("ball", {0, 0, 5}, 1, "m"), sphere("blocker", {0, 1.5, 2}, 0.5, "opaque")};
-    expectColour(centrePixel(s), {0.05, 0.05, 0.05}, "full shadow");
+    s.spheres = {test::makeSphere("ball", {0, 0, 5}, 1, "m"),
+                 test::makeSphere("blocker", {0, 1.5, 2}, 0.5, "opaque")};
+    test::expectColour(centrePixel(s), {0.05, 0.05, 0.05}, "full shadow");
 }
 
 TEST_P(ShadingTest, SphereBeyondLightOrBesideShadowRay_CastsNoShadow) {
     Scene s = scene();
     s.ambient = {0.1, 0.1, 0.1};
-    s.materials = {material("m", {0.5, 0.5, 0.5}), material("opaque", {1, 1, 1})};
+    s.materials = {test::makeMaterial("m", {0.5, 0.5, 0.5}),
+                   test::makeMaterial("opaque", {1, 1, 1})};
     s.lights = {keyLight()};
     // Beyond the light on the same line (s = 1.5 -> (0,4.5,-2)), and beside the segment.
-    s.spheres = {sphere("ball", {0, 0, 5}, 1, "m"), sphere("beyond", {0, 4.5, -2}, 0.5, "opaque"),
-                 sphere("beside", {2, 1.5, 2}, 0.5, "opaque")};
-    expectColour(centrePixel(s), {0.85, 0.45, 0.25}, "unshadowed");
+    s.spheres = {test::makeSphere("ball", {0, 0, 5}, 1, "m"),
+                 test::makeSphere("beyond", {0, 4.5, -2}, 0.5, "opaque"),
+                 test::makeSphere("beside", {2, 1.5, 2}, 0.5, "opaque")};
+    test::expectColour(centrePixel(s), {0.85, 0.45, 0.25}, "unshadowed");
 }
 
 TEST_P(ShadingTest, Mirror_AddsReflectivityTimesBackground) {
     Scene s = scene();
     s.ambient = {0.1, 0.1, 0.1};
     s.background = {0.4, 0.6, 0.8};
-    Material m = material("mirror", {0.2, 0.2, 0.2});
+    Material m = test::makeMaterial("mirror", {0.2, 0.2, 0.2});
     m.reflectivity = 0.5;
     s.materials = {m};
-    s.spheres = {sphere("ball", {0, 0, 5}, 1, "mirror")};
+    s.spheres = {test::makeSphere("ball", {0, 0, 5}, 1, "mirror")};
     // The reflected ray goes back along -z and hits nothing: 0.02 + 0.5 * background.
-    expectColour(centrePixel(s), {0.22, 0.32, 0.42}, "mirror, max_depth 5");
+    test::expectColour(centrePixel(s), {0.22, 0.32, 0.42}, "mirror, max_depth 5");
     s.render.maxDepth = 0;  // no secondary rays at all
-    expectColour(centrePixel(s), {0.02, 0.02, 0.02}, "mirror, max_depth 0");
+    test::expectColour(centrePixel(s), {0.02, 0.02, 0.02}, "mirror, max_depth 0");
     // A single bounce exists: depth 1 and 2 give the same picture.
     s.render.maxDepth = 1;
     const Vec3 one = centrePixel(s);
@@ -324,11 +278,12 @@ TEST_P(ShadingTest, Mirror_AddsReflectivityTimesBackground) {
 TEST_P(ShadingTest, FacingMirrors_EachDepthAddsOneBounce) {
     Scene s = scene();
     s.ambient = {0.1, 0.1, 0.1};
-    Material m = material("mirror", {0.2, 0.2, 0.2});
+    Material m = test::makeMaterial("mirror", {0.2, 0.2, 0.2});
     m.reflectivity = 0.5;
     s.materials = {m};
     // A at z = 5 in front, B at z = -5 behind the camera: the ray bounces between them.
-    s.spheres = {sphere("A", {0, 0, 5}, 1, "mirror"), sphere("B", {0, 0, -5}, 1, "mirror")};
+    s.spheres = {test::makeSphere("A", {0, 0, 5}, 1, "mirror"),
+                 test::makeSphere("B", {0, 0, -5}, 1, "mirror")};
     // Each hit adds e = 0.1 * 0.2 = 0.02 weighted by 0.5^bounce:
     // depth 0: 0.02, 1: 0.03, 2: 0.035, 3: 0.0375.
     const double expected[] = {0.02, 0.03, 0.035, 0.0375};
@@ -336,7 +291,8 @@ TEST_P(ShadingTest, FacingMirrors_EachDepthAddsOneBounce) {
         s.render.maxDepth = depth;
         RayCounts rays;
         const Vec3 c = centrePixel(s, &rays);
-        expectColour(c, Vec3(expected[depth]), ("max_depth " + std::to_string(depth)).c_str());
+        test::expectColour(c, Vec3(expected[depth]),
+                           ("max_depth " + std::to_string(depth)).c_str());
         EXPECT_EQ(rays.camera, 1u);
         EXPECT_EQ(rays.reflection, std::uint64_t(depth)) << "max_depth " << depth;
         EXPECT_EQ(rays.refraction, 0u);
@@ -347,28 +303,29 @@ TEST_P(ShadingTest, FacingMirrors_EachDepthAddsOneBounce) {
 TEST_P(ShadingTest, Glass_AddsTransparencyTimesWhatIsBehind) {
     Scene s = scene();
     s.ambient = {0.5, 0.5, 0.5};
-    Material glass = material("glass", {0, 0, 0});
+    Material glass = test::makeMaterial("glass", {0, 0, 0});
     glass.transparency = 0.8;
     glass.ior = 1.5;
-    s.materials = {glass, material("red", {1, 0, 0})};
+    s.materials = {glass, test::makeMaterial("red", {1, 0, 0})};
     // Normal incidence: the ray goes straight through the glass (z 4 to 6) and hits
     // the red ball at z = 9, whose colour is ambient * kd = (0.5, 0, 0). Entering and
     // leaving the glass each weigh 0.8: 0.64 * (0.5, 0, 0).
-    s.spheres = {sphere("glass", {0, 0, 5}, 1, "glass"), sphere("red", {0, 0, 10}, 1, "red")};
+    s.spheres = {test::makeSphere("glass", {0, 0, 5}, 1, "glass"),
+                 test::makeSphere("red", {0, 0, 10}, 1, "red")};
     s.render.maxDepth = 2;
     RayCounts rays;
-    expectColour(centrePixel(s, &rays), {0.32, 0, 0}, "glass, max_depth 2");
+    test::expectColour(centrePixel(s, &rays), {0.32, 0, 0}, "glass, max_depth 2");
     EXPECT_EQ(rays.refraction, 2u);
     EXPECT_EQ(rays.reflection, 0u);
     s.render.maxDepth = 1;  // the ray inside the glass may not leave it
-    expectColour(centrePixel(s), {0, 0, 0}, "glass, max_depth 1");
+    test::expectColour(centrePixel(s), {0, 0, 0}, "glass, max_depth 1");
     s.render.maxDepth = 0;
-    expectColour(centrePixel(s), {0, 0, 0}, "glass, max_depth 0");
+    test::expectColour(centrePixel(s), {0, 0, 0}, "glass, max_depth 0");
 
     s.spheres.pop_back();  // now the background is behind
     s.background = {0.5, 0.25, 1};
     s.render.maxDepth = 5;
-    expectColour(centrePixel(s), {0.32, 0.16, 0.64}, "glass over background");
+    test::expectColour(centrePixel(s), {0.32, 0.16, 0.64}, "glass over background");
 }
 
 TEST_P(ShadingTest, TotalInternalReflection_SendsTransparencyShareAlongReflection) {
@@ -380,25 +337,25 @@ TEST_P(ShadingTest, TotalInternalReflection_SendsTransparencyShareAlongReflectio
     s.camera.lookAt = {0, 0.9, 1};
     s.ambient = {1, 1, 1};
     s.background = {1, 1, 1};
-    Material glass = material("glass", {0.1, 0.1, 0.1});
+    Material glass = test::makeMaterial("glass", {0.1, 0.1, 0.1});
     glass.transparency = 1;
     glass.ior = 1.5;
     s.materials = {glass};
-    s.spheres = {sphere("glass", {0, 0, 0}, 1, "glass")};
+    s.spheres = {test::makeSphere("glass", {0, 0, 0}, 1, "glass")};
     // Each hit adds ambient * kd = 0.1, carried on with weight kt = 1: 0.1 * (max_depth + 1).
     // Dropping the kt share would give 0.1; refracting out would show the background.
     for (int depth : {0, 1, 3}) {
         s.render.maxDepth = depth;
         RayCounts rays;
-        expectColour(centrePixel(s, &rays), Vec3(0.1 * (depth + 1)),
-                     ("TIR, max_depth " + std::to_string(depth)).c_str());
+        test::expectColour(centrePixel(s, &rays), Vec3(0.1 * (depth + 1)),
+                           ("TIR, max_depth " + std::to_string(depth)).c_str());
         EXPECT_EQ(rays.reflection, std::uint64_t(depth));
         EXPECT_EQ(rays.refraction, 0u);
     }
     // With ior 1 nothing bends and there is no TIR: 0.1 + 1 * background.
     s.materials[0].ior = 1;
     s.render.maxDepth = 3;
-    expectColour(centrePixel(s), Vec3(1.1), "ior 1");
+    test::expectColour(centrePixel(s), Vec3(1.1), "ior 1");
 }
 
 struct CheckerCase {
@@ -423,14 +380,14 @@ TEST_P(ShadingTest, Checker_OddCellsUseCheckerColour) {
         const Vec3 cam{c.hitPoint.x, c.hitPoint.y, 0};
         s.camera.position = cam;
         s.camera.lookAt = cam + Vec3{0, 0, 1};
-        Material m = material("checker", diffuse);
+        Material m = test::makeMaterial("checker", diffuse);
         m.checker = Checker{checkerColour, c.size};
         s.materials = {m};
-        s.spheres = {sphere("ball", c.hitPoint + Vec3{0, 0, 1}, 1, "checker")};
+        s.spheres = {test::makeSphere("ball", c.hitPoint + Vec3{0, 0, 1}, 1, "checker")};
         const std::string what = "P = (" + std::to_string(c.hitPoint.x) + ", " +
                                  std::to_string(c.hitPoint.y) + ", " +
                                  std::to_string(c.hitPoint.z) + "), size " + std::to_string(c.size);
-        expectColour(centrePixel(s), c.odd ? checkerColour : diffuse, what.c_str());
+        test::expectColour(centrePixel(s), c.odd ? checkerColour : diffuse, what.c_str());
     }
 }
 
@@ -439,11 +396,11 @@ TEST_P(ShadingTest, CameraLookingDownPlusZ_SeesPlusXOnTheRightAndPlusYAtTheTop) 
     s.render.width = 64;
     s.render.height = 48;
     s.ambient = {1, 1, 1};
-    s.materials = {material("white", {1, 1, 1})};
+    s.materials = {test::makeMaterial("white", {1, 1, 1})};
     // vfov 60: at z = 5 the view spans x in +-5 tan30 * 4/3 = +-3.85 and y in +-2.89.
-    s.spheres = {sphere("right", {2, 0, 5}, 1, "white")};
+    s.spheres = {test::makeSphere("right", {2, 0, 5}, 1, "white")};
     const Image right = renderOneThread(s).image;
-    s.spheres = {sphere("up", {0, 1.5, 5}, 1, "white")};
+    s.spheres = {test::makeSphere("up", {0, 1.5, 5}, 1, "white")};
     const Image up = renderOneThread(s).image;
     double left = 0, rightHalf = 0, top = 0, bottom = 0;
     for (int y = 0; y < 48; ++y)
@@ -469,7 +426,7 @@ TEST_P(ShadingTest, GlassHeavyScene_HasNoNaNOrInfinitePixels) {
     s.camera.lookAt = {0, 0.25, 0};
     s.ambient = {0.05, 0.05, 0.05};
     s.background = {0.2, 0.3, 0.4};
-    Material glass = material("glass", {0, 0, 0});
+    Material glass = test::makeMaterial("glass", {0, 0, 0});
     glass.specular = 1;
     glass.shininess = 200;
     glass.reflectivity = 0.1;
@@ -478,15 +435,15 @@ TEST_P(ShadingTest, GlassHeavyScene_HasNoNaNOrInfinitePixels) {
     Material dense = glass;
     dense.name = "dense";
     dense.ior = 2.4;
-    Material floor = material("floor", {0.75, 0.75, 0.75});
+    Material floor = test::makeMaterial("floor", {0.75, 0.75, 0.75});
     floor.checker = Checker{{0, 0, 0}, 0.5};
     floor.reflectivity = 0.25;
     s.materials = {glass, dense, floor};
-    s.lights = {light("key", {5, 5, -10}, {1, 1, 1}, 1)};
-    s.spheres = {sphere("a", {0.5, 0.2, 1.5}, 0.6, "glass"),
-                 sphere("b", {-0.5, 0.3, 1.2}, 0.5, "dense"),
-                 sphere("inner", {0.5, 0.2, 1.5}, 0.3, "dense"),  // nested in a
-                 sphere("floor", {0, -99999.5, 0}, 99999, "floor")};
+    s.lights = {test::makeLight("key", {5, 5, -10}, {1, 1, 1}, 1)};
+    s.spheres = {test::makeSphere("a", {0.5, 0.2, 1.5}, 0.6, "glass"),
+                 test::makeSphere("b", {-0.5, 0.3, 1.2}, 0.5, "dense"),
+                 test::makeSphere("inner", {0.5, 0.2, 1.5}, 0.3, "dense"),  // nested in a
+                 test::makeSphere("floor", {0, -99999.5, 0}, 99999, "floor")};
     const Image img = renderOneThread(s).image;
     for (size_t k = 0; k < img.rgb.size(); ++k)
         ASSERT_TRUE(std::isfinite(img.rgb[k])) << "component " << k << " is " << img.rgb[k];
@@ -495,17 +452,17 @@ TEST_P(ShadingTest, GlassHeavyScene_HasNoNaNOrInfinitePixels) {
 // ---- secondary rays only where the scene can use them (SPEC §3, last point) ----
 
 Scene rayCountScene(Precision p) {
-    Scene s = centreRayScene(p);
+    Scene s = test::centreRayScene(p);
     s.render.width = 16;
     s.render.height = 12;
     s.camera.position = {0, 0.35, -1};
     s.camera.lookAt = {0, 0.25, 0};
     s.ambient = {0.05, 0.05, 0.05};
-    Material m = material("m", {0.5, 0.2, 0.1});
+    Material m = test::makeMaterial("m", {0.5, 0.2, 0.1});
     m.specular = 1;
     s.materials = {m};
-    s.spheres = {sphere("ball", {0, 0.2, 2}, 0.6, "m"),
-                 sphere("floor", {0, -99999.5, 0}, 99999, "m")};
+    s.spheres = {test::makeSphere("ball", {0, 0.2, 2}, 0.6, "m"),
+                 test::makeSphere("floor", {0, -99999.5, 0}, 99999, "m")};
     return s;
 }
 
@@ -521,7 +478,7 @@ TEST_P(ShadingTest, NoLightsNoMirrorsNoGlass_TracesCameraRaysOnly) {
 
 TEST_P(ShadingTest, LightButNoMirrorsNoGlass_TracesNoReflectionOrRefractionRays) {
     Scene s = rayCountScene(GetParam());
-    s.lights = {light("key", {5, 5, -10}, {1, 1, 1}, 1)};
+    s.lights = {test::makeLight("key", {5, 5, -10}, {1, 1, 1}, 1)};
     const RayCounts rays = renderOneThread(s).rays;
     EXPECT_EQ(rays.camera, 16u * 12u);
     EXPECT_GT(rays.shadow, 0u);  // every pixel sees the floor or the ball, lit from the front
@@ -532,11 +489,11 @@ TEST_P(ShadingTest, LightButNoMirrorsNoGlass_TracesNoReflectionOrRefractionRays)
 
 TEST_P(ShadingTest, DarkLightOrUnlitMaterials_TraceNoShadowRays) {
     Scene s = rayCountScene(GetParam());
-    s.lights = {light("off", {5, 5, -10}, {1, 1, 1}, 0)};  // c_j = 0
+    s.lights = {test::makeLight("off", {5, 5, -10}, {1, 1, 1}, 0)};  // c_j = 0
     EXPECT_EQ(renderOneThread(s).rays.shadow, 0u) << "light of intensity 0";
-    s.lights = {light("black", {5, 5, -10}, {0, 0, 0}, 1)};
+    s.lights = {test::makeLight("black", {5, 5, -10}, {0, 0, 0}, 1)};
     EXPECT_EQ(renderOneThread(s).rays.shadow, 0u) << "light of colour 0";
-    s.lights = {light("key", {5, 5, -10}, {1, 1, 1}, 1)};
+    s.lights = {test::makeLight("key", {5, 5, -10}, {1, 1, 1}, 1)};
     s.materials[0].diffuse = {0, 0, 0};
     s.materials[0].specular = 0;  // kd = ks = 0: the light term is zero everywhere
     EXPECT_EQ(renderOneThread(s).rays.shadow, 0u) << "black, non-specular material";
@@ -546,9 +503,10 @@ TEST_P(ShadingTest, DarkLightOrUnlitMaterials_TraceNoShadowRays) {
 // material (a scene not validated first) is refused on the caller's thread,
 // in validateScene()'s words, not left to crash a worker.
 TEST(PrepareScene, SphereWithMissingMaterial_IsRefusedWithItsPath) {
-    Scene s = centreRayScene(Precision::Float);
-    s.materials = {material("red", {1, 0, 0})};
-    s.spheres = {sphere("a", {0, 0, 5}, 1, "red"), sphere("b", {0, 3, 5}, 1, "blue")};
+    Scene s = test::centreRayScene(Precision::Float);
+    s.materials = {test::makeMaterial("red", {1, 0, 0})};
+    s.spheres = {test::makeSphere("a", {0, 0, 5}, 1, "red"),
+                 test::makeSphere("b", {0, 3, 5}, 1, "blue")};
     try {
         prepareScene<float>(s);
         FAIL() << "prepared a scene whose sphere names a missing material";

@@ -10,7 +10,7 @@
 #include "analysis/tradeoff.h"
 #include "image/image_compare.h"
 #include "image/srgb.h"
-#include "scene/scene_io.h"
+#include "support/core_support.h"
 #include "tracer/renderer.h"
 
 namespace whitted {
@@ -20,19 +20,6 @@ Image uniform(int w, int h, float v) {
     Image image(w, h);
     std::fill(image.rgb.begin(), image.rgb.end(), v);
     return image;
-}
-
-Scene smallSeed(int w, int h) {
-    Scene s = loadScene(WHITTED_SCENES_DIR "/seed.json");
-    s.render.width = w;
-    s.render.height = h;
-    return s;
-}
-
-RenderOptions oneShot() {
-    RenderOptions o;
-    o.progressive = false;
-    return o;
 }
 
 TEST(ImageError, IdenticalImages_ZeroErrorInfinitePsnr) {
@@ -67,19 +54,19 @@ TEST(ImageError, SmallerImage_ComparedStretchedOverTheReference) {
 }
 
 TEST(Tradeoff, WithSettings_ScalesTheSizeAndSetsTheRest) {
-    const Scene s = withSettings(smallSeed(640, 480), {16, 3, Precision::Double, 0.5});
+    const Scene s = withSettings(test::seedScene(640, 480), {16, 3, Precision::Double, 0.5});
     EXPECT_EQ(s.render.width, 320);
     EXPECT_EQ(s.render.height, 240);
     EXPECT_EQ(s.render.samplesPerPixel, 16);
     EXPECT_EQ(s.render.maxDepth, 3);
     EXPECT_EQ(s.render.precision, Precision::Double);
-    const Scene tiny = withSettings(smallSeed(3, 2), {1, 1, Precision::Float, 0.01});
+    const Scene tiny = withSettings(test::seedScene(3, 2), {1, 1, Precision::Float, 0.01});
     EXPECT_EQ(tiny.render.width, 1);
     EXPECT_EQ(tiny.render.height, 1);
 }
 
 TEST(Tradeoff, MoreSamples_LessErrorAgainstTheReference) {
-    const Scene scene = smallSeed(80, 60);
+    const Scene scene = test::seedScene(80, 60);
     const ReferenceRender ref = renderReference(scene, 256);
     TradeoffGrid grid;
     grid.samples = {1, 4, 16, 64};
@@ -129,18 +116,18 @@ TEST(DepthTruncation, MirrorBall_DepthZeroCutsExactlyKr_DepthOneCutsNothing) {
     EXPECT_EQ(largestTruncation(depthTruncationMap(s)), 0.0f);
     EXPECT_EQ(depthWithinTolerance(s), 1);
     // Past the longest chain, raising the depth changes nothing at all.
-    const Image at1 = render(s, oneShot()).image;
+    const Image at1 = test::renderImage(s);
     s.render.maxDepth = 6;
-    EXPECT_EQ(render(s, oneShot()).image, at1);
+    EXPECT_EQ(test::renderImage(s), at1);
 }
 
 TEST(DepthTruncation, Seed_PixelsWithNothingCutOff_DoNotChangeWithOneMoreBounce) {
-    Scene s = smallSeed(96, 72);
+    Scene s = test::seedScene(96, 72);
     s.render.maxDepth = 2;
     const Image map = depthTruncationMap(s);
-    const Image at2 = render(s, oneShot()).image;
+    const Image at2 = test::renderImage(s);
     s.render.maxDepth = 3;
-    const Image at3 = render(s, oneShot()).image;
+    const Image at3 = test::renderImage(s);
     int unchangedChecked = 0, changed = 0;
     for (int y = 0; y < s.render.height; ++y)
         for (int x = 0; x < s.render.width; ++x) {
@@ -157,7 +144,7 @@ TEST(DepthTruncation, Seed_PixelsWithNothingCutOff_DoNotChangeWithOneMoreBounce)
 }
 
 TEST(DepthTruncation, Seed_CutOffShrinksWithDepthBelowToleranceWhereTheSearchStops) {
-    Scene s = smallSeed(96, 72);
+    Scene s = test::seedScene(96, 72);
     float previous = INFINITY;
     for (int depth : {0, 1, 2, 4}) {
         s.render.maxDepth = depth;
@@ -175,13 +162,13 @@ TEST(DepthTruncation, Seed_CutOffShrinksWithDepthBelowToleranceWhereTheSearchSto
 TEST(Tradeoff, FloatAndDoubleRows_DifferWithinTheNumericsBound) {
     // docs/numerics.md: float and double renders of the seed differ in at most
     // 0.1 % of pixels by more than 2/255, at every setting of the grid.
-    const Scene scene = smallSeed(96, 72);
+    const Scene scene = test::seedScene(96, 72);
     for (int depth : {0, 2, 5})
         for (int spp : {1, 4}) {
             const Scene f = withSettings(scene, {spp, depth, Precision::Float, 1.0});
             const Scene d = withSettings(scene, {spp, depth, Precision::Double, 1.0});
             const ImageDifference diff =
-                compareImages(render(f, oneShot()).image, render(d, oneShot()).image, 2.0f / 255);
+                compareImages(test::renderImage(f), test::renderImage(d), 2.0f / 255);
             EXPECT_LE(diff.fractionOver(), 0.001) << "depth " << depth << " spp " << spp;
         }
 }
@@ -202,8 +189,8 @@ TEST(Tradeoff, ParetoFront_FasterOrMoreAccurateThanEveryOther) {
 }
 
 TEST(Tradeoff, Stop_ReturnsTheFinishedPointsPromptly) {
-    const Scene scene = smallSeed(40, 30);
-    const Image reference = render(scene, oneShot()).image;
+    const Scene scene = test::seedScene(40, 30);
+    const Image reference = test::renderImage(scene);
     TradeoffGrid grid;
     grid.minRuns = grid.maxRuns = 1;
     int calls = 0;
@@ -214,7 +201,7 @@ TEST(Tradeoff, Stop_ReturnsTheFinishedPointsPromptly) {
 }
 
 TEST(Tradeoff, ProgressiveCurve_ErrorFallsPassByPassToTheOneShotRender) {
-    Scene scene = smallSeed(80, 60);
+    Scene scene = test::seedScene(80, 60);
     const ReferenceRender ref = renderReference(scene, 256);
     scene.render.samplesPerPixel = 16;
     scene.render.maxDepth = ref.scene.render.maxDepth;
@@ -227,7 +214,7 @@ TEST(Tradeoff, ProgressiveCurve_ErrorFallsPassByPassToTheOneShotRender) {
         EXPECT_LT(curve[i].error.rmseLinear, curve[i - 1].error.rmseLinear) << "pass " << i;
     }
     // The last pass is the one-shot render, bit for bit, so its error is too.
-    const ErrorStats oneShotError = measureError(render(scene, oneShot()).image, ref.image);
+    const ErrorStats oneShotError = measureError(test::renderImage(scene), ref.image);
     EXPECT_EQ(curve.back().error.rmseLinear, oneShotError.rmseLinear);
 }
 

@@ -12,13 +12,13 @@
 
 #include <gtest/gtest.h>
 
-#include "scene/scene_io.h"
+#include "support/core_support.h"
 
 namespace whitted {
 namespace {
 
 Scene sceneWithBalls(int count) {
-    Scene s = loadScene(WHITTED_SCENES_DIR "/seed.json");
+    Scene s = test::seedScene();
     for (int i = 0; i < count; ++i)
         s.spheres.push_back({"ball " + std::to_string(i), {i * 0.5, 0.2, 3.0}, 0.2, "blue"});
     return s;

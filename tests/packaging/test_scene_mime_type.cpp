@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/qt_test_main.h"
 #include "support/test_support.h"
 
 namespace {
@@ -68,7 +69,7 @@ TEST_F(SceneMimeTypeTest, EveryExampleScene_ByContent_IsAWhittedScene) {
 TEST_F(SceneMimeTypeTest, WhittedJsonEnding_IsAWhittedScene) {
     whitted::test::TempDir dir;
     const fs::path scene = dir.path() / "my scene.whitted.json";
-    fs::copy_file(fs::path(WHITTED_SCENES_DIR) / "seed.json", scene);
+    fs::copy_file(whitted::test::kSeedScenePath, scene);
     EXPECT_EQ(typeOf(scene).toStdString(), kSceneType.toStdString());
 }
 
@@ -97,7 +98,5 @@ TEST_F(SceneMimeTypeTest, DesktopFile_OpensTheSceneType) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    QCoreApplication app(argc, argv);
-    ::testing::InitGoogleTest(&argc, argv);
-    return RUN_ALL_TESTS();
+    return whitted::test::runQtTests<QCoreApplication>(argc, argv);
 }

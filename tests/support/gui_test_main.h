@@ -7,24 +7,22 @@
 #include <QSettings>
 #include <QStandardPaths>
 
-#include <gtest/gtest.h>
+#include "support/qt_test_main.h"
 
 namespace whitted::test {
 
 // Runs every test of the executable; `clearSettings` starts from no saved
 // window state or recent files.
 inline int runGuiTests(int argc, char** argv, const char* name, bool clearSettings = true) {
-    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
     QStandardPaths::setTestModeEnabled(true);
-    QApplication app(argc, argv);
-    // A test that closes its last window (Ctrl+Q) must not end the application
-    // for the tests after it: a quitting application's dialogs never answered.
-    QApplication::setQuitOnLastWindowClosed(false);
-    QApplication::setOrganizationName("WhittedTests");
-    QApplication::setApplicationName(QString::fromLatin1(name));
-    if (clearSettings) QSettings().clear();
-    ::testing::InitGoogleTest(&argc, argv);
-    return RUN_ALL_TESTS();
+    return runQtTests<QApplication>(argc, argv, [&] {
+        // A test that closes its last window (Ctrl+Q) must not end the application
+        // for the tests after it: a quitting application's dialogs never answered.
+        QApplication::setQuitOnLastWindowClosed(false);
+        QApplication::setOrganizationName("WhittedTests");
+        QApplication::setApplicationName(QString::fromLatin1(name));
+        if (clearSettings) QSettings().clear();
+    });
 }
 
 }  // namespace whitted::test

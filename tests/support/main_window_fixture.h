@@ -1,7 +1,9 @@
 // The editor's main window under test: a window on a 160x120 copy of the seed
 // scene, the frames it shows, and the helpers that compare what the user sees
 // (pixels, where a scene point lands) with the core's own answers. Shared by the
-// GUI test files that drive the whole window.
+// GUI test files that drive the whole window: EditorWindowTest holds what all
+// their fixtures have in common, MainWindowTest is the window on the seed with
+// its first render shown.
 #pragma once
 
 #include <QApplication>
@@ -25,6 +27,7 @@
 #include "document/scene_document.h"
 #include "editor/main_window.h"
 #include "scene/scene_io.h"
+#include "support/core_support.h"
 #include "support/test_support.h"
 #include "tracer/renderer.h"
 #include "viewport/image_convert.h"
@@ -38,7 +41,6 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr int kWidth = 160, kHeight = 120;
 constexpr int kRenderTimeoutMs =
     20000;  // a 160x120 render takes milliseconds; CI machines are shared
-inline const std::string kSeedScene = WHITTED_SCENES_DIR "/seed.json";
 enum SeedSphere { kBlueBall = 0, kPurpleBall = 1, kWhiteBall = 2, kFloor = 3 };
 
 // Where scene point `p` appears in the image, in continuous pixel coordinates of
@@ -111,7 +113,9 @@ class FrameLog {
                                        [this](const RenderFrame& f) {
                                            generations.push_back(f.generation);
                                            lastCovers = f.image.size() * f.block;
-                                           if (f.renderComplete) ++completed;
+                                           if (!f.renderComplete) return;
+                                           ++completed;
+                                           lastComplete = f;
                                        });
     }
     ~FrameLog() { QObject::disconnect(connection_); }
@@ -119,6 +123,7 @@ class FrameLog {
     FrameLog& operator=(const FrameLog&) = delete;
 
     int completed = 0;                 // frames shown with renderComplete
+    RenderFrame lastComplete;          // the last of them
     std::vector<quint64> generations;  // of every frame shown, in order
     QSize
         lastCovers;  // render pixels the last frame covers (a preview: its pixels times its block)
@@ -127,45 +132,51 @@ class FrameLog {
     QMetaObject::Connection connection_;
 };
 
-// A window on a 160x120 copy of the seed scene, saved (clean) in a temporary directory.
-class MainWindowTest : public ::testing::Test {
+// What the fixtures of the whole window share: a temporary directory for the
+// scene file, the window, its document, the frames it shows and the waits for
+// them. A subclass shows the window (showWindow) and opens its scene in SetUp.
+class EditorWindowTest : public ::testing::Test {
   protected:
-    void SetUp() override {
-        Scene seed = loadScene(kSeedScene);
-        seed.render.width = kWidth;
-        seed.render.height = kHeight;
-        scenePath = QString::fromStdString((dir / "seed.json").string());
-        saveScene(seed, scenePath.toStdString());
-
-        window = std::make_unique<MainWindow>();
-        window->resize(1200, 800);
-        window->show();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
-        log = std::make_unique<FrameLog>(*window);
-        doc = window->document();
-        view = window->renderView();
-        const int before = log->completed;
-        ASSERT_TRUE(window->openFile(scenePath)) << window->lastError().toStdString();
-        ASSERT_TRUE(waitForRender(before));
-        ASSERT_EQ(view->frame().size(), QSize(kWidth, kHeight));
-    }
-
     void TearDown() override {
-        // Frames reach the view newest generation last: a stale frame never follows a newer one.
-        if (log) {
-            EXPECT_TRUE(std::is_sorted(log->generations.begin(), log->generations.end()))
-                << "a frame of an older generation was shown after a newer one";
-        }
         log.reset();
         window.reset();
     }
 
+    // The seed at width x height saved as seed.json in `dir`; sets scenePath.
+    void writeSeedFile(int width = kWidth, int height = kHeight) {
+        scenePath = QString::fromStdString(test::saveSceneIn(dir, test::seedScene(width, height)));
+    }
+
+    // A new MainWindow of that size, shown and exposed, its frames logged from now on.
+    ::testing::AssertionResult showWindow(QSize size) {
+        window = std::make_unique<MainWindow>();
+        window->resize(size);
+        window->show();
+        if (!QTest::qWaitForWindowExposed(window.get()))
+            return ::testing::AssertionFailure() << "the window was never exposed";
+        log = std::make_unique<FrameLog>(*window);
+        doc = window->document();
+        return ::testing::AssertionSuccess();
+    }
+
+    ::testing::AssertionResult openFile(const QString& path) {
+        if (window->openFile(path)) return ::testing::AssertionSuccess();
+        return ::testing::AssertionFailure() << window->lastError().toStdString();
+    }
+
+    // Opens the file and waits for the complete frame of its render.
+    ::testing::AssertionResult openAndWait(const QString& path) {
+        const int before = log->completed;
+        if (auto opened = openFile(path); !opened) return opened;
+        return waitForRender(before);
+    }
+
     // Waits until a complete frame is shown after `completedBefore` were.
     ::testing::AssertionResult waitForRender(int completedBefore) {
-        if (QTest::qWaitFor([&] { return log->completed > completedBefore; }, kRenderTimeoutMs))
+        if (QTest::qWaitFor([&] { return log->completed > completedBefore; }, renderTimeoutMs))
             return ::testing::AssertionSuccess();
         return ::testing::AssertionFailure()
-               << "no complete frame within " << kRenderTimeoutMs << " ms";
+               << "no complete frame within " << renderTimeoutMs << " ms";
     }
 
     // One document edit, then the complete frame of its render.
@@ -175,6 +186,43 @@ class MainWindowTest : public ::testing::Test {
         if (!doc->edit(QStringLiteral("test edit"), change, &error))
             return ::testing::AssertionFailure() << "edit refused: " << error.toStdString();
         return waitForRender(before);
+    }
+
+    // The window's child of that object name; a failure when there is none.
+    template <class W>
+    W* child(const char* name) const {
+        W* w = window->findChild<W*>(QString::fromLatin1(name));
+        EXPECT_NE(w, nullptr) << name;
+        return w;
+    }
+
+    int renderTimeoutMs = kRenderTimeoutMs;
+    test::TempDir dir;
+    QString scenePath;
+    std::unique_ptr<MainWindow> window;
+    std::unique_ptr<FrameLog> log;
+    SceneDocument* doc = nullptr;
+};
+
+// A window on a 160x120 copy of the seed scene, saved (clean) in a temporary
+// directory, its first render shown.
+class MainWindowTest : public EditorWindowTest {
+  protected:
+    void SetUp() override {
+        writeSeedFile();
+        ASSERT_TRUE(showWindow({1200, 800}));
+        view = window->renderView();
+        ASSERT_TRUE(openAndWait(scenePath));
+        ASSERT_EQ(view->frame().size(), QSize(kWidth, kHeight));
+    }
+
+    void TearDown() override {
+        // Frames reach the view newest generation last: a stale frame never follows a newer one.
+        if (log) {
+            EXPECT_TRUE(std::is_sorted(log->generations.begin(), log->generations.end()))
+                << "a frame of an older generation was shown after a newer one";
+        }
+        EditorWindowTest::TearDown();
     }
 
     // Undo or redo, then the complete frame.
@@ -193,11 +241,6 @@ class MainWindowTest : public ::testing::Test {
 
     QString shownTitle() const { return window->windowHandle()->title(); }
 
-    test::TempDir dir;
-    QString scenePath;
-    std::unique_ptr<MainWindow> window;
-    std::unique_ptr<FrameLog> log;
-    SceneDocument* doc = nullptr;
     RenderView* view = nullptr;
 };
 

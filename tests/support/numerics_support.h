@@ -1,5 +1,5 @@
 // Shared by the numerics property tests (issue 4, tests/core/test_numerics_*.cpp):
-// seeds that print and replay, scene builders, a quad-precision reference for
+// seeds that print and replay, random scenes, a quad-precision reference for
 // ray against sphere, and the tracer's shadow query for one ray.
 //
 // Only the tracer's public interface is used (Scene, prepareScene, closestHit,
@@ -20,8 +20,7 @@
 
 #include <gtest/gtest.h>
 
-#include "scene/scene.h"
-#include "scene/scene_io.h"
+#include "support/core_support.h"
 #include "tracer/ray_packet.h"
 #include "tracer/renderer.h"
 #include "tracer/tracer.h"
@@ -81,51 +80,22 @@ inline Vec3 randomPerpendicular(Rng& rng, const Vec3& n) {
 
 // ---- scenes -------------------------------------------------------------------
 
-inline Material makeMaterial(const std::string& name, Vec3 diffuse, double specular = 0,
-                             double reflectivity = 0, double transparency = 0, double ior = 1.5) {
-    Material m;
-    m.name = name;
-    m.diffuse = diffuse;
-    m.specular = specular;
-    m.reflectivity = reflectivity;
-    m.transparency = transparency;
-    m.ior = ior;
-    return m;
-}
-
-inline Sphere makeSphere(const std::string& name, Vec3 centre, double radius,
-                         const std::string& material) {
-    Sphere s;
-    s.name = name;
-    s.center = centre;
-    s.radius = radius;
-    s.material = material;
-    return s;
-}
-
-inline Light makeLight(const std::string& name, Vec3 position, Vec3 colour = {1, 1, 1},
-                       double intensity = 1) {
-    Light l;
-    l.name = name;
-    l.position = position;
-    l.color = colour;
-    l.intensity = intensity;
-    return l;
-}
-
-// scenes/seed.json at the given size and precision.
-inline Scene seedScene(int width, int height, Precision precision) {
-    Scene s = loadScene(std::string(WHITTED_SCENES_DIR) + "/seed.json");
-    s.render.width = width;
-    s.render.height = height;
-    s.render.precision = precision;
-    return s;
-}
-
-inline Image renderImage(const Scene& scene) {
-    RenderOptions o;
-    o.progressive = false;
-    return render(scene, o).image;
+// A 1x1 image of one opaque sphere seen from `cam`, looking at its centre, the
+// camera's up random but never within ~6 degrees of the view direction.
+inline Scene oneSphereScene(Rng& rng, const Vec3& cam, const Vec3& centre, double radius,
+                            Precision precision) {
+    const Vec3 w = glm::normalize(centre - cam);
+    Scene scene;
+    scene.camera.position = cam;
+    scene.camera.lookAt = centre;
+    Vec3 up = randomUnit(rng);
+    while (glm::length(glm::cross(up, w)) < 0.1) up = randomUnit(rng);
+    scene.camera.up = up;
+    scene.render.width = scene.render.height = 1;
+    scene.render.precision = precision;
+    scene.materials = {makeMaterial("m", {0.8, 0.8, 0.8})};  // opaque
+    scene.spheres = {makeSphere("s", centre, radius, "m")};
+    return scene;
 }
 
 template <typename T>
@@ -136,6 +106,10 @@ constexpr Precision precisionOf() {
 template <typename T>
 constexpr const char* precisionLabel() {
     return sizeof(T) == sizeof(float) ? "float" : "double";
+}
+
+inline std::string label(Precision p) {
+    return std::string(precisionName(p));
 }
 
 // World position of a prepared-frame point.

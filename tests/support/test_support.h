@@ -1,4 +1,6 @@
-// Small helpers shared by the tests: a per-test temporary directory and file I/O.
+// Small helpers shared by the tests: a per-test temporary directory, file I/O,
+// the seed scene's path, and the programs under test run through the shell.
+// Free of the core's types, so that any test executable can include it.
 #pragma once
 
 #include <algorithm>
@@ -17,6 +19,15 @@
 #include <gtest/gtest.h>
 
 namespace whitted::test {
+
+// Names of the entries in `dir`, sorted.
+inline std::vector<std::string> directoryEntries(const std::filesystem::path& dir) {
+    std::vector<std::string> names;
+    for (const auto& e : std::filesystem::directory_iterator(dir))
+        names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
 
 // A fresh directory under the system temp dir, named after the running test,
 // removed with everything in it when the object goes away.
@@ -45,13 +56,7 @@ class TempDir {
     std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
 
     // Names of the entries in the directory, sorted.
-    std::vector<std::string> entries() const {
-        std::vector<std::string> names;
-        for (const auto& e : std::filesystem::directory_iterator(path_))
-            names.push_back(e.path().filename().string());
-        std::sort(names.begin(), names.end());
-        return names;
-    }
+    std::vector<std::string> entries() const { return directoryEntries(path_); }
 
   private:
     std::filesystem::path path_;
@@ -69,6 +74,9 @@ inline void writeFile(const std::filesystem::path& file, const std::string& text
     out << text;
 }
 
+// The repository's seed scene (scenes/seed.json), the one most tests start from.
+inline const std::string kSeedScenePath = WHITTED_SCENES_DIR "/seed.json";
+
 // The string as one shell word, quoted so that the shell takes it literally.
 inline std::string shellQuote(const std::string& s) {
     std::string out = "'";
@@ -76,16 +84,34 @@ inline std::string shellQuote(const std::string& s) {
     return out + "'";
 }
 
-struct ShellRun {
+// The program and its arguments as one shell command, every word quoted.
+// Appended piece by piece: GCC 12 warns falsely (-Wrestrict, bug 105329) on
+// "literal" + std::string chains at -O3.
+inline std::string commandLine(const std::string& program, const std::vector<std::string>& args) {
+    std::string command = shellQuote(program);
+    for (const std::string& a : args) command.append(" ").append(shellQuote(a));
+    return command;
+}
+
+// `args` followed by `more`: a command's arguments put together.
+inline std::vector<std::string> appended(std::vector<std::string> args,
+                                         const std::vector<std::string>& more) {
+    args.insert(args.end(), more.begin(), more.end());
+    return args;
+}
+
+struct ProgramRun {
     int exitCode = -1;  // -1: it could not start, or a signal ended it
-    std::string out;    // its standard output (append " 2>&1" for stderr too)
+    std::string out;    // its standard output (with its standard error, when merged)
+    std::string err;    // its standard error, when captured apart
 };
 
-// `command` run by the shell, its standard output captured.
-inline ShellRun runShell(const std::string& command) {
-    ShellRun r;
+// `command` run by the shell, its standard output captured (append " 2>&1"
+// for its standard error too).
+inline ProgramRun runShell(const std::string& command) {
+    ProgramRun r;
     FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return {-1, "cannot start: " + command};
+    if (!pipe) return {-1, "cannot start: " + command, {}};
     char buffer[4096];
     for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;)
         r.out.append(buffer, n);
@@ -93,6 +119,41 @@ inline ShellRun runShell(const std::string& command) {
     r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return r;
 }
+
+enum class Stderr { Apart, Merged };
+
+// The program run with the arguments (each one word, whatever it holds), its
+// standard output captured, and its standard error either apart (in a file of
+// the system temp dir, never one a test looks at) or merged into `out`.
+// `environment` ("NAME=value ...", already quoted) goes before the command.
+inline ProgramRun runProgram(const std::string& program, const std::vector<std::string>& args,
+                             Stderr stderrGoes = Stderr::Apart,
+                             const std::string& environment = "") {
+    std::string command = environment;
+    if (!command.empty()) command.append(" ");
+    command.append(commandLine(program, args));
+    if (stderrGoes == Stderr::Merged) return runShell(command.append(" 2>&1"));
+    static std::atomic<unsigned> counter{0};
+    const std::filesystem::path errFile =
+        std::filesystem::temp_directory_path() /
+        ("whitted-stderr-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+    ProgramRun r = runShell(command.append(" 2>").append(shellQuote(errFile.string())));
+    r.err = readFile(errFile);
+    std::error_code ignored;
+    std::filesystem::remove(errFile, ignored);
+    return r;
+}
+
+// A program under test and where its standard error goes: called with the
+// arguments (and an optional environment), it runs as runProgram does.
+struct Program {
+    std::string path;
+    Stderr stderrGoes = Stderr::Apart;
+    ProgramRun operator()(const std::vector<std::string>& args,
+                          const std::string& environment = "") const {
+        return runProgram(path, args, stderrGoes, environment);
+    }
+};
 
 inline std::string joined(const std::vector<std::string>& names) {
     std::string out;

@@ -18,6 +18,7 @@
 #include "document/autosave.h"
 #include "editor/main_window.h"
 #include "scene/scene_io.h"
+#include "support/core_support.h"
 #include "support/gui_test_main.h"
 #include "support/test_support.h"
 
@@ -31,21 +32,22 @@ class AutosaveTest : public ::testing::Test {
     void SetUp() override {
         recoveryDir = QString::fromStdString((dir / "recovery").string());
         qputenv("WHITTED_RECOVERY_DIR", recoveryDir.toLocal8Bit());
-        Scene seed = loadScene(WHITTED_SCENES_DIR "/seed.json");
-        seed.render.width = 64;
-        seed.render.height = 48;
-        scenePath = QString::fromStdString((dir / "seed.json").string());
-        saveScene(seed, scenePath.toStdString());
-        original = seed;
+        original = test::seedScene(64, 48);
+        scenePath = QString::fromStdString(test::saveSceneIn(dir, original));
     }
     void TearDown() override { qunsetenv("WHITTED_RECOVERY_DIR"); }
 
     std::vector<std::string> recoveryFiles() const {
-        std::vector<std::string> names;
-        for (const auto& e : fs::directory_iterator(recoveryDir.toStdString()))
-            names.push_back(e.path().filename().string());
-        std::sort(names.begin(), names.end());
-        return names;
+        return test::directoryEntries(recoveryDir.toStdString());
+    }
+
+    // One edit (the first sphere's radius to 0.25), then its recovery copy written.
+    static ::testing::AssertionResult editAndWaitForCopy(MainWindow& window) {
+        window.autosave()->setDelay(50);
+        QSignalSpy written(window.autosave(), &Autosave::written);
+        window.document()->edit("edit", [](Scene& s) { s.spheres[0].radius = 0.25; });
+        if (written.wait(5000)) return ::testing::AssertionSuccess();
+        return ::testing::AssertionFailure() << "no recovery copy within 5 s";
     }
 
     test::TempDir dir;
@@ -79,10 +81,7 @@ TEST_F(AutosaveTest, BurstOfEdits_OneCopyOfTheLastScene_GoneWhenSaved) {
 TEST_F(AutosaveTest, UndoBackToTheFile_RemovesTheCopy) {
     MainWindow window;
     ASSERT_TRUE(window.openFile(scenePath));
-    window.autosave()->setDelay(50);
-    QSignalSpy written(window.autosave(), &Autosave::written);
-    window.document()->edit("edit", [](Scene& s) { s.spheres[0].radius = 0.25; });
-    ASSERT_TRUE(written.wait(5000));
+    ASSERT_TRUE(editAndWaitForCopy(window));
     const std::string copy = (window.autosave()->slotPath() + ".json").toStdString();
     EXPECT_TRUE(fs::exists(copy));
     window.document()->undoStack()->undo();
@@ -93,10 +92,7 @@ TEST_F(AutosaveTest, NormalExit_LeavesNothingBehind) {
     {
         MainWindow window;
         ASSERT_TRUE(window.openFile(scenePath));
-        window.autosave()->setDelay(50);
-        QSignalSpy written(window.autosave(), &Autosave::written);
-        window.document()->edit("edit", [](Scene& s) { s.spheres[0].radius = 0.25; });
-        ASSERT_TRUE(written.wait(5000));
+        ASSERT_TRUE(editAndWaitForCopy(window));
     }
     EXPECT_TRUE(recoveryFiles().empty()) << test::joined(recoveryFiles());
 }

@@ -35,6 +35,7 @@
 #include "panels/scene_panel.h"
 #include "scene/scene_io.h"
 #include "support/gui_test_main.h"
+#include "support/main_window_fixture.h"
 #include "support/test_support.h"
 #include "tracer/kernel_dispatch.h"
 #include "tradeoff_dock/tradeoff_view.h"
@@ -44,9 +45,6 @@ namespace whitted::ui {
 namespace {
 
 namespace fs = std::filesystem;
-
-constexpr int kWidth = 160, kHeight = 120;
-const std::string kSeedScene = WHITTED_SCENES_DIR "/seed.json";
 
 // Closes every modal dialog as soon as it opens (Open, Save As, Export,
 // questions), so that pressing their shortcuts cannot block the test.
@@ -109,32 +107,19 @@ void whenModalOpens(std::function<void(D*)> act) {
     poll->start(20);
 }
 
-class EditorCommandsTest : public ::testing::Test {
+class EditorCommandsTest : public EditorWindowTest {
   protected:
     void SetUp() override {
-        Scene seed = loadScene(kSeedScene);
-        seed.render.width = kWidth;
-        seed.render.height = kHeight;
-        scenePath = QString::fromStdString((dir.path() / "seed.json").string());
-        saveScene(seed, scenePath.toStdString());
-        window = std::make_unique<MainWindow>();
-        window->resize(1200, 800);
-        window->show();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+        writeSeedFile();
+        ASSERT_TRUE(showWindow({1200, 800}));
         QApplication::setActiveWindow(window.get());
         ASSERT_TRUE(QTest::qWaitForWindowActive(window.get()));
-        ASSERT_TRUE(window->openFile(scenePath)) << window->lastError().toStdString();
-        doc = window->document();
+        ASSERT_TRUE(openFile(scenePath));
         view = window->renderView();
     }
-    void TearDown() override { window.reset(); }
 
     QAction* action(const QString& name) { return window->findChild<QAction*>(name); }
 
-    test::TempDir dir;
-    QString scenePath;
-    std::unique_ptr<MainWindow> window;
-    SceneDocument* doc = nullptr;
     RenderView* view = nullptr;
 };
 

@@ -244,7 +244,7 @@ TEST_F(MainWindowTest, OpenBrokenFile_KeepsSceneTitleAndNamesTheProblem) {
     const QString title = shownTitle();
     const QImage image = view->frame();
 
-    std::string text = test::readFile(kSeedScene);
+    std::string text = test::readFile(test::kSeedScenePath);
     const std::string radius = "\"radius\": 0.6";
     const auto at = text.find(radius);  // the first sphere's
     ASSERT_NE(at, std::string::npos);

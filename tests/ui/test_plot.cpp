@@ -10,6 +10,7 @@
 
 #include "plot/plot_axis.h"
 #include "plot/scatter_plot.h"
+#include "support/qt_test_main.h"
 
 namespace whitted::ui {
 namespace {
@@ -204,8 +205,5 @@ TEST(ScatterPlot, UnshowableValuesAreLeftOut) {
 }  // namespace whitted::ui
 
 int main(int argc, char** argv) {
-    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
-    QGuiApplication app(argc, argv);
-    ::testing::InitGoogleTest(&argc, argv);
-    return RUN_ALL_TESTS();
+    return whitted::test::runQtTests<QGuiApplication>(argc, argv);
 }

@@ -8,9 +8,7 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QRegularExpression>
-#include <QSettings>
 #include <QSignalSpy>
-#include <QStandardPaths>
 #include <QTest>
 #include <QUndoStack>
 
@@ -25,18 +23,18 @@
 #include "precision_dock/precision_view.h"
 #include "scene/scene_io.h"
 #include "scene/scene_transform.h"
+#include "support/gui_test_main.h"
+#include "support/main_window_fixture.h"
 #include "support/test_support.h"
 #include "viewport/image_convert.h"
 
 namespace whitted::ui {
 namespace {
 
-constexpr int kWidth = 160, kHeight = 120;
 // A comparison at 160x120 takes milliseconds, but it runs at nice 10 after the
 // main render: under a sanitizer with two other tests busy on two cores it was
 // seen to take over 20 s.
 constexpr int kTimeoutMs = 50000;
-const std::string kSeedScene = WHITTED_SCENES_DIR "/seed.json";
 
 // The pixel count in a label such as "0.016 % (3 px)"; -1 when there is none.
 long long pixelsIn(const QLabel* label) {
@@ -45,20 +43,12 @@ long long pixelsIn(const QLabel* label) {
 }
 
 // A window on a 160x120 copy of the seed scene, opened from a temporary file.
-class PrecisionViewTest : public ::testing::Test {
+class PrecisionViewTest : public EditorWindowTest {
   protected:
     void SetUp() override {
-        Scene seed = loadScene(kSeedScene);
-        seed.render.width = kWidth;
-        seed.render.height = kHeight;
-        const QString path = QString::fromStdString((dir / "seed.json").string());
-        saveScene(seed, path.toStdString());
-        window = std::make_unique<MainWindow>();
-        window->resize(1400, 900);
-        window->show();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
-        ASSERT_TRUE(window->openFile(path)) << window->lastError().toStdString();
-        doc = window->document();
+        writeSeedFile();
+        ASSERT_TRUE(showWindow({1400, 900}));
+        ASSERT_TRUE(openFile(scenePath));
         view = window->precisionView();
         dock = window->findChild<QDockWidget*>(QStringLiteral("precisionDock"));
         toggle = window->findChild<QAction*>(QStringLiteral("togglePrecisionView"));
@@ -67,11 +57,7 @@ class PrecisionViewTest : public ::testing::Test {
         ASSERT_NE(toggle, nullptr);
     }
 
-    QLabel* label(const char* name) const {
-        auto* l = window->findChild<QLabel*>(QString::fromLatin1(name));
-        EXPECT_NE(l, nullptr) << name;
-        return l;
-    }
+    QLabel* label(const char* name) const { return child<QLabel>(name); }
 
     // Shows the dock and waits for its first comparison.
     ::testing::AssertionResult showDock() {
@@ -109,9 +95,6 @@ class PrecisionViewTest : public ::testing::Test {
             << error.toStdString();
     }
 
-    test::TempDir dir;
-    std::unique_ptr<MainWindow> window;
-    SceneDocument* doc = nullptr;
     PrecisionView* view = nullptr;
     QDockWidget* dock = nullptr;
     QAction* toggle = nullptr;
@@ -260,7 +243,7 @@ TEST_F(PrecisionViewTest, FloatRangeWarning_SceneScaledBy1e30_ClickSwitchesToDou
 // reason, clicking it is one undoable switch to double, undo brings it back.
 TEST(FloatRangeWarningTest, StandInCheck_ShowsReason_ClickSwitchesToDouble_UndoRestores) {
     SceneDocument doc;
-    doc.reset(loadScene(kSeedScene), QString());
+    doc.reset(test::seedScene(), QString());
     QWidget bar;
     const FloatRangeCheck tooFar = [](const Scene& s) -> std::optional<std::string> {
         if (s.spheres.empty() || s.spheres[0].center.z < 100) return std::nullopt;
@@ -296,12 +279,5 @@ TEST(FloatRangeWarningTest, StandInCheck_ShowsReason_ClickSwitchesToDouble_UndoR
 }  // namespace whitted::ui
 
 int main(int argc, char** argv) {
-    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
-    QStandardPaths::setTestModeEnabled(true);
-    QApplication app(argc, argv);
-    QApplication::setOrganizationName("WhittedTests");
-    QApplication::setApplicationName("test_precision_view");
-    QSettings().clear();
-    ::testing::InitGoogleTest(&argc, argv);
-    return RUN_ALL_TESTS();
+    return whitted::test::runGuiTests(argc, argv, "test_precision_view");
 }

@@ -30,6 +30,7 @@
 #include "scene/material_presets.h"
 #include "scene/scene_io.h"
 #include "support/gui_test_main.h"
+#include "support/main_window_fixture.h"
 #include "support/test_support.h"
 #include "viewport/render_view.h"
 
@@ -41,55 +42,22 @@ inline void PrintTo(const QString& text, std::ostream* os) {
 namespace whitted::ui {
 namespace {
 
-constexpr int kWidth = 160, kHeight = 120;
-constexpr int kTimeoutMs = 20000;  // a render takes milliseconds; CI machines are shared
-const std::string kSeedScene = WHITTED_SCENES_DIR "/seed.json";
-enum SeedSphere { kBlueBall = 0, kPurpleBall = 1, kWhiteBall = 2, kFloor = 3 };
+using test::preset;
 
-const MaterialPreset& preset(std::string_view name) {
-    for (const MaterialPreset& p : materialPresets())
-        if (p.name == name) return p;
-    return materialPresets().front();
-}
-
-class PropertyPanelsTest : public ::testing::Test {
+class PropertyPanelsTest : public EditorWindowTest {
   protected:
     void SetUp() override {
-        Scene seed = loadScene(kSeedScene);
-        seed.render.width = kWidth;
-        seed.render.height = kHeight;
-        const QString path = QString::fromStdString((dir.path() / "seed.json").string());
-        saveScene(seed, path.toStdString());
-        window = std::make_unique<MainWindow>();
-        window->resize(1200, 800);
-        window->show();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
-        QObject::connect(window.get(), &MainWindow::frameShown, window.get(),
-                         [this](const RenderFrame& f) { completed += f.renderComplete; });
-        const int before = completed;
-        ASSERT_TRUE(window->openFile(path)) << window->lastError().toStdString();
-        doc = window->document();
-        ASSERT_TRUE(waitForRender(before));
+        writeSeedFile();
+        ASSERT_TRUE(showWindow({1200, 800}));
+        ASSERT_TRUE(openAndWait(scenePath));
     }
-    void TearDown() override { window.reset(); }
 
-    ::testing::AssertionResult waitForRender(int completedBefore) {
-        if (QTest::qWaitFor([&] { return completed > completedBefore; }, kTimeoutMs))
-            return ::testing::AssertionSuccess();
-        return ::testing::AssertionFailure() << "no complete frame";
-    }
     // Runs `act` (an edit through the widgets) and returns the frame it renders.
     QImage frameAfter(const std::function<void()>& act) {
-        const int before = completed;
+        const int before = log->completed;
         act();
         EXPECT_TRUE(waitForRender(before));
         return window->renderView()->frame();
-    }
-    template <class W>
-    W* child(const char* name) {
-        W* w = window->findChild<W*>(QString::fromLatin1(name));
-        EXPECT_NE(w, nullptr) << name;
-        return w;
     }
     // The refused-edit message box, once it shows.
     QMessageBox* refusal() {
@@ -117,11 +85,6 @@ class PropertyPanelsTest : public ::testing::Test {
         return {changed, count};
     }
     QString lastUndoText() { return doc->undoStack()->text(doc->undoStack()->count() - 1); }
-
-    test::TempDir dir;
-    std::unique_ptr<MainWindow> window;
-    SceneDocument* doc = nullptr;
-    int completed = 0;
 };
 
 // Item 11: a typed radius of 0 is refused with the field's label and the
@@ -194,7 +157,7 @@ TEST_F(PropertyPanelsTest, SceneFilter_ShowsMatchingNames_DeleteRemovesTheShownO
 
 // Item 11: every field an edit can break reads as a sentence about a named item.
 TEST(EditMessages, EveryValidationProblem_NamesTheItemAndTheFieldLabel) {
-    const Scene seed = loadScene(kSeedScene);
+    const Scene seed = test::seedScene();
     const std::pair<std::function<void(Scene&)>, const char*> cases[] = {
         {[](Scene& s) { s.spheres[0].radius = 0; },
          "Radius of sphere “blue ball” must be greater than 0"},
@@ -237,7 +200,7 @@ TEST(EditMessages, EveryValidationProblem_NamesTheItemAndTheFieldLabel) {
 
 // Item 7: Make unique's names count on from the original's.
 TEST(MaterialSharing, CopyNames_CountOn_SharersCounted) {
-    Scene s = loadScene(kSeedScene);
+    Scene s = test::seedScene();
     EXPECT_EQ(numberedMaterialName(s, "blue"), "blue 2");
     s.spheres[kPurpleBall].material = "blue";
     EXPECT_EQ(spheresUsing(s, "blue"), 2);

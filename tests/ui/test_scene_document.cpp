@@ -12,13 +12,15 @@
 
 #include "document/scene_document.h"
 #include "scene/scene_io.h"
+#include "support/core_support.h"
+#include "support/qt_test_main.h"
 
 namespace whitted::ui {
 namespace {
 
 TEST(SceneDocument, RandomEdits_UndoAndRedoGiveBackEveryScene) {
     SceneDocument doc;
-    doc.reset(loadScene(WHITTED_SCENES_DIR "/seed.json"), QString());
+    doc.reset(test::seedScene(), QString());
     std::mt19937 rng(7);
     std::cout << "[ SEED     ] 7\n";
     auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); };
@@ -114,7 +116,7 @@ struct Twin {
 };
 
 TEST(SceneDocument, EditItem_RandomChanges_SameAsWholeSceneEditInEverythingSeen) {
-    Scene seed = loadScene(WHITTED_SCENES_DIR "/seed.json");
+    Scene seed = test::seedScene();
     Twin twin(seed);
     std::mt19937 rng(11);
     std::cout << "[ SEED     ] 11\n";
@@ -195,7 +197,7 @@ TEST(SceneDocument, EditItem_RandomChanges_SameAsWholeSceneEditInEverythingSeen)
 
 TEST(SceneDocument, EditItem_RenameToTakenName_RefusedWithTheUsersMessage) {
     SceneDocument doc;
-    doc.reset(loadScene(WHITTED_SCENES_DIR "/seed.json"), QString());
+    doc.reset(test::seedScene(), QString());
     const Scene before = doc.scene();
     const std::string taken = before.spheres[0].name;
     QString error;
@@ -210,7 +212,7 @@ TEST(SceneDocument, EditItem_RenameToTakenName_RefusedWithTheUsersMessage) {
 
 TEST(SceneDocument, EditItem_NoChange_RecordsNoStepAndSaysNothing) {
     SceneDocument doc;
-    doc.reset(loadScene(WHITTED_SCENES_DIR "/seed.json"), QString());
+    doc.reset(test::seedScene(), QString());
     QSignalSpy changed(&doc, &SceneDocument::sceneChanged);
     const double radius = doc.scene().spheres[0].radius;
     EXPECT_TRUE(doc.editItem<Sphere>(0, "radius", [&](Sphere& s) { s.radius = radius; }));
@@ -222,7 +224,7 @@ TEST(SceneDocument, EditItem_NoChange_RecordsNoStepAndSaysNothing) {
 
 TEST(SceneDocument, EditItem_InAGesture_IsOneUndoStepThatUndoesExactly) {
     SceneDocument doc;
-    doc.reset(loadScene(WHITTED_SCENES_DIR "/seed.json"), QString());
+    doc.reset(test::seedScene(), QString());
     const Scene before = doc.scene();
     doc.beginGesture("Change radius of ball");
     for (int i = 1; i <= 20; ++i)
@@ -242,7 +244,5 @@ TEST(SceneDocument, EditItem_InAGesture_IsOneUndoStepThatUndoesExactly) {
 }  // namespace whitted::ui
 
 int main(int argc, char** argv) {
-    QCoreApplication app(argc, argv);
-    ::testing::InitGoogleTest(&argc, argv);
-    return RUN_ALL_TESTS();
+    return whitted::test::runQtTests<QCoreApplication>(argc, argv);
 }

@@ -17,6 +17,7 @@
 
 #include "editor/main_window.h"
 #include "scene/scene_io.h"
+#include "support/core_support.h"
 #include "support/gui_test_main.h"
 #include "support/test_support.h"
 
@@ -35,9 +36,7 @@ constexpr int kSpheres = 200000;
 #endif
 
 Scene largeScene() {
-    Scene s = loadScene(WHITTED_SCENES_DIR "/seed.json");
-    s.render.width = 64;
-    s.render.height = 36;
+    Scene s = test::seedScene(64, 36);
     std::mt19937 rng(12);
     std::uniform_real_distribution<double> x(-50, 50), z(2, 100), r(0.05, 0.3);
     for (int i = 0; i < kSpheres; ++i)
@@ -49,8 +48,7 @@ class SceneLoadingTest : public ::testing::Test {
   protected:
     void SetUp() override {
         scene = largeScene();
-        file = QString::fromStdString((dir / "large.json").string());
-        saveScene(scene, file.toStdString());
+        file = QString::fromStdString(test::saveSceneIn(dir, scene, "large.json"));
         window.show();
         ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
     }

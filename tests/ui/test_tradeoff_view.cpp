@@ -14,10 +14,8 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
-#include <QStandardPaths>
 #include <QStyle>
 #include <QTabWidget>
 #include <QTableWidget>
@@ -35,6 +33,8 @@
 #include "image/image_error.h"
 #include "plot/plot_widget.h"
 #include "scene/scene_io.h"
+#include "support/gui_test_main.h"
+#include "support/main_window_fixture.h"
 #include "support/test_support.h"
 #include "tradeoff_dock/settings_prediction.h"
 #include "tradeoff_dock/tradeoff_view.h"
@@ -42,31 +42,7 @@
 namespace whitted::ui {
 namespace {
 
-constexpr int kWidth = 160, kHeight = 120;
 constexpr int kTimeoutMs = 30000;  // renders take milliseconds; CI machines are shared
-const std::string kSeedScene = WHITTED_SCENES_DIR "/seed.json";
-
-// The last complete frame shown, and how many there were.
-class CompleteFrames {
-  public:
-    explicit CompleteFrames(MainWindow& window) {
-        connection_ = QObject::connect(&window, &MainWindow::frameShown, &window,
-                                       [this](const RenderFrame& f) {
-                                           if (!f.renderComplete) return;
-                                           last = f;
-                                           ++count;
-                                       });
-    }
-    ~CompleteFrames() { QObject::disconnect(connection_); }
-    CompleteFrames(const CompleteFrames&) = delete;
-    CompleteFrames& operator=(const CompleteFrames&) = delete;
-
-    int count = 0;
-    RenderFrame last;
-
-  private:
-    QMetaObject::Connection connection_;
-};
 
 // A grid small enough for a 64 x 48 scene to finish in a fraction of a second.
 TradeoffGrid tinyGrid() {
@@ -81,56 +57,30 @@ TradeoffGrid tinyGrid() {
     return g;
 }
 
+// Enough work that a run cannot finish before a cancel: 126 points at 160 x 120.
+TradeoffGrid slowGrid() {
+    TradeoffGrid g = tinyGrid();
+    g.samples = {1, 2, 4, 8, 16, 32, 64};
+    g.depths = {0, 1, 2, 3, 4, 5, 6, 7, 8};
+    return g;
+}
+
 // A window on a copy of the seed scene at `width` x `height`, its first render finished.
-class TradeoffViewTest : public ::testing::Test {
+class TradeoffViewTest : public EditorWindowTest {
   protected:
+    TradeoffViewTest() { renderTimeoutMs = kTimeoutMs; }
+
     void SetUp() override { open(kWidth, kHeight); }
 
     void open(int width, int height) {
-        Scene seed = loadScene(kSeedScene);
-        seed.render.width = width;
-        seed.render.height = height;
-        const QString path = QString::fromStdString((dir / "seed.json").string());
-        saveScene(seed, path.toStdString());
+        writeSeedFile(width, height);
         if (!window) {
-            window = std::make_unique<MainWindow>();
-            window->resize(1400, 900);
-            window->show();
-            ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
-            frames = std::make_unique<CompleteFrames>(*window);
+            ASSERT_TRUE(showWindow({1400, 900}));
         }
         doc = window->document();
         view = window->tradeoffView();
         ASSERT_NE(view, nullptr);
-        const int before = frames->count;
-        ASSERT_TRUE(window->openFile(path)) << window->lastError().toStdString();
-        ASSERT_TRUE(waitForRender(before));
-    }
-
-    void TearDown() override {
-        frames.reset();
-        window.reset();
-    }
-
-    ::testing::AssertionResult waitForRender(int before) {
-        if (QTest::qWaitFor([&] { return frames->count > before; }, kTimeoutMs))
-            return ::testing::AssertionSuccess();
-        return ::testing::AssertionFailure() << "no complete frame within " << kTimeoutMs << " ms";
-    }
-
-    ::testing::AssertionResult editAndWait(const std::function<void(Scene&)>& change) {
-        const int before = frames->count;
-        QString error;
-        if (!doc->edit(QStringLiteral("test edit"), change, &error))
-            return ::testing::AssertionFailure() << "edit refused: " << error.toStdString();
-        return waitForRender(before);
-    }
-
-    template <class T>
-    T* child(const char* name) const {
-        auto* w = window->findChild<T*>(QString::fromLatin1(name));
-        EXPECT_NE(w, nullptr) << name;
-        return w;
+        ASSERT_TRUE(openAndWait(scenePath));
     }
 
     // What QComboBox does when the user picks item `index`.
@@ -165,7 +115,7 @@ class TradeoffViewTest : public ::testing::Test {
         QMessageBox* box = pinNoisy();
         if (box) click(box, "pinAnywayButton");
         EXPECT_TRUE(view->isPinned());
-        return frames->last;
+        return log->lastComplete;
     }
 
     // Runs Measure on the current scene with `grid`; false on a timeout.
@@ -176,10 +126,6 @@ class TradeoffViewTest : public ::testing::Test {
         return finished.wait(kTimeoutMs);
     }
 
-    test::TempDir dir;
-    std::unique_ptr<MainWindow> window;
-    std::unique_ptr<CompleteFrames> frames;
-    SceneDocument* doc = nullptr;
     TradeoffView* view = nullptr;
 };
 
@@ -250,7 +196,7 @@ TEST_F(TradeoffViewTest, Pin_DisabledWhileTheRenderIsUnfinished) {
     // No event has been processed since the edit: its render cannot be complete.
     EXPECT_FALSE(view->pinAction()->isEnabled());
     EXPECT_TRUE(QTest::qWaitFor([&] { return view->pinAction()->isEnabled(); }, kTimeoutMs));
-    EXPECT_EQ(frames->last.settings.samplesPerPixel, 2);
+    EXPECT_EQ(log->lastComplete.settings.samplesPerPixel, 2);
 }
 
 TEST_F(TradeoffViewTest, Pin_EditChangingSamples_AddsPointWithMeasureErrorOfTheFrames) {
@@ -261,7 +207,7 @@ TEST_F(TradeoffViewTest, Pin_EditChangingSamples_AddsPointWithMeasureErrorOfTheF
 
     QSignalSpy measured(view, &TradeoffView::pointMeasured);
     ASSERT_TRUE(editAndWait([](Scene& s) { s.render.samplesPerPixel = 4; }));
-    const RenderFrame after = frames->last;
+    const RenderFrame after = log->lastComplete;
     ASSERT_TRUE(QTest::qWaitFor([&] { return measured.count() == 1; }, kTimeoutMs));
     ASSERT_EQ(view->pinnedPoints().size(), 1u);
     const PinnedPoint& p = view->pinnedPoints()[0];
@@ -300,7 +246,7 @@ TEST_F(TradeoffViewTest, Pin_SmallerRenderComparedStretched_OtherShapeSkippedWit
         s.render.width = kWidth / 2;
         s.render.height = kHeight / 2;
     }));
-    const RenderFrame half = frames->last;
+    const RenderFrame half = log->lastComplete;
     ASSERT_TRUE(QTest::qWaitFor([&] { return measured.count() == 1; }, kTimeoutMs));
     ASSERT_TRUE(view->pinnedPoints()[0].error.has_value());
     EXPECT_EQ(view->pinnedPoints()[0].error->rmseSrgb8,
@@ -319,7 +265,7 @@ TEST_F(TradeoffViewTest, Pin_SmallerRenderComparedStretched_OtherShapeSkippedWit
 }
 
 TEST_F(TradeoffViewTest, Pin_OneSampleImage_WarnsFirst_PinAnywayPinsIt) {
-    const RenderFrame shown = frames->last;
+    const RenderFrame shown = log->lastComplete;
     QMessageBox* box = pinNoisy();
     ASSERT_NE(box, nullptr);
     EXPECT_EQ(box->text(),
@@ -348,7 +294,7 @@ TEST_F(TradeoffViewTest, Pin_ManySamples_PinsWithoutAsking) {
 // and the noisy image on screen is scored against it at once.
 TEST_F(TradeoffViewTest, Pin_ConvergedReference_PinsARenderAtTheStatedSamples) {
     view->setMeasureGrid(tinyGrid(), 16);  // a 16-sample reference renders in a blink
-    const RenderFrame noisy = frames->last;
+    const RenderFrame noisy = log->lastComplete;
     QMessageBox* box = pinNoisy();
     ASSERT_NE(box, nullptr);
     EXPECT_TRUE(box->text().contains(QStringLiteral("at 16 samples per pixel")));
@@ -406,7 +352,7 @@ TEST_F(TradeoffViewTest, Pin_ConvergedReference_WindowClosedMeanwhile_StopsClean
     ASSERT_NE(box, nullptr);
     click(box, "renderConvergedButton");
     ASSERT_TRUE(view->isRenderingReference());
-    frames.reset();
+    log.reset();
     window.reset();
     SUCCEED();
 }
@@ -434,11 +380,11 @@ TEST_F(TradeoffViewTest, Pin_SphereMoved_MarksThePinStale_NoPointsUntilUndone) {
 
     // Undo the move (the samples stay at 2): the pinned scene again, scored again.
     QSignalSpy measured(view, &TradeoffView::pointMeasured);
-    const int before = frames->count;
+    const int before = log->completed;
     doc->undoStack()->undo();
     doc->undoStack()->undo();
     ASSERT_TRUE(editAndWait([](Scene& s) { s.render.samplesPerPixel = 2; }));
-    ASSERT_GT(frames->count, before);
+    ASSERT_GT(log->completed, before);
     EXPECT_FALSE(view->isPinStale());
     EXPECT_FALSE(stale->isVisible());
     ASSERT_TRUE(QTest::qWaitFor([&] { return measured.count() >= 1; }, kTimeoutMs));
@@ -576,10 +522,7 @@ TEST_F(TradeoffViewTest, Measure_TinyScene_FillsPlotAndTableWithEveryPointAndAFr
 }
 
 TEST_F(TradeoffViewTest, Measure_Cancel_StopsWithinAShortTimeAndKeepsPartialResults) {
-    // Enough work that it cannot finish before the cancel: 126 points at 160 x 120.
-    TradeoffGrid grid = tinyGrid();
-    grid.samples = {1, 2, 4, 8, 16, 32, 64};
-    grid.depths = {0, 1, 2, 3, 4, 5, 6, 7, 8};
+    const TradeoffGrid grid = slowGrid();
     view->setMeasureGrid(grid, 16);
     QSignalSpy progress(view, &TradeoffView::measureProgress);
     QSignalSpy finished(view, &TradeoffView::measureFinished);
@@ -606,10 +549,7 @@ TEST_F(TradeoffViewTest, Measure_Cancel_StopsWithinAShortTimeAndKeepsPartialResu
 }
 
 TEST_F(TradeoffViewTest, Measure_OpeningASceneMeanwhile_StopsItAndKeepsNothing) {
-    TradeoffGrid grid = tinyGrid();
-    grid.samples = {1, 2, 4, 8, 16, 32, 64};
-    grid.depths = {0, 1, 2, 3, 4, 5, 6, 7, 8};
-    view->setMeasureGrid(grid, 16);
+    view->setMeasureGrid(slowGrid(), 16);
     QSignalSpy progress(view, &TradeoffView::measureProgress);
     QSignalSpy finished(view, &TradeoffView::measureFinished);
     ASSERT_TRUE(view->startMeasure());
@@ -704,12 +644,5 @@ TEST(SettingsPrediction, ErrorInterpolatedLogLogBetweenSampleCounts) {
 }  // namespace whitted::ui
 
 int main(int argc, char** argv) {
-    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
-    QStandardPaths::setTestModeEnabled(true);
-    QApplication app(argc, argv);
-    QApplication::setOrganizationName("WhittedTests");
-    QApplication::setApplicationName("test_tradeoff_view");
-    QSettings().clear();
-    ::testing::InitGoogleTest(&argc, argv);
-    return RUN_ALL_TESTS();
+    return whitted::test::runGuiTests(argc, argv, "test_tradeoff_view");
 }

@@ -5,6 +5,7 @@
 // On failure no output file is left behind (frames already finished stay).
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -20,6 +21,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "analysis/quality_target.h"
 #include "base/atomic_file.h"
 #include "camera/camera_control.h"
 #include "cli_input.h"
@@ -46,6 +48,8 @@ struct Options {
     std::vector<int> region;  // X0, Y0, X1, Y1
     int turntable = 0;        // frames of one full turn; 0: a still
     std::string frames;       // A-B of the turntable's frames; empty: all
+    std::string quality;      // draft, preview or final; empty: none
+    std::optional<double> targetPsnr, maxError;
 };
 
 struct MergeOptions {
@@ -103,7 +107,35 @@ class ProgressBar {
     const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-std::string statsJson(const RenderSettings& r, const RenderResult& result) {
+// What a render to a quality chose and reached, for --stats.
+nlohmann::ordered_json qualityJson(const QualityPlan& plan, const AdaptiveOutcome& outcome) {
+    nlohmann::ordered_json q;
+    q["target"] = plan.target.name.empty() ? "custom" : plan.target.name;
+    q["target_psnr_db"] = plan.target.psnrDb;
+    q["target_max_error_codes"] =
+        plan.target.largestCodes ? nlohmann::ordered_json(*plan.target.largestCodes) : nullptr;
+    q["depth_chosen"] = !plan.depthGiven;
+    q["reference_depth"] = plan.referenceDepth;
+    q["depth_mse_codes2"] = plan.depthMse;
+    q["depth_max_error_codes"] = plan.depthLargest;
+    q["precision_mse_codes2"] = plan.precisionMse;
+    q["sampling_mse_limit_codes2"] = plan.sampling.allowedMse;
+    q["sampling_max_error_limit_codes"] = plan.sampling.allowedLargest;
+    q["max_samples_per_pixel"] = plan.sampling.maxSamples;
+    q["samples_per_pixel_mean"] = outcome.meanSamples;
+    q["samples_per_pixel_fewest"] = outcome.fewestSamples;
+    q["samples_per_pixel_most"] = outcome.mostSamples;
+    const double mse = plan.depthMse + plan.precisionMse + outcome.estimatedMse;
+    q["estimated_psnr_db"] = mse > 0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : 999.0;
+    q["estimated_max_error_codes"] = std::max(plan.depthLargest, outcome.estimatedLargest);
+    q["tiles"] = outcome.tiles;
+    q["tiles_at_sample_limit"] = outcome.tilesAtCap;
+    q["why"] = plan.why;
+    return q;
+}
+
+std::string statsJson(const RenderSettings& r, const RenderResult& result,
+                      const std::optional<QualityPlan>& plan) {
     const RayCounts& rays = result.rays;
     nlohmann::ordered_json j;
     j["width"] = r.width;
@@ -120,6 +152,10 @@ std::string statsJson(const RenderSettings& r, const RenderResult& result) {
                  {"refraction", rays.refraction},
                  {"total", rays.total()}};
     j["mrays_per_second"] = result.seconds > 0 ? rays.total() / result.seconds / 1e6 : 0.0;
+    if (plan && result.adaptive) {
+        j["samples_per_pixel"] = result.adaptive->meanSamples;
+        j["quality"] = qualityJson(*plan, *result.adaptive);
+    }
     return j.dump(2) + "\n";
 }
 
@@ -161,16 +197,51 @@ std::pair<int, int> framesOf(const Options& o) {
     return {first, last};
 }
 
+// The target the flags ask for, if any.
+std::optional<QualityTarget> targetOf(const Options& o) {
+    if (!o.quality.empty() && o.targetPsnr)
+        throw BadInput("--quality and --target-psnr: give one or the other");
+    if (o.maxError && !o.targetPsnr)
+        throw BadInput("--max-error needs --target-psnr (a preset brings its own)");
+    if (!o.quality.empty()) return qualityPreset(o.quality);
+    if (o.targetPsnr) return QualityTarget{"", *o.targetPsnr, o.maxError};
+    return std::nullopt;
+}
+
+// What the plan chose and why, then what the render reached.
+void sayQualityPlan(const QualityPlan& plan) {
+    std::fprintf(stderr, "quality %s\n", describeTarget(plan.target).c_str());
+    std::istringstream lines(plan.why);
+    for (std::string line; std::getline(lines, line);) std::fprintf(stderr, "  %s\n", line.c_str());
+}
+
+void sayQualityReached(const QualityPlan& plan, const AdaptiveOutcome& a) {
+    const double mse = plan.depthMse + plan.precisionMse + a.estimatedMse;
+    std::fprintf(stderr, "  reached: %d to %d samples a pixel (%.1f on average), estimated %.1f dB",
+                 a.fewestSamples, a.mostSamples, a.meanSamples,
+                 mse > 0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : 999.0);
+    if (plan.target.largestCodes)
+        std::fprintf(stderr, ", largest error about %.1f codes",
+                     std::max(plan.depthLargest, a.estimatedLargest));
+    std::fprintf(stderr, "\n");
+    if (a.tilesAtCap > 0)
+        std::fprintf(stderr,
+                     "  %d of %d tiles stopped at %d samples a pixel before reaching the target "
+                     "(raise --spp)\n",
+                     a.tilesAtCap, a.tiles, plan.sampling.maxSamples);
+}
+
 // One image: the scene as given, rendered (only its region, if any) and
 // written with its stats. Returns the exit code.
 int renderFrame(const Scene& scene, const Options& o, const std::optional<PixelRect>& region,
-                int frame) {
+                int frame, const std::optional<QualityPlan>& plan) {
     const fs::path output = frameFile(o.output, frame);
     ProgressBar bar(!o.quiet);
     RenderOptions options;
     options.threads = o.threads;
     options.progressive = false;  // nobody watches the preview here
     options.region = region;
+    if (plan) options.adaptive = plan->sampling;
     const RenderResult result =
         render(scene, options, [&](const TileUpdate& t) { bar.update(t.progress.fraction); });
     bar.finish();
@@ -190,7 +261,7 @@ int renderFrame(const Scene& scene, const Options& o, const std::optional<PixelR
     if (!o.stats.empty()) {
         const fs::path stats = frameFile(o.stats, frame);
         try {
-            writeText(stats, statsJson(scene.render, result));
+            writeText(stats, statsJson(scene.render, result, plan));
         } catch (const std::exception& e) {
             std::cerr << "whitted-render: " << stats.string() << ": " << e.what() << "\n";
             std::error_code ignored;
@@ -198,13 +269,19 @@ int renderFrame(const Scene& scene, const Options& o, const std::optional<PixelR
             return kExitFailure;
         }
     }
-    if (!o.quiet) {
+    if (!o.quiet && plan && result.adaptive) sayQualityReached(*plan, *result.adaptive);
+    if (!o.quiet && !plan) {
         std::fprintf(
             stderr, "wrote %s: %dx%d, %d spp, depth %d, %s, %.3f s, %.1f Mrays/s, %s kernel\n",
             output.c_str(), scene.render.width, scene.render.height, scene.render.samplesPerPixel,
             scene.render.maxDepth, std::string(precisionName(scene.render.precision)).c_str(),
             result.seconds, result.seconds > 0 ? result.rays.total() / result.seconds / 1e6 : 0.0,
             activeKernelName().c_str());
+    } else if (!o.quiet) {
+        std::fprintf(stderr, "wrote %s: %dx%d, %.1f spp on average, depth %d, %s, %.3f s\n",
+                     output.c_str(), scene.render.width, scene.render.height,
+                     result.adaptive->meanSamples, scene.render.maxDepth,
+                     std::string(precisionName(scene.render.precision)).c_str(), result.seconds);
     }
     return kExitOk;
 }
@@ -233,10 +310,26 @@ int run(const Options& o) {
         std::cerr << "whitted-render: " << e.what() << "\n";
         return kExitBadInput;
     }
+    std::optional<QualityTarget> target;
+    try {
+        target = targetOf(o);
+        if (target && region) throw BadInput("--region renders fixed samples: not with a quality");
+    } catch (const BadInput& e) {
+        std::cerr << "whitted-render: " << e.what() << "\n";
+        return kExitBadInput;
+    }
     const Camera camera = scene.camera;
     for (int frame = frames.first; frame <= frames.second; ++frame) {
         if (frame > 0) scene.camera = turntableCamera(camera, frame, o.turntable);
-        if (const int code = renderFrame(scene, o, region, frame); code != kExitOk) return code;
+        std::optional<QualityPlan> plan;
+        if (target) {
+            plan = planQuality(scene, *target, o.render.spp.value_or(kDefaultMaxSamples),
+                               o.render.depth);
+            if (!o.quiet) sayQualityPlan(*plan);
+        }
+        if (plan) scene.render.maxDepth = plan->maxDepth;
+        if (const int code = renderFrame(scene, o, region, frame, plan); code != kExitOk)
+            return code;
     }
     return kExitOk;
 }
@@ -295,6 +388,19 @@ int main(int argc, char** argv) {
                    "Render N frames, the eye turning about look_at once around the up axis")
         ->check(CLI::Range(1, 99999));
     app.add_option("--frames", o.frames, "Render only frames A-B of the turntable (1-based)");
+    app.add_option("--quality", o.quality,
+                   "Render to a quality: draft (20 dB), preview (35 dB, no pixel off by more "
+                   "than 64 codes) or final (50 dB, 16 codes); the depth is chosen for the scene "
+                   "and each tile sampled until its error is under the target (--spp: at most "
+                   "that many samples a pixel, default 1024; --depth: fix the depth)")
+        ->transform(CLI::IsMember({"draft", "preview", "final"}, CLI::ignore_case));
+    app.add_option("--target-psnr", o.targetPsnr,
+                   "Render to this PSNR in dB of the 8-bit picture against a converged render, "
+                   "as --quality does")
+        ->check(CLI::Range(1.0, 100.0));
+    app.add_option("--max-error", o.maxError,
+                   "With --target-psnr: no pixel off by more than this many 8-bit codes")
+        ->check(CLI::Range(0.5, 255.0));
 
     MergeOptions m;
     CLI::App* merge = app.add_subcommand(

@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <limits>
+#include <map>
 #include <mutex>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -89,7 +92,7 @@ class TileRenderer {
   public:
     TileRenderer(const Scene& scene, const RenderOptions& options, const TileCallback& onTile,
                  const StopPredicate& shouldStop)
-        : s_(prepareScene<T>(scene, options.bvhCache)),
+        : s_(prepared(scene, options)),
           options_(options),
           onTile_(onTile),
           shouldStop_(shouldStop),
@@ -97,33 +100,12 @@ class TileRenderer {
           block_(previewBlockOf(options)) {}
 
     RenderResult run() {
-        const std::vector<Pass> passes = planPasses(settings_, options_);
-        // Sums survive between passes only when a pixel gets its samples in
-        // several passes. 24 bytes a pixel (6 GB at 16384x16384): taken from
-        // zero pages, so nothing is written, and no time spent, before the
-        // first tile; a page costs memory only once a tile of it is rendered.
-        if (passes.back().firstSample > 0) sums_ = Sums(size_t(s_.width) * s_.height);
-        for (const Pass& p : passes) totalWork_ += p.work;
-        std::vector<Tile> tiles = spiralTiles(s_.width, s_.height, std::max(1, options_.tileSize));
-        if (options_.region) tiles = regionTiles(std::move(tiles), *options_.region);
-        const int threads =
-            std::max(1, std::min<int>(resolveThreadCount(options_.threads), tiles.size()));
-
-        RenderResult result;
-        result.threads = threads;
-        for (size_t p = 0; p < passes.size() && !stopped_; ++p) {
-            // Each image only when its first pass starts: the full-size one
-            // (11 MB at 1280x720) once the preview is out.
-            if (passes[p].kind == PassKind::Preview)
-                preview_ =
-                    Image((s_.width + block_ - 1) / block_, (s_.height + block_ - 1) / block_);
-            else if (image_.rgb.empty())
-                image_ = Image(s_.width, s_.height);
-            runPass(passes[p], int(p), int(passes.size()), tiles, threads);
-            if (!stopped_ && passes[p].kind == PassKind::Samples)
-                result.samples = passes[p].lastSample;
-        }
+        tiles_ = spiralTiles(s_.width, s_.height, std::max(1, options_.tileSize));
+        if (options_.region) tiles_ = regionTiles(std::move(tiles_), *options_.region);
+        threads_ = std::max(1, std::min<int>(resolveThreadCount(options_.threads), tiles_.size()));
+        RenderResult result = options_.adaptive ? runAdaptive() : runFixed();
         if (image_.rgb.empty()) image_ = Image(s_.width, s_.height);  // stopped in the preview
+        result.threads = threads_;
         result.completed = !stopped_;
         result.rays = rays_;
         result.image = std::move(image_);
@@ -131,25 +113,120 @@ class TileRenderer {
     }
 
   private:
+    static PreparedScene<T> prepared(const Scene& scene, const RenderOptions& options) {
+        PreparedScene<T> s = prepareScene<T>(scene, options.bvhCache);
+        if (options.adaptive) {
+            s.samplesPerPixel = std::max(1, options.adaptive->maxSamples);
+            s.openEndedSamples = true;
+        }
+        return s;
+    }
+
+    RenderResult runFixed() {
+        const std::vector<Pass> passes = planPasses(settings_, options_);
+        // Sums survive between passes only when a pixel gets its samples in
+        // several passes. 24 bytes a pixel (6 GB at 16384x16384): taken from
+        // zero pages, so nothing is written, and no time spent, before the
+        // first tile; a page costs memory only once a tile of it is rendered.
+        if (passes.back().firstSample > 0) sums_ = Sums(size_t(s_.width) * s_.height);
+        for (const Pass& p : passes) totalWork_ += p.work;
+        std::vector<int> all(tiles_.size());
+        std::iota(all.begin(), all.end(), 0);
+        RenderResult result;
+        for (size_t p = 0; p < passes.size() && !stopped_; ++p) {
+            startImage(passes[p].kind);
+            runPass(passes[p], int(p), int(passes.size()), all);
+            if (!stopped_ && passes[p].kind == PassKind::Samples)
+                result.samples = passes[p].lastSample;
+        }
+        return result;
+    }
+
+    // Each image only when its first pass starts: the full-size one (11 MB
+    // at 1280x720) once the preview is out.
+    void startImage(PassKind kind) {
+        if (kind == PassKind::Preview)
+            preview_ = Image((s_.width + block_ - 1) / block_, (s_.height + block_ - 1) / block_);
+        else if (image_.rgb.empty())
+            image_ = Image(s_.width, s_.height);
+    }
+
+    // The preview, one sample everywhere, then passes that double the
+    // samples of the tiles tilesToRefine() picks, until it picks none.
+    RenderResult runAdaptive() {
+        const AdaptiveSampling& limits = *options_.adaptive;
+        sums_ = Sums(size_t(s_.width) * s_.height);
+        tileStates_.resize(tiles_.size());
+        for (size_t t = 0; t < tiles_.size(); ++t)
+            tileStates_[t].pixels = tiles_[t].w * tiles_[t].h;
+        std::vector<Pass> passes = planPasses(settings_, options_);  // the preview, if any
+        passes.resize(passes.front().kind == PassKind::Preview ? 1 : 0);
+        std::vector<int> refine(tiles_.size());
+        std::iota(refine.begin(), refine.end(), 0);
+        int index = 0;
+        if (!passes.empty()) {
+            totalWork_ = passes.front().work;
+            startImage(PassKind::Preview);
+            runPass(passes.front(), 0, 1, refine);
+            index = 1;
+        }
+        int samplesPasses = 0;
+        RenderResult result;
+        while (!refine.empty() && !stopped_) {
+            // One pass for each sample count among the chosen tiles, fewest first.
+            std::map<int, std::vector<int>> bySamples;
+            for (int t : refine) bySamples[tileStates_[t].samples].push_back(t);
+            for (const auto& [done, ids] : bySamples) {
+                if (stopped_) break;
+                const int next = std::min(limits.maxSamples, done == 0 ? 2 : 2 * done);
+                double pixels = 0.0;
+                for (int t : ids) pixels += tileStates_[t].pixels;
+                const Pass pass{PassKind::Samples, done, next, pixels * (next - done)};
+                totalWork_ = workDone_ + pass.work * remainingPassesGuess(limits);
+                startImage(PassKind::Samples);
+                runPass(pass, index, index + 1, ids);
+                ++index, ++samplesPasses;
+            }
+            refine = tilesToRefine(tileStates_, limits);
+        }
+        result.adaptive = adaptiveOutcome(tileStates_, limits, samplesPasses);
+        result.samples = stopped_ ? 0 : result.adaptive->fewestSamples;
+        return result;
+    }
+
+    // For the progress fraction: the passes left if each halves the error.
+    double remainingPassesGuess(const AdaptiveSampling& limits) const {
+        const double mse = estimatedPictureMse(tileStates_);
+        if (mse <= 0.0 || limits.allowedMse <= 0.0) return 2.0;
+        return 1.0 + std::max(0.0, std::log2(mse / limits.allowedMse));
+    }
     bool stopRequested() {
         if (stopped_.load(std::memory_order_relaxed)) return true;
         if (shouldStop_ && shouldStop_()) stopped_ = true;
         return stopped_;
     }
 
-    void runPass(const Pass& pass, int index, int count, const std::vector<Tile>& tiles,
-                 int threads) {
+    // Renders the tiles `ids` (indices into tiles_) through one pass.
+    void runPass(const Pass& pass, int index, int count, const std::vector<int>& ids) {
         std::atomic<size_t> next{0};
-        const double workPerPixel = pass.work / pixelsRendered(settings_, options_);
+        const double workPerPixel = pass.kind == PassKind::Preview
+                                        ? 1.0 / (double(block_) * block_)
+                                        : double(pass.lastSample - pass.firstSample);
         auto worker = [&] {
             RayCounts counts;
             Row row;  // the worker's own
             for (;;) {
                 if (stopRequested()) break;
-                const size_t t = next.fetch_add(1);
-                if (t >= tiles.size()) break;
-                const Tile& tile = tiles[t];
-                if (!renderTile(pass, tile, row, counts)) break;
+                const size_t k = next.fetch_add(1);
+                if (k >= ids.size()) break;
+                const Tile& tile = tiles_[ids[k]];
+                TileErrorEstimate* estimate = nullptr;
+                if (!tileStates_.empty() && pass.kind == PassKind::Samples) {
+                    estimate = &tileStates_[ids[k]].estimate;
+                    *estimate = {};
+                }
+                if (!renderTile(pass, tile, row, counts, estimate)) break;
+                if (estimate) tileStates_[ids[k]].samples = pass.lastSample;
                 const double done = workDone_.fetch_add(workPerPixel * tile.w * tile.h) +
                                     workPerPixel * tile.w * tile.h;
                 if (onTile_) {
@@ -158,7 +235,7 @@ class TileRenderer {
                                             pass.kind,
                                             pass.kind == PassKind::Preview ? 0 : pass.lastSample,
                                             std::min(1.0, done / totalWork_),
-                                            int(tiles.size())};
+                                            int(ids.size())};
                     const bool preview = pass.kind == PassKind::Preview;
                     onTile_(TileUpdate{preview ? preview_ : image_, tile.x, tile.y, tile.w, tile.h,
                                        progress, preview ? block_ : 1});
@@ -168,7 +245,7 @@ class TileRenderer {
             rays_ += counts;
         };
         std::vector<std::thread> helpers;
-        for (int i = 1; i < threads; ++i) helpers.emplace_back(worker);
+        for (int i = 1; i < std::min<int>(threads_, ids.size()); ++i) helpers.emplace_back(worker);
         worker();
         for (auto& h : helpers) h.join();
     }
@@ -209,7 +286,7 @@ class TileRenderer {
     // False when stopped part-way: the tile is then incomplete and not reported.
     // Out of line: the profiles of docs/performance.md collect from it.
     __attribute__((noinline)) bool renderTile(const Pass& pass, const Tile& tile, Row& row,
-                                              RayCounts& counts) {
+                                              RayCounts& counts, TileErrorEstimate* estimate) {
         if (pass.kind == PassKind::Preview) return renderPreviewTile(tile, counts);
         row.radiance.resize(tile.w);
         row.sums.resize(tile.w);
@@ -220,13 +297,14 @@ class TileRenderer {
                 traceCameraRow(s_, y, tile.x, tile.w, 0, row.radiance.data(), counts);
                 storeSamples(row.radiance.data(), tile.x, y, tile.w);
             } else {
-                renderRow(pass, tile, y, row, counts);
+                renderRow(pass, tile, y, row, counts, estimate);
             }
         }
         return true;
     }
 
-    void renderRow(const Pass& pass, const Tile& tile, int y, Row& row, RayCounts& counts) {
+    void renderRow(const Pass& pass, const Tile& tile, int y, Row& row, RayCounts& counts,
+                   TileErrorEstimate* estimate) {
         std::vector<glm::dvec3>& sums = row.sums;
         const Vec<T>* radiance = row.radiance.data();
         const size_t at = size_t(y) * s_.width + tile.x;
@@ -239,10 +317,20 @@ class TileRenderer {
         for (int n = pass.firstSample; n < pass.lastSample; ++n) {
             traceCameraRow(s_, y, tile.x, tile.w, n, row.radiance.data(), counts);
             for (int i = 0; i < tile.w; ++i) sums[i] += glm::dvec3(radiance[i]);
+            // An adaptive render's first pass, of two samples: its first
+            // half, for the estimate, is the first sample.
+            if (estimate && n == 0)
+                for (int i = 0; i < tile.w; ++i)
+                    storePixel(image_.pixel(tile.x + i, y), radiance[i]);
         }
         if (!sums_.empty()) std::copy_n(sums.begin(), tile.w, sums_.begin() + at);
-        for (int i = 0; i < tile.w; ++i)
-            storeMean(image_.pixel(tile.x + i, y), sums[i], pass.lastSample);
+        for (int i = 0; i < tile.w; ++i) {
+            float* out = image_.pixel(tile.x + i, y);
+            const float before[3] = {out[0], out[1], out[2]};
+            storeMean(out, sums[i], pass.lastSample);
+            if (estimate && pass.lastSample > 1)
+                for (int c = 0; c < 3; ++c) estimate->addHalves(before[c], out[c]);
+        }
     }
 
     // One camera ray through the middle of each block, stored as the
@@ -276,6 +364,9 @@ class TileRenderer {
     double totalWork_ = 0.0;
     std::mutex raysMutex_;
     RayCounts rays_;
+    std::vector<Tile> tiles_;
+    int threads_ = 1;
+    std::vector<TileSamplingState> tileStates_;  // adaptive renders only
 };
 
 }  // namespace
@@ -307,6 +398,8 @@ RenderResult render(const Scene& scene, const RenderOptions& options, const Tile
         throw std::invalid_argument("the region " + cornersText(*g) + " is not a part of the " +
                                     std::to_string(scene.render.width) + "x" +
                                     std::to_string(scene.render.height) + " image");
+    if (options.region && options.adaptive)
+        throw std::invalid_argument("an adaptive render covers the whole image, not a region");
     // Here, not in a worker: a WHITTED_KERNEL this CPU cannot run throws to the caller.
     activeKernel();
     const auto start = std::chrono::steady_clock::now();

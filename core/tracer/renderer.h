@@ -18,6 +18,7 @@
 #include "base/parallel_for.h"  // resolveThreadCount, for RenderOptions::threads
 #include "image/image.h"
 #include "scene/scene.h"
+#include "tracer/adaptive_sampling.h"
 #include "tracer/tracer.h"
 
 namespace whitted {
@@ -43,6 +44,12 @@ struct RenderOptions {
     // full size, zero outside the region; its pages cost memory only where
     // rendered. Unset: the whole image.
     std::optional<PixelRect> region = std::nullopt;
+    // Set: each tile is sampled until the picture's estimated error is under
+    // these limits (adaptive_sampling.h), at most maxSamples per pixel; the
+    // scene's samples_per_pixel is not used. Samples come from
+    // progressiveSample(), passes double the samples of the tiles that need
+    // them most, and the image is as deterministic as any other. Not with a region.
+    std::optional<AdaptiveSampling> adaptive = std::nullopt;
 };
 
 enum class PassKind { Preview, Samples };
@@ -93,8 +100,10 @@ struct RenderResult {
     // Samples per pixel in every pixel of `image`. 0: stopped before one
     // full-size pass was complete; `image` then holds the full-size tiles
     // finished, and zero elsewhere (the preview is only in the tile reports).
+    // In an adaptive render: the fewest samples any tile got.
     int samples = 0;
     bool completed = false;  // false when stopped early
+    std::optional<AdaptiveOutcome> adaptive;  // set by adaptive renders
 };
 
 // Renders the scene with its render settings. Throws std::invalid_argument for a

@@ -51,7 +51,55 @@ double randomUnit(std::uint32_t i, std::uint32_t p) {
     return i * (1.0 / 4294967296.0);
 }
 
+std::uint32_t reverseBits(std::uint32_t x) {
+    x = (x << 16) | (x >> 16);
+    x = ((x & 0x00ff00ffu) << 8) | ((x & 0xff00ff00u) >> 8);
+    x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
+    x = ((x & 0x33333333u) << 2) | ((x & 0xccccccccu) >> 2);
+    return ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
+}
+
+// Owen scrambling of a value in [0, 2^32) read as a binary fraction: each bit
+// is flipped by a hash of the bits above it (Laine and Karras's permutation,
+// applied to the reversed bits so that "above" becomes "below").
+std::uint32_t owenScramble(std::uint32_t x, std::uint32_t seed) {
+    x = reverseBits(x);
+    x += seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return reverseBits(x);
+}
+
+// Sobol's second dimension: the bits of `index` select direction numbers
+// v_0 = 1/2, v_k = v_{k-1} xor v_{k-1}/2 (the first dimension is the index
+// with its bits reversed).
+std::uint32_t sobolSecond(std::uint32_t index) {
+    std::uint32_t v = 0x80000000u, x = 0;
+    for (; index != 0; index >>= 1, v ^= v >> 1)
+        if (index & 1u) x ^= v;
+    return x;
+}
+
+std::uint32_t hashSeed(std::uint32_t seed, std::uint32_t salt) {
+    seed ^= salt;
+    seed *= 0x9e3779b9u;
+    seed ^= seed >> 16;
+    seed *= 0x85ebca6bu;
+    return seed ^ (seed >> 13);
+}
+
 }  // namespace
+
+SubPixel progressiveSample(int s, std::uint32_t seed) {
+    const auto index = static_cast<std::uint32_t>(s);
+    const std::uint32_t x = owenScramble(reverseBits(index), hashSeed(seed, 0x2c1b3c6du));
+    const std::uint32_t y = owenScramble(sobolSecond(index), hashSeed(seed, 0x297a2d39u));
+    // The top 24 bits: exact in float too, and below 1.
+    constexpr double kUnit = 1.0 / 16777216.0;
+    return {(x >> 8) * kUnit, (y >> 8) * kUnit};
+}
 
 std::uint32_t pixelSeed(int i, int j) {
     // PCG-style integer hash of the packed coordinates (both < 2^14 + 1).

@@ -19,4 +19,14 @@ std::uint32_t pixelSeed(int i, int j);
 // Sample `s` of `count` (0 <= s < count) for the pixel with seed `seed`.
 SubPixel subPixelSample(int s, int count, std::uint32_t seed);
 
+// Sample `s` of an open-ended sequence for the pixel with seed `seed`: the
+// first two dimensions of Sobol's sequence, Owen-scrambled per pixel (Burley,
+// "Practical Hash-based Owen Scrambling", JCGT 2020). Its first 2^k samples
+// are stratified for every k: one in each of the 2^k cells of every grid of
+// 2^a x 2^b cells with a + b = k. Renders that stop each tile at a count of
+// their own (RenderOptions::adaptive) use it, so that whatever power of two a
+// tile stops at, its samples are as well spread as a pattern made for that
+// count; subPixelSample() is spread well only as a whole.
+SubPixel progressiveSample(int s, std::uint32_t seed);
+
 }  // namespace whitted

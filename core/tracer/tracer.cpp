@@ -225,7 +225,8 @@ Vec<T> tracePixelSample(const PreparedScene<T>& s, int i, int j, T u, T v, RayCo
 template <typename T>
 CameraSample<T> pixelSample(const PreparedScene<T>& s, int i, int j, int n) {
     if (s.samplesPerPixel == 1) return {i, j, T(0.5), T(0.5)};
-    const SubPixel sp = subPixelSample(n, s.samplesPerPixel, pixelSeed(i, j));
+    const SubPixel sp = s.openEndedSamples ? progressiveSample(n, pixelSeed(i, j))
+                                           : subPixelSample(n, s.samplesPerPixel, pixelSeed(i, j));
     return {i, j, T(sp.u), T(sp.v)};
 }
 

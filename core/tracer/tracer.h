@@ -92,6 +92,10 @@ struct PreparedScene {
     Vec<T> background, ambient;
     int maxDepth = 0;
     int samplesPerPixel = 1;
+    // Samples from progressiveSample(), whose every power-of-two prefix is
+    // stratified, rather than from subPixelSample()'s pattern for exactly
+    // samplesPerPixel: for renders whose tiles stop at counts of their own.
+    bool openEndedSamples = false;
     int width = 1, height = 1;
 };
 

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "image/image_error.h"
 #include "image/image_io.h"
 #include "support/core_support.h"
 #include "support/test_support.h"
@@ -323,6 +324,80 @@ TEST(WhittedRender, UnwritableStats_ExitsOneAndRemovesTheImage) {
     EXPECT_EQ(r.exitCode, 1) << describe(r);
     EXPECT_NE(r.err.find("stats.json"), std::string::npos) << r.err;
     EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
+}
+
+// ---- rendering to a quality (issue 15) ---------------------------------------
+
+TEST(WhittedRender, QualityFinal_MeetsItsTargetAgainstAConvergedRenderAndSaysWhy) {
+    TempDir dir;
+    const fs::path out = dir / "final.exr", ref = dir / "ref.exr", stats = dir / "stats.json";
+    const ProgramRun r =
+        runRender({test::kSeedScenePath, "-o", out.string(), "--width", "128", "--height", "96",
+                   "--quality", "final", "--stats", stats.string()});
+    ASSERT_EQ(r.exitCode, 0) << describe(r);
+    EXPECT_NE(r.err.find("quality Final: 50 dB, no pixel off by more than 16 codes"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("depth "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("samples: each tile until"), std::string::npos) << r.err;
+    const ProgramRun converged =
+        runRender({test::kSeedScenePath, "-o", ref.string(), "--width", "128", "--height", "96",
+                   "--spp", "1024", "--depth", "12", "--precision", "double", "--quiet"});
+    ASSERT_EQ(converged.exitCode, 0) << describe(converged);
+    const ErrorStats e = measureError(readImage(out), readImage(ref));
+    EXPECT_GE(e.psnrSrgb8, 50.0);
+    EXPECT_LE(e.largest, 16.0);
+
+    const nlohmann::json j = nlohmann::json::parse(test::readFile(stats));
+    ASSERT_TRUE(j.contains("quality")) << j.dump(2);
+    const auto& q = j["quality"];
+    EXPECT_EQ(q["target"], "Final");
+    EXPECT_EQ(q["target_psnr_db"], 50.0);
+    EXPECT_EQ(q["target_max_error_codes"], 16.0);
+    EXPECT_EQ(q["depth_chosen"], true);
+    EXPECT_EQ(j["max_depth"], q["reference_depth"].get<int>() - 3);
+    // Sampled where the picture needs it: the flat background stops early.
+    EXPECT_LT(q["samples_per_pixel_fewest"].get<int>(), q["samples_per_pixel_most"].get<int>());
+    EXPECT_GE(q["estimated_psnr_db"].get<double>(), 50.0);
+    EXPECT_EQ(q["tiles_at_sample_limit"], 0);
+}
+
+TEST(WhittedRender, TargetPsnr_IsMetAndAGivenDepthIsKept) {
+    TempDir dir;
+    const fs::path out = dir / "t.exr", ref = dir / "ref.exr", stats = dir / "stats.json";
+    const ProgramRun r =
+        runRender({test::kSeedScenePath, "-o", out.string(), "--width", "48", "--height", "36",
+                   "--target-psnr", "40", "--depth", "6", "--stats", stats.string(), "--quiet"});
+    ASSERT_EQ(r.exitCode, 0) << describe(r);
+    EXPECT_EQ(r.err, "");
+    const ProgramRun converged =
+        runRender({test::kSeedScenePath, "-o", ref.string(), "--width", "48", "--height", "36",
+                   "--spp", "1024", "--depth", "12", "--precision", "double", "--quiet"});
+    ASSERT_EQ(converged.exitCode, 0) << describe(converged);
+    EXPECT_GE(measureError(readImage(out), readImage(ref)).psnrSrgb8, 40.0);
+    const nlohmann::json j = nlohmann::json::parse(test::readFile(stats));
+    EXPECT_EQ(j["max_depth"], 6);
+    EXPECT_EQ(j["quality"]["target"], "custom");
+    EXPECT_EQ(j["quality"]["depth_chosen"], false);
+    EXPECT_TRUE(j["quality"]["target_max_error_codes"].is_null());
+}
+
+TEST(WhittedRender, QualityFlagsThatContradict_ExitTwoAndWriteNothing) {
+    const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+        {{"--quality", "best"}, "--quality"},
+        {{"--quality", "final", "--target-psnr", "40"}, "give one or the other"},
+        {{"--max-error", "8"}, "--max-error needs --target-psnr"},
+        {{"--target-psnr", "0"}, "--target-psnr"},
+    };
+    for (const auto& [flags, message] : cases) {
+        TempDir dir;
+        std::vector<std::string> args = {test::kSeedScenePath, "-o", (dir / "x.png").string()};
+        args.insert(args.end(), flags.begin(), flags.end());
+        const ProgramRun r = runRender(args);
+        EXPECT_EQ(r.exitCode, 2) << test::joined(flags) << "\n" << describe(r);
+        EXPECT_NE(r.err.find(message), std::string::npos) << test::joined(flags) << "\n" << r.err;
+        EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
+    }
 }
 
 }  // namespace

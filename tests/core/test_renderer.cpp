@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include "image/image_error.h"
 #include "scene/scene_io.h"
 #include "support/core_support.h"
 #include "tracer/renderer.h"
@@ -343,6 +344,77 @@ TEST(Renderer, StopBeforeStart_ReturnsIncompleteAtOnce) {
     EXPECT_EQ(tiles, 0);
     EXPECT_EQ(r.samples, 0);
     EXPECT_EQ(r.rays.total(), 0u);
+}
+
+// ---- adaptive renders (RenderOptions::adaptive, issue 15) --------------------
+
+RenderOptions adaptiveOptions(int threads, bool progressive, double allowedMse, int maxSamples) {
+    RenderOptions o = options(threads, 16, progressive);
+    o.adaptive = AdaptiveSampling{allowedMse, 255.0, maxSamples};
+    return o;
+}
+
+TEST(Renderer, AdaptiveRender_SameImageWithAnyThreadsAndWithOrWithoutPreview) {
+    const Scene scene = smallSeed(1, Precision::Float);
+    const RenderResult one = render(scene, adaptiveOptions(1, false, 2.0, 64));
+    ASSERT_TRUE(one.completed);
+    ASSERT_TRUE(one.adaptive);
+    // Tiles stopped at different counts, or the test shows nothing adaptive.
+    ASSERT_LT(one.adaptive->fewestSamples, one.adaptive->mostSamples);
+    for (const bool progressive : {false, true}) {
+        const RenderResult two = render(scene, adaptiveOptions(2, progressive, 2.0, 64));
+        EXPECT_EQ(std::memcmp(one.image.rgb.data(), two.image.rgb.data(),
+                              one.image.rgb.size() * sizeof(float)),
+                  0)
+            << "progressive " << progressive;
+        EXPECT_EQ(two.adaptive->meanSamples, one.adaptive->meanSamples);
+        if (!progressive) {  // a preview traces rays of its own
+            EXPECT_EQ(two.rays.total(), one.rays.total());
+        }
+    }
+}
+
+TEST(Renderer, AdaptiveRender_ZeroAllowedErrorTakesTheCapWhereverThereIsError) {
+    const Scene scene = smallSeed(1, Precision::Float);
+    const RenderResult r = render(scene, adaptiveOptions(2, false, 0.0, 8));
+    ASSERT_TRUE(r.adaptive);
+    // Tiles of plain background have no error after two samples and stop;
+    // every other tile goes to the cap and says it stopped there.
+    EXPECT_EQ(r.adaptive->fewestSamples, 2);
+    EXPECT_EQ(r.samples, 2);
+    EXPECT_EQ(r.adaptive->mostSamples, 8);
+    EXPECT_GT(r.adaptive->tilesAtCap, 0);
+    EXPECT_LT(r.adaptive->tilesAtCap, r.adaptive->tiles);
+    const double cameraPerPixel = double(r.rays.camera) / (97.0 * 61.0);
+    EXPECT_DOUBLE_EQ(cameraPerPixel, r.adaptive->meanSamples);
+}
+
+TEST(Renderer, AdaptiveRender_GenerousTargetStopsAtTheFirstPass) {
+    const RenderResult r =
+        render(smallSeed(1, Precision::Double), adaptiveOptions(2, false, 255.0 * 255.0, 64));
+    ASSERT_TRUE(r.adaptive);
+    EXPECT_EQ(r.adaptive->mostSamples, 2);  // the first pass's two, for an estimate
+    EXPECT_EQ(r.adaptive->passes, 1);
+}
+
+TEST(Renderer, AdaptiveRender_EstimatedErrorIsNoLowerThanTheErrorMeasured) {
+    const Scene scene = smallSeed(1, Precision::Float);
+    Scene converged = scene;
+    converged.render.samplesPerPixel = 1024;
+    converged.render.precision = Precision::Double;
+    const Image reference = render(converged, options(2, 32, false)).image;
+    for (const double allowed : {20.0, 2.0, 0.5}) {
+        const RenderResult r = render(scene, adaptiveOptions(2, false, allowed, 1024));
+        const ErrorStats e = measureError(r.image, reference);
+        EXPECT_LE(e.rmseSrgb8 * e.rmseSrgb8, allowed) << "allowed " << allowed;
+        EXPECT_LE(r.adaptive->estimatedMse, allowed) << "allowed " << allowed;
+    }
+}
+
+TEST(Renderer, AdaptiveRender_RefusesARegion) {
+    RenderOptions o = adaptiveOptions(1, false, 1.0, 8);
+    o.region = PixelRect{0, 0, 8, 8};
+    EXPECT_THROW(render(smallSeed(1, Precision::Float), o), std::invalid_argument);
 }
 
 TEST(Renderer, InvalidScene_ThrowsInvalidArgument) {

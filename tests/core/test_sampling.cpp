@@ -114,6 +114,46 @@ INSTANTIATE_TEST_SUITE_P(Counts, SamplingSquareCount, ::testing::Values(4, 16, 6
                              return std::string("N").append(std::to_string(info.param));
                          });
 
+// The open-ended sequence of adaptive renders: its first 2^k samples put one
+// sample in every cell of every grid of 2^a x 2^b cells with a + b = k, for
+// every k, so a tile that stops at any power of two is evenly covered.
+TEST(Sampling, ProgressiveSample_EveryPowerOfTwoPrefixIsStratifiedInEveryGrid) {
+    for (const std::uint32_t seed : seedsToTry()) {
+        SCOPED_TRACE("pixel seed " + std::to_string(seed));
+        for (int k = 0; k <= 8; ++k) {
+            const int n = 1 << k;
+            for (int a = 0; a <= k; ++a) {
+                const int columns = 1 << a, rows = 1 << (k - a);
+                std::vector<int> cells(n, 0);
+                for (int s = 0; s < n; ++s) {
+                    const SubPixel p = progressiveSample(s, seed);
+                    ASSERT_GE(p.u, 0.0);
+                    ASSERT_LT(p.u, 1.0);
+                    ASSERT_GE(p.v, 0.0);
+                    ASSERT_LT(p.v, 1.0);
+                    ++cells[int(p.v * rows) * columns + int(p.u * columns)];
+                }
+                for (int c = 0; c < n; ++c)
+                    ASSERT_EQ(cells[c], 1)
+                        << n << " samples, " << columns << "x" << rows << " grid, cell " << c;
+            }
+        }
+    }
+}
+
+TEST(Sampling, ProgressiveSample_IsAPureFunctionAndDiffersBetweenPixels) {
+    std::set<std::pair<double, double>> firstSamples;
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) {
+            const SubPixel p = progressiveSample(0, pixelSeed(i, j));
+            const SubPixel again = progressiveSample(0, pixelSeed(i, j));
+            EXPECT_EQ(p.u, again.u);
+            EXPECT_EQ(p.v, again.v);
+            firstSamples.insert({p.u, p.v});
+        }
+    EXPECT_GE(firstSamples.size(), 12u);
+}
+
 TEST(Sampling, PixelSeed_IsDeterministicAndDistinguishesNeighbours) {
     EXPECT_EQ(pixelSeed(12, 34), pixelSeed(12, 34));
     std::set<std::uint32_t> seeds;

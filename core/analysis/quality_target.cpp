@@ -1,0 +1,224 @@
+#include "analysis/quality_target.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "analysis/tradeoff.h"
+#include "image/image_error.h"
+#include "tracer/renderer.h"
+
+namespace whitted {
+
+namespace {
+
+// A pixel's estimated error is one draw from the same spread as its error,
+// so the largest estimate of a tile is about as large as its largest error;
+// each halving of the margin costs about four times the samples.
+constexpr double kLargestMargin = 1.0;
+// The probe's longest side: enough pixels to see what deeper rays add (a
+// mirror's reflection of a glass ball), few enough to cost a few one-sample
+// renders of a small picture.
+constexpr int kProbeSide = 320;
+constexpr int kSmallestProbeSide = 40;
+// How much deeper the render a depth is measured against goes.
+constexpr int kLookAhead = 3;
+// The deepest depth a plan chooses. In a field of glass balls light trapped
+// in the balls changes some pixels by 60 codes and more until depth 20 and
+// beyond, and each level costs more than the last (a 1-sample render of
+// scenes/field.json: 0.1 s at depth 8, 0.7 s at 17, 6.9 s at 25).
+constexpr int kDeepestPlanned = 16;
+
+std::string format(const char* pattern, double a, double b = 0, double c = 0, double d = 0) {
+    char text[256];
+    std::snprintf(text, sizeof text, pattern, a, b, c, d);
+    return text;
+}
+
+// The scene at the probe's size, one sample at each pixel's centre. The
+// stricter the target, the smaller the error of the depth it must see, and
+// the more samples the render will take anyway: an eighth of the picture's
+// width and height below 30 dB (a search over a few depths then costs about
+// a tenth of one sample a pixel), a quarter below 45 dB, half above; between
+// kSmallestProbeSide and kProbeSide pixels along its longest side.
+Scene probeScene(const Scene& scene, double psnrDb) {
+    const int longest = std::max(scene.render.width, scene.render.height);
+    const double share = psnrDb < 30.0 ? 0.125 : psnrDb < 45.0 ? 0.25 : 0.5;
+    const double side = std::clamp(longest * share, double(kSmallestProbeSide), double(kProbeSide));
+    TradeoffSettings s;
+    s.samplesPerPixel = 1;
+    s.maxDepth = scene.render.maxDepth;
+    s.precision = scene.render.precision;
+    s.resolutionScale = std::min(1.0, side / longest);
+    return withSettings(scene, s);
+}
+
+RenderResult probeAt(Scene probe, int depth) {
+    probe.render.maxDepth = depth;
+    RenderOptions options;
+    options.progressive = false;
+    return render(probe, options);
+}
+
+struct DepthError {
+    double mse = 0.0, largest = 0.0;
+};
+
+DepthError depthError(const Image& image, const Image& reference) {
+    const ErrorStats e = measureError(image, reference);
+    return {e.rmseSrgb8 * e.rmseSrgb8, e.largest};
+}
+
+bool depthFits(const DepthError& e, const QualityTarget& t) {
+    if (e.mse > kDepthShareOfMse * allowedMse(t.psnrDb)) return false;
+    return !t.largestCodes || e.largest <= kDepthShareOfLargest * *t.largestCodes;
+}
+
+// Chooses (or, when given, measures) the depth, filling the plan's depth
+// fields: the smallest depth whose probe differs from the probe kLookAhead
+// levels deeper by less than the depth's share of the target. Each level
+// deeper passes on at most the scene's kr + kt of the last, so what lies past
+// the look-ahead is smaller still, unless rays bounce without losing weight
+// (depthWithinTolerance() follows those much further, but at a cost of
+// minutes on a field of glass balls, too much for planning a render).
+void planDepth(const Scene& scene, std::optional<int> given, QualityPlan& plan) {
+    const Scene probe = probeScene(scene, plan.target.psnrDb);
+    plan.probeWidth = probe.render.width;
+    plan.probeHeight = probe.render.height;
+    std::vector<Image> probes;  // probes[d]: at depth d
+    auto at = [&](int depth) -> const Image& {
+        while (int(probes.size()) <= depth) {
+            RenderResult r = probeAt(probe, int(probes.size()));
+            plan.probeRays += r.rays.total();
+            probes.push_back(std::move(r.image));
+        }
+        return probes[depth];
+    };
+    auto measure = [&](int depth) {
+        plan.maxDepth = depth;
+        plan.referenceDepth = std::min(kMaxDepth, depth + kLookAhead);
+        const DepthError e = depthError(at(depth), at(plan.referenceDepth));
+        plan.depthMse = e.mse;
+        plan.depthLargest = e.largest;
+        return e;
+    };
+    if (given) {
+        plan.depthGiven = true;
+        measure(*given);
+        return;
+    }
+    // Failing both shares up to kDeepestPlanned: the first depth within the
+    // MSE share whose largest error is within the whole limit, else the first
+    // within the MSE share, else the deepest; the plan then says what is short.
+    std::optional<int> withinLimit, withinMse;
+    const double mseShare = kDepthShareOfMse * allowedMse(plan.target.psnrDb);
+    for (int depth = 0; depth <= kDeepestPlanned; ++depth) {
+        const DepthError e = measure(depth);
+        if (depthFits(e, plan.target)) return;
+        if (e.mse > mseShare) continue;
+        if (!withinMse) withinMse = depth;
+        if (!withinLimit && (!plan.target.largestCodes || e.largest <= *plan.target.largestCodes))
+            withinLimit = depth;
+    }
+    plan.depthShort = true;
+    measure(withinLimit.value_or(withinMse.value_or(kDeepestPlanned)));
+}
+
+// What float arithmetic changes against double at the chosen depth, in the
+// same probe: the reference a user compares with is converged, in double.
+void planPrecision(const Scene& scene, QualityPlan& plan) {
+    if (scene.render.precision == Precision::Double) return;
+    Scene probe = probeScene(scene, plan.target.psnrDb);
+    const RenderResult inFloat = probeAt(probe, plan.maxDepth);
+    probe.render.precision = Precision::Double;
+    const RenderResult inDouble = probeAt(probe, plan.maxDepth);
+    plan.probeRays += inFloat.rays.total() + inDouble.rays.total();
+    const DepthError e = depthError(inFloat.image, inDouble.image);
+    plan.precisionMse = e.mse;
+}
+
+std::string depthWhy(const QualityPlan& p) {
+    std::string why = "depth " + std::to_string(p.maxDepth) + (p.depthGiven ? " (given)" : "");
+    why += format(": against depth %.0f, a %.0fx%.0f probe changes by %.3g codes^2 on average",
+                  p.referenceDepth, p.probeWidth, p.probeHeight, p.depthMse);
+    why += format(" (the target allows %.3g)", allowedMse(p.target.psnrDb));
+    if (p.target.largestCodes)
+        why +=
+            format(" and %.3g codes at most (limit %.3g)", p.depthLargest, *p.target.largestCodes);
+    if (p.depthShort)
+        why += "\nno depth up to " + std::to_string(kDeepestPlanned) +
+               " leaves the samples their share: rays trapped in glass or between mirrors "
+               "still change the picture, so the target may be missed";
+    return why;
+}
+
+std::string samplingWhy(const QualityPlan& p) {
+    std::string why =
+        format("samples: each tile until the picture's estimated error is under %.3g codes^2",
+               p.sampling.allowedMse);
+    if (p.target.largestCodes)
+        why += format(" and no pixel's estimate over %.3g codes", p.sampling.allowedLargest);
+    return why + ", at most " + std::to_string(p.sampling.maxSamples) + " a pixel";
+}
+
+}  // namespace
+
+QualityTarget draftQuality() {
+    return {"Draft", 20.0, std::nullopt};
+}
+QualityTarget previewQuality() {
+    return {"Preview", 35.0, 64.0};
+}
+QualityTarget finalQuality() {
+    return {"Final", 50.0, 16.0};
+}
+
+std::optional<QualityTarget> qualityPreset(std::string_view name) {
+    std::string lower(name);
+    for (char& c : lower) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (lower == "draft") return draftQuality();
+    if (lower == "preview") return previewQuality();
+    if (lower == "final") return finalQuality();
+    return std::nullopt;
+}
+
+std::string describeTarget(const QualityTarget& t) {
+    std::string text =
+        (t.name.empty() ? std::string() : t.name + ": ") + format("%.3g dB", t.psnrDb);
+    if (t.largestCodes) text += format(", no pixel off by more than %.3g codes", *t.largestCodes);
+    return text;
+}
+
+double allowedMse(double psnrDb) {
+    return 255.0 * 255.0 / std::pow(10.0, psnrDb / 10.0);
+}
+
+QualityPlan planQuality(const Scene& scene, const QualityTarget& target, int maxSamples,
+                        std::optional<int> depth) {
+    QualityPlan plan;
+    plan.target = target;
+    planDepth(scene, depth, plan);
+    planPrecision(scene, plan);
+    const double total = allowedMse(target.psnrDb);
+    const double bias = plan.depthMse + plan.precisionMse;
+    // A given depth may cut off more than the whole budget: the samples still
+    // get a share, and the note says the target cannot be met.
+    plan.sampling.allowedMse = kSamplingShare * std::max(total - bias, kDepthShareOfMse * total);
+    // The largest errors of the depth and of the sampling are seldom in the
+    // same pixel (light trapped in glass; edges), so each gets the whole limit.
+    if (target.largestCodes) plan.sampling.allowedLargest = kLargestMargin * *target.largestCodes;
+    plan.sampling.maxSamples = std::max(1, maxSamples);
+    plan.why = depthWhy(plan) + "\n";
+    if (scene.render.precision == Precision::Float)
+        plan.why +=
+            format("float against double: %.3g codes^2 in the same probe\n", plan.precisionMse);
+    plan.why += samplingWhy(plan);
+    if (plan.depthMse > total)
+        plan.why +=
+            "\nthe given depth alone cuts off more than the target allows: it cannot be met";
+    return plan;
+}
+
+}  // namespace whitted

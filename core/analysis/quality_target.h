@@ -1,0 +1,74 @@
+// Rendering to a quality instead of to settings (issue 15). A target names
+// what the user will see against a converged render: a PSNR of the 8-bit
+// picture and, optionally, the largest error of any pixel in 8-bit codes.
+// planQuality() resolves it for one scene into a max_depth and the limits of
+// an adaptive render (tracer/adaptive_sampling.h), and says why.
+//
+// The budget. The target's mean squared error M = 255^2 / 10^(PSNR / 10) is
+// shared between what the depth cuts off (bias the samples cannot remove) and
+// the sampling. The depth is the smallest whose picture, in a small probe
+// render of pixel centres, differs from one three levels deeper by at most a
+// tenth of M and a quarter of the largest error; the sampling gets what is
+// left with a margin (kSamplingShare of it; docs/tradeoff.md measures how
+// often that is enough). Both errors are measured, not bounded: the estimate
+// of what the depth cuts off comes from the probe, that of the sampling from
+// the render's own samples.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "scene/scene.h"
+#include "tracer/adaptive_sampling.h"
+
+namespace whitted {
+
+struct QualityTarget {
+    std::string name;  // "Draft", "Preview", "Final", or empty for a stated target
+    double psnrDb = 35.0;
+    std::optional<double> largestCodes;  // no pixel off by more than this many codes
+};
+
+// The editor's and whitted-render's presets: Draft 20 dB; Preview 35 dB and
+// no pixel off by more than 64 codes; Final 50 dB and 16 codes.
+QualityTarget draftQuality();
+QualityTarget previewQuality();
+QualityTarget finalQuality();
+// A preset by name, any case ("draft", "Final"); nullopt for any other name.
+std::optional<QualityTarget> qualityPreset(std::string_view name);
+
+// "Final: 50 dB, no pixel off by more than 16 codes"
+std::string describeTarget(const QualityTarget& target);
+
+// The mean squared error, in 8-bit codes squared, that a PSNR allows.
+double allowedMse(double psnrDb);
+
+inline constexpr double kDepthShareOfMse = 0.1;
+inline constexpr double kDepthShareOfLargest = 0.25;
+inline constexpr double kSamplingShare = 0.8;
+inline constexpr int kDefaultMaxSamples = 1024;
+
+struct QualityPlan {
+    QualityTarget target;
+    int maxDepth = 0;
+    bool depthGiven = false;    // the caller fixed the depth; it was measured, not chosen
+    bool depthShort = false;    // no depth the plan would go to cuts off little enough
+    int referenceDepth = 0;     // the deep render the depths were measured against
+    double depthMse = 0.0;      // the chosen depth's error against it, codes^2, in the probe
+    double depthLargest = 0.0;  // codes
+    double precisionMse = 0.0;  // float against double at that depth, codes^2, in the probe
+    int probeWidth = 0, probeHeight = 0;
+    std::uint64_t probeRays = 0;  // traced to choose the depth: part of the render's cost
+    AdaptiveSampling sampling;
+    std::string why;  // the choices in a user's words, one line each
+};
+
+// The plan for rendering `scene` (its size and precision) to `target`, with
+// at most maxSamples a pixel; `depth` fixes the depth instead of choosing it.
+QualityPlan planQuality(const Scene& scene, const QualityTarget& target,
+                        int maxSamples = kDefaultMaxSamples,
+                        std::optional<int> depth = std::nullopt);
+
+}  // namespace whitted

@@ -1,0 +1,101 @@
+// Rendering to an error instead of a sample count (RenderOptions::adaptive):
+// how a tile's error is estimated from its own samples, and which tiles get
+// more samples next. The renderer (renderer.cpp) runs the passes; the
+// targets a user states become these limits in analysis/quality_target.h.
+//
+// The estimate. The mean A of a pixel's first n/2 samples and the mean B of
+// the other n/2 are two independent estimates of the pixel, each with twice
+// the variance of their mean F = (A + B) / 2, so (A - F)^2 = (A - B)^2 / 4
+// estimates F's squared error. It is taken in sRGB codes, where the user sees
+// it, from the picture as it was after the tile's last pass (A) and after this
+// one (F): nothing more is stored. Stratified samples (progressiveSample())
+// make the halves' difference, if anything, larger than F's error.
+// A tile's first pass has one sample: then every fourth pixel of every fourth
+// row also traces a second, and the pair (x1, x2) gives (x1 - x2)^2 / 2.
+//
+// Rounding to 8-bit codes adds to the error: a value off by e < 1 code rounds
+// to a different code with probability |e|, so a pixel's squared 8-bit error
+// is about |e| there and e^2 above (codeSquaredError()).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "image/srgb.h"
+
+namespace whitted {
+
+struct AdaptiveSampling {
+    // The 8-bit picture's mean squared error from sampling, in codes^2, that
+    // the render stops under; and the largest error of a pixel's channel, in
+    // codes (as displayDifference() counts them).
+    double allowedMse = 0.0;
+    double allowedLargest = 255.0;
+    int maxSamples = 1024;  // a pixel's cap
+};
+
+// Per tile, after the render.
+struct AdaptiveOutcome {
+    double meanSamples = 0.0;  // per pixel over the picture
+    int fewestSamples = 0, mostSamples = 0;
+    double estimatedMse = 0.0;      // codes^2, from sampling, as the render stopped
+    double estimatedLargest = 0.0;  // codes
+    int tiles = 0;
+    int tilesAtCap = 0;  // stopped by maxSamples with their error still above a limit
+    int passes = 0;      // full-size passes over some tiles
+};
+
+// The expected squared error of an 8-bit code whose exact value is off by e codes.
+inline double codeSquaredError(double e) {
+    const double a = std::fabs(e);
+    return a < 1.0 ? a : a * a;
+}
+
+inline double srgbCode(float linear) {
+    return 255.0 * double(srgbEncode(linear));
+}
+
+// A tile's error estimate, summed over its pixels' channels.
+struct TileErrorEstimate {
+    double squaredSum = 0.0;  // codeSquaredError() of each channel's estimate
+    double largest = 0.0;     // codes
+    long values = 0;          // channels estimated
+
+    // A channel whose picture value went from `before` (n/2 samples) to `after` (n).
+    void addHalves(float before, float after) { add(srgbCode(before) - srgbCode(after)); }
+    // A channel of a pixel with two single samples.
+    void addPair(float first, float second) {
+        add((srgbCode(first) - srgbCode(second)) / std::sqrt(2.0));
+    }
+    void add(double e) {
+        squaredSum += codeSquaredError(e);
+        largest = std::max(largest, std::fabs(e));
+        ++values;
+    }
+    double mse() const { return values ? squaredSum / double(values) : 0.0; }
+};
+
+// What the renderer knows of a tile between passes.
+struct TileSamplingState {
+    int samples = 0;  // per pixel so far
+    int pixels = 0;
+    TileErrorEstimate estimate;  // of its last pass
+};
+
+// The picture's estimated mean squared error: its tiles' estimates weighted by pixels.
+double estimatedPictureMse(const std::vector<TileSamplingState>& tiles);
+
+// The tiles whose samples the next pass doubles, in index order: every tile
+// whose largest error is over the limit, then the tiles that cut the most
+// error per sample (a doubling roughly halves a tile's squared error) until
+// the picture's estimate would be under the limit. Tiles at maxSamples are
+// never chosen. Empty: the render is done.
+std::vector<int> tilesToRefine(const std::vector<TileSamplingState>& tiles,
+                               const AdaptiveSampling& limits);
+
+// The outcome of the finished tiles.
+AdaptiveOutcome adaptiveOutcome(const std::vector<TileSamplingState>& tiles,
+                                const AdaptiveSampling& limits, int passes);
+
+}  // namespace whitted

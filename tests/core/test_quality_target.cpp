@@ -15,16 +15,11 @@
 
 #include <gtest/gtest.h>
 
-#include "analysis/quality_target.h"
-#include "image/image_error.h"
+#include "analysis/quality_check.h"
 #include "sphere_field.h"
-#include "tracer/renderer.h"
 
 namespace whitted {
 namespace {
-
-constexpr int kReferenceSamples = 512;
-constexpr int kReferenceDepth = 14;
 
 // Dense fields in front of the camera, 128x96: a few to a few hundred balls,
 // a fifth of them glass and a fifth mirrors.
@@ -44,77 +39,27 @@ std::vector<Scene> generatedScenes() {
     return scenes;
 }
 
-Image referenceOf(Scene scene) {
-    scene.render.precision = Precision::Double;
-    scene.render.samplesPerPixel = kReferenceSamples;
-    scene.render.maxDepth = kReferenceDepth;
-    RenderOptions options;
-    options.progressive = false;
-    return render(scene, options).image;
-}
-
-bool meets(const ErrorStats& e, const QualityTarget& t) {
-    return e.psnrSrgb8 >= t.psnrDb && (!t.largestCodes || e.largest <= *t.largestCodes);
-}
-
-struct Outcome {
-    ErrorStats error;
-    std::uint64_t rays = 0;
-    QualityPlan plan;
-    double estimatedPsnr = 0.0;
-};
-
-Outcome renderTo(const Scene& scene, const QualityTarget& target, const Image& reference) {
-    Outcome o;
-    o.plan = planQuality(scene, target);
-    Scene s = scene;
-    s.render.maxDepth = o.plan.maxDepth;
-    RenderOptions options;
-    options.adaptive = o.plan.sampling;
-    const RenderResult r = render(s, options);
-    o.error = measureError(r.image, reference);
-    o.rays = r.rays.total() + o.plan.probeRays;
-    o.estimatedPsnr =
-        10.0 * std::log10(255.0 * 255.0 /
-                          (o.plan.depthMse + o.plan.precisionMse + r.adaptive->estimatedMse));
-    return o;
-}
-
-// The rays of the fewest fixed samples a pixel (a power of two) meeting the
-// target at `depth`; 0 when even 256 do not.
-std::uint64_t fixedRaysMeeting(Scene scene, const QualityTarget& target, int depth,
-                               const Image& reference) {
-    scene.render.maxDepth = depth;
-    for (int spp = 1; spp <= 256; spp *= 2) {
-        scene.render.samplesPerPixel = spp;
-        RenderOptions options;
-        options.progressive = false;
-        const RenderResult r = render(scene, options);
-        if (meets(measureError(r.image, reference), target)) return r.rays.total();
-    }
-    return 0;
-}
-
 TEST(QualityTarget, PresetsMeetTheirTargetsOnScenesTheyWereNotFittedOn) {
     const std::vector<QualityTarget> targets = {draftQuality(), previewQuality(), finalQuality()};
     int renders = 0, met = 0, cheaper = 0, compared = 0;
     for (const Scene& scene : generatedScenes()) {
-        const Image reference = referenceOf(scene);
+        const Image reference = convergedReference(scene);
         for (const QualityTarget& target : targets) {
-            const Outcome o = renderTo(scene, target, reference);
-            const std::uint64_t fixed = fixedRaysMeeting(scene, target, o.plan.maxDepth, reference);
+            const QualityCheck c = checkQuality(scene, target, reference);
+            const FixedCheck fixed =
+                fewestFixedSamplesMeeting(scene, target, c.plan.maxDepth, reference);
             ++renders;
-            met += meets(o.error, target);
-            if (fixed > 0 && target.name == "Final") {
+            met += c.met;
+            if (fixed.samples > 0 && target.name == "Final") {
                 ++compared;
-                cheaper += o.rays <= fixed;
+                cheaper += c.rays <= fixed.rays;
             }
             std::printf(
                 "%zu balls, %-8s depth %2d: %5.1f dB (estimated %5.1f), largest %5.1f "
-                "codes, %s; rays %.2fM against %.2fM fixed\n",
-                scene.spheres.size() - 1, target.name.c_str(), o.plan.maxDepth, o.error.psnrSrgb8,
-                o.estimatedPsnr, o.error.largest, meets(o.error, target) ? "met" : "MISSED",
-                o.rays / 1e6, fixed / 1e6);
+                "codes, %s; rays %.2fM against %.2fM at %d fixed samples\n",
+                scene.spheres.size() - 1, target.name.c_str(), c.plan.maxDepth, c.error.psnrSrgb8,
+                c.estimatedPsnr, c.error.largest, c.met ? "met" : "MISSED", c.rays / 1e6,
+                fixed.rays / 1e6, fixed.samples);
         }
     }
     EXPECT_GE(met, std::ceil(0.95 * renders)) << met << " of " << renders << " met their target";

@@ -1,0 +1,49 @@
+// Checking a quality target against a converged render (issue 15): what the
+// tests on generated scenes assert and what bench_quality prints for
+// docs/tradeoff.md, in one place.
+#pragma once
+
+#include <cstdint>
+
+#include "analysis/quality_target.h"
+#include "image/image.h"
+#include "image/image_error.h"
+#include "scene/scene.h"
+
+namespace whitted {
+
+// The scene in double with `samples` samples a pixel (subPixelSample()'s
+// pattern) at `depth`: what "converged" means in these checks.
+Image convergedReference(Scene scene, int samples = 512, int depth = 14);
+
+bool meetsTarget(const ErrorStats& error, const QualityTarget& target);
+
+struct QualityCheck {
+    QualityPlan plan;
+    ErrorStats error;  // against the reference
+    bool met = false;
+    std::uint64_t rays = 0;  // the render's and the plan's probes'
+    double seconds = 0.0;    // the same: planning and rendering
+    double meanSamples = 0.0;
+    double estimatedPsnr = 0.0;  // what the plan and the render expected
+};
+
+// Plans `scene` for `target`, renders it adaptively and measures it.
+QualityCheck checkQuality(const Scene& scene, const QualityTarget& target, const Image& reference);
+
+struct FixedCheck {
+    int samples = 0;  // 0: none up to the largest tried met the target
+    std::uint64_t rays = 0;
+    double seconds = 0.0;
+    ErrorStats error;
+};
+
+// A fixed render of the scene's own settings, measured.
+FixedCheck checkFixed(const Scene& scene, const Image& reference);
+
+// The fewest samples a pixel, a power of two up to maxSamples, meeting the
+// target at `depth` with the scene's own pattern and precision.
+FixedCheck fewestFixedSamplesMeeting(Scene scene, const QualityTarget& target, int depth,
+                                     const Image& reference, int maxSamples = 256);
+
+}  // namespace whitted

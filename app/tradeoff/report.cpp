@@ -162,6 +162,11 @@ void introduction(std::ostream& md, const std::vector<SceneSummary>& scenes,
 
 void presetTable(std::ostream& md, const std::vector<PresetChoice>& presets) {
     md << "## Presets\n\n";
+    md << "These fixed settings are fitted on the scenes below and can miss their targets on "
+          "others. `whitted-render --quality draft|preview|final` renders to the target "
+          "instead, choosing the depth and the samples for the scene at hand: "
+          "[quality.md](quality.md) explains how, and measures both ways on every shipped "
+          "scene and on generated ones.\n\n";
     md << "The rule: for each preset, of the full-size settings (samples per pixel, max depth, "
           "precision) measured on every scene, the cheapest that meets the preset's targets on "
           "every scene: an 8-bit PSNR at least the target, and no pixel further from the "

@@ -29,6 +29,7 @@
 #include "image/image_io.h"
 #include "image/image_parts.h"
 #include "render_flags.h"
+#include "render_quality.h"
 #include "scene/scene_io.h"
 #include "tracer/kernel_dispatch.h"
 #include "tracer/renderer.h"
@@ -107,33 +108,6 @@ class ProgressBar {
     const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-// What a render to a quality chose and reached, for --stats.
-nlohmann::ordered_json qualityJson(const QualityPlan& plan, const AdaptiveOutcome& outcome) {
-    nlohmann::ordered_json q;
-    q["target"] = plan.target.name.empty() ? "custom" : plan.target.name;
-    q["target_psnr_db"] = plan.target.psnrDb;
-    q["target_max_error_codes"] =
-        plan.target.largestCodes ? nlohmann::ordered_json(*plan.target.largestCodes) : nullptr;
-    q["depth_chosen"] = !plan.depthGiven;
-    q["reference_depth"] = plan.referenceDepth;
-    q["depth_mse_codes2"] = plan.depthMse;
-    q["depth_max_error_codes"] = plan.depthLargest;
-    q["precision_mse_codes2"] = plan.precisionMse;
-    q["sampling_mse_limit_codes2"] = plan.sampling.allowedMse;
-    q["sampling_max_error_limit_codes"] = plan.sampling.allowedLargest;
-    q["max_samples_per_pixel"] = plan.sampling.maxSamples;
-    q["samples_per_pixel_mean"] = outcome.meanSamples;
-    q["samples_per_pixel_fewest"] = outcome.fewestSamples;
-    q["samples_per_pixel_most"] = outcome.mostSamples;
-    const double mse = plan.depthMse + plan.precisionMse + outcome.estimatedMse;
-    q["estimated_psnr_db"] = mse > 0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : 999.0;
-    q["estimated_max_error_codes"] = std::max(plan.depthLargest, outcome.estimatedLargest);
-    q["tiles"] = outcome.tiles;
-    q["tiles_at_sample_limit"] = outcome.tilesAtCap;
-    q["why"] = plan.why;
-    return q;
-}
-
 std::string statsJson(const RenderSettings& r, const RenderResult& result,
                       const std::optional<QualityPlan>& plan) {
     const RayCounts& rays = result.rays;
@@ -206,29 +180,6 @@ std::optional<QualityTarget> targetOf(const Options& o) {
     if (!o.quality.empty()) return qualityPreset(o.quality);
     if (o.targetPsnr) return QualityTarget{"", *o.targetPsnr, o.maxError};
     return std::nullopt;
-}
-
-// What the plan chose and why, then what the render reached.
-void sayQualityPlan(const QualityPlan& plan) {
-    std::fprintf(stderr, "quality %s\n", describeTarget(plan.target).c_str());
-    std::istringstream lines(plan.why);
-    for (std::string line; std::getline(lines, line);) std::fprintf(stderr, "  %s\n", line.c_str());
-}
-
-void sayQualityReached(const QualityPlan& plan, const AdaptiveOutcome& a) {
-    const double mse = plan.depthMse + plan.precisionMse + a.estimatedMse;
-    std::fprintf(stderr, "  reached: %d to %d samples a pixel (%.1f on average), estimated %.1f dB",
-                 a.fewestSamples, a.mostSamples, a.meanSamples,
-                 mse > 0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : 999.0);
-    if (plan.target.largestCodes)
-        std::fprintf(stderr, ", largest error about %.1f codes",
-                     std::max(plan.depthLargest, a.estimatedLargest));
-    std::fprintf(stderr, "\n");
-    if (a.tilesAtCap > 0)
-        std::fprintf(stderr,
-                     "  %d of %d tiles stopped at %d samples a pixel before reaching the target "
-                     "(raise --spp)\n",
-                     a.tilesAtCap, a.tiles, plan.sampling.maxSamples);
 }
 
 // One image: the scene as given, rendered (only its region, if any) and

@@ -1,7 +1,6 @@
 #include "analysis/quality_check.h"
 
 #include <chrono>
-#include <cmath>
 
 #include "tracer/renderer.h"
 
@@ -46,8 +45,7 @@ QualityCheck checkQuality(const Scene& scene, const QualityTarget& target, const
     c.met = meetsTarget(c.error, target);
     c.rays = r.rays.total() + c.plan.probeRays;
     c.meanSamples = r.adaptive->meanSamples;
-    const double mse = c.plan.depthMse + c.plan.precisionMse + r.adaptive->estimatedMse;
-    c.estimatedPsnr = 10.0 * std::log10(255.0 * 255.0 / mse);
+    c.estimatedPsnr = estimatedPsnr(c.plan, *r.adaptive);
     return c;
 }
 

@@ -17,7 +17,7 @@ namespace {
 // A pixel's estimated error is one draw from the same spread as its error,
 // so the largest estimate of a tile is about as large as its largest error;
 // each halving of the margin costs about four times the samples.
-constexpr double kLargestMargin = 1.0;
+constexpr double kLargestMargin = 0.8;
 // The probe's longest side: enough pixels to see what deeper rays add (a
 // mirror's reflection of a glass ball), few enough to cost a few one-sample
 // renders of a small picture.
@@ -193,6 +193,11 @@ std::string describeTarget(const QualityTarget& t) {
 
 double allowedMse(double psnrDb) {
     return 255.0 * 255.0 / std::pow(10.0, psnrDb / 10.0);
+}
+
+double estimatedPsnr(const QualityPlan& plan, const AdaptiveOutcome& outcome) {
+    const double mse = plan.depthMse + plan.precisionMse + outcome.estimatedMse;
+    return mse > 0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : 999.0;
 }
 
 QualityPlan planQuality(const Scene& scene, const QualityTarget& target, int maxSamples,

@@ -65,6 +65,10 @@ struct QualityPlan {
     std::string why;  // the choices in a user's words, one line each
 };
 
+// The PSNR that the plan's measured biases and the render's estimate add up
+// to; 999 when there is no error at all.
+double estimatedPsnr(const QualityPlan& plan, const AdaptiveOutcome& outcome);
+
 // The plan for rendering `scene` (its size and precision) to `target`, with
 // at most maxSamples a pixel; `depth` fixes the depth instead of choosing it.
 QualityPlan planQuality(const Scene& scene, const QualityTarget& target,

@@ -151,7 +151,7 @@ class TileRenderer {
             image_ = Image(s_.width, s_.height);
     }
 
-    // The preview, one sample everywhere, then passes that double the
+    // The preview, two samples everywhere, then passes that double the
     // samples of the tiles tilesToRefine() picks, until it picks none.
     RenderResult runAdaptive() {
         const AdaptiveSampling& limits = *options_.adaptive;

@@ -102,7 +102,7 @@ struct RenderResult {
     // finished, and zero elsewhere (the preview is only in the tile reports).
     // In an adaptive render: the fewest samples any tile got.
     int samples = 0;
-    bool completed = false;  // false when stopped early
+    bool completed = false;                   // false when stopped early
     std::optional<AdaptiveOutcome> adaptive;  // set by adaptive renders
 };
 

@@ -4,7 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <vector>
+#include <map>
 
 #include "analysis/tradeoff.h"
 #include "image/image_error.h"
@@ -87,14 +87,13 @@ void planDepth(const Scene& scene, std::optional<int> given, QualityPlan& plan) 
     const Scene probe = probeScene(scene, plan.target.psnrDb);
     plan.probeWidth = probe.render.width;
     plan.probeHeight = probe.render.height;
-    std::vector<Image> probes;  // probes[d]: at depth d
+    std::map<int, Image> probes;  // by depth; a map, so references stay valid
     auto at = [&](int depth) -> const Image& {
-        while (int(probes.size()) <= depth) {
-            RenderResult r = probeAt(probe, int(probes.size()));
-            plan.probeRays += r.rays.total();
-            probes.push_back(std::move(r.image));
-        }
-        return probes[depth];
+        auto found = probes.find(depth);
+        if (found != probes.end()) return found->second;
+        RenderResult r = probeAt(probe, depth);
+        plan.probeRays += r.rays.total();
+        return probes.emplace(depth, std::move(r.image)).first->second;
     };
     auto measure = [&](int depth) {
         plan.maxDepth = depth;

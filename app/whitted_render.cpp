@@ -5,7 +5,6 @@
 // On failure no output file is left behind (frames already finished stay).
 #include <atomic>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -188,9 +187,8 @@ int renderFrame(const Scene& scene, const Options& o, const std::optional<PixelR
                 int frame, const std::optional<QualityPlan>& plan) {
     const fs::path output = frameFile(o.output, frame);
     ProgressBar bar(!o.quiet);
-    RenderOptions options;
+    RenderOptions options = oneShotOptions();
     options.threads = o.threads;
-    options.progressive = false;  // nobody watches the preview here
     options.region = region;
     if (plan) options.adaptive = plan->sampling;
     const RenderResult result =

@@ -36,8 +36,7 @@ void setRate(benchmark::State& state, double rays) {
 
 void ours(benchmark::State& state, Precision precision) {
     const whitted::Scene scene = seedScene(precision);
-    whitted::RenderOptions options;
-    options.progressive = false;
+    whitted::RenderOptions options = whitted::oneShotOptions();
     options.threads = static_cast<int>(state.range(0));
     double rays = 0;
     for (auto _ : state) {

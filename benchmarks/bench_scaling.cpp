@@ -104,9 +104,8 @@ struct Run {
 Run renderWith(Scene scene, Acceleration choice, Precision precision, BvhCache* kept = nullptr) {
     scene.render.precision = precision;
     useAcceleration(choice);
-    RenderOptions options;
+    RenderOptions options = oneShotOptions();
     options.threads = kThreads;
-    options.progressive = false;
     options.bvhCache = kept;
     RenderResult result = render(scene, options);
     useAcceleration(Acceleration::automatic);

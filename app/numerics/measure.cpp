@@ -13,9 +13,8 @@ namespace whitted::numerics {
 namespace {
 
 RenderResult renderOnce(const Scene& scene, int threads) {
-    RenderOptions options;
+    RenderOptions options = oneShotOptions();  // the time is the image's, not a preview's
     options.threads = threads;
-    options.progressive = false;  // one pass: the time is the image's, not a preview's
     return render(scene, options);
 }
 

@@ -95,8 +95,7 @@ PrecisionComparison compareScenes(const Scene& a, const Scene& b, int width, int
     out.pixels = std::size_t(width) * std::size_t(height);
     const Scene sa = resized(a, width, height), sb = resized(b, width, height);
 
-    RenderOptions options;
-    options.progressive = false;
+    const RenderOptions options = oneShotOptions();
     const RenderResult ra = render(sa, options, {}, stop);
     const RenderResult rb = ra.completed ? render(sb, options, {}, stop) : RenderResult{};
     if (!rb.completed) {

@@ -12,19 +12,13 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-RenderOptions oneShot() {
-    RenderOptions options;
-    options.progressive = false;
-    return options;
-}
-
 }  // namespace
 
 Image convergedReference(Scene scene, int samples, int depth) {
     scene.render.precision = Precision::Double;
     scene.render.samplesPerPixel = samples;
     scene.render.maxDepth = depth;
-    return render(scene, oneShot()).image;
+    return render(scene, oneShotOptions()).image;
 }
 
 bool meetsTarget(const ErrorStats& e, const QualityTarget& t) {
@@ -37,7 +31,7 @@ QualityCheck checkQuality(const Scene& scene, const QualityTarget& target, const
     c.plan = planQuality(scene, target);
     Scene planned = scene;
     planned.render.maxDepth = c.plan.maxDepth;
-    RenderOptions options = oneShot();
+    RenderOptions options = oneShotOptions();
     options.adaptive = c.plan.sampling;
     const RenderResult r = render(planned, options);
     c.seconds = secondsSince(start);
@@ -50,7 +44,7 @@ QualityCheck checkQuality(const Scene& scene, const QualityTarget& target, const
 }
 
 FixedCheck checkFixed(const Scene& scene, const Image& reference) {
-    const RenderResult r = render(scene, oneShot());
+    const RenderResult r = render(scene, oneShotOptions());
     return {scene.render.samplesPerPixel, r.rays.total(), r.seconds,
             measureError(r.image, reference)};
 }

@@ -57,9 +57,7 @@ Scene probeScene(const Scene& scene, double psnrDb) {
 
 RenderResult probeAt(Scene probe, int depth) {
     probe.render.maxDepth = depth;
-    RenderOptions options;
-    options.progressive = false;
-    return render(probe, options);
+    return render(probe, oneShotOptions());
 }
 
 struct DepthError {

@@ -12,12 +12,6 @@ namespace whitted {
 
 namespace {
 
-RenderOptions oneShot() {
-    RenderOptions options;
-    options.progressive = false;
-    return options;
-}
-
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     const std::size_t n = v.size();
@@ -45,7 +39,7 @@ ReferenceRender renderReference(const Scene& scene, int samples, const StopPredi
     ref.scene.render.precision = Precision::Double;
     ref.scene.render.samplesPerPixel = samples;
     ref.scene.render.maxDepth = std::min(kMaxDepth, depthWithinTolerance(scene) + 2);
-    RenderResult result = render(ref.scene, oneShot(), {}, stop);
+    RenderResult result = render(ref.scene, oneShotOptions(), {}, stop);
     ref.image = std::move(result.image);
     ref.seconds = result.seconds;
     return ref;
@@ -73,7 +67,7 @@ std::vector<TradeoffPoint> runTradeoff(const Scene& scene, const Image& referenc
                     RenderResult last;
                     while (int(times.size()) < grid.maxRuns &&
                            (int(times.size()) < grid.minRuns || total < grid.minSeconds)) {
-                        last = render(s, oneShot(), {}, stop);
+                        last = render(s, oneShotOptions(), {}, stop);
                         if (!last.completed || stopped()) {
                             markParetoFront(points);
                             return points;

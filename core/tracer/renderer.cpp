@@ -324,12 +324,16 @@ class TileRenderer {
                     storePixel(image_.pixel(tile.x + i, y), radiance[i]);
         }
         if (!sums_.empty()) std::copy_n(sums.begin(), tile.w, sums_.begin() + at);
+        const bool estimating = estimate && pass.lastSample > 1;
         for (int i = 0; i < tile.w; ++i) {
             float* out = image_.pixel(tile.x + i, y);
-            const float before[3] = {out[0], out[1], out[2]};
+            if (!estimating) {
+                storeMean(out, sums[i], pass.lastSample);
+                continue;
+            }
+            const float firstHalf[3] = {out[0], out[1], out[2]};
             storeMean(out, sums[i], pass.lastSample);
-            if (estimate && pass.lastSample > 1)
-                for (int c = 0; c < 3; ++c) estimate->addHalves(before[c], out[c]);
+            for (int c = 0; c < 3; ++c) estimate->addHalves(firstHalf[c], out[c]);
         }
     }
 

@@ -52,6 +52,14 @@ struct RenderOptions {
     std::optional<AdaptiveSampling> adaptive = std::nullopt;
 };
 
+// For a render nobody watches (a file, a measurement): one pass of all the
+// samples, no preview.
+inline RenderOptions oneShotOptions() {
+    RenderOptions options;
+    options.progressive = false;
+    return options;
+}
+
 enum class PassKind { Preview, Samples };
 
 struct RenderProgress {

@@ -163,8 +163,7 @@ void ExportJob::start() {
 bool ExportJob::exportFrame(int frame, const Camera& camera, double& seconds) {
     const int frames = std::max(1, settings_.turntableFrames);
     if (frame > 0) scene_.camera = turntableCamera(camera, frame, frames);
-    RenderOptions options;
-    options.progressive = false;       // nobody watches: the final image only
+    const RenderOptions options = oneShotOptions();
     std::atomic<int> lastPercent{-1};  // tiles report from several threads
     const RenderResult result = render(
         scene_, options,

@@ -73,7 +73,7 @@ float largestTruncation(const Image& map) {
     return largest;
 }
 
-int depthWithinTolerance(const Scene& scene, double tolerance) {
+int depthWithinTolerance(const Scene& scene, double tolerance, const StopPredicate& stop) {
     Scene s = scene;
     // Every step of the tree multiplies the weight by kr + kt <= 2, so the map
     // can shrink only as fast as the scene's materials allow; walk up until it is
@@ -86,9 +86,11 @@ int depthWithinTolerance(const Scene& scene, double tolerance) {
         s.render.width = std::max(1, s.render.width * 160 / longest);
         s.render.height = std::max(1, s.render.height * 160 / longest);
     }
-    for (int depth = 0; depth < kMaxDepth; ++depth) {
+    for (int depth = 0; depth < kMaxDepth && !(stop && stop()); ++depth) {
         s.render.maxDepth = depth;
-        if (largestTruncation(truncationMap(s, tolerance / 64.0, {})) < tolerance) return depth;
+        const Image map = truncationMap(s, tolerance / 64.0, stop);
+        if (stop && stop()) break;  // the map is incomplete
+        if (largestTruncation(map) < tolerance) return depth;
     }
     return kMaxDepth;
 }

@@ -30,6 +30,9 @@ float largestTruncation(const Image& map);
 // `tolerance` everywhere: past it, raising the depth changes no pixel by more
 // than tolerance times the missing rays' radiance. Scenes whose rays bounce
 // inside glass without losing weight never get there and return kMaxDepth.
-int depthWithinTolerance(const Scene& scene, double tolerance = 1.0 / 1024.0);
+// On a field of thousands of reflective spheres the walk takes many minutes:
+// `stop` ends it (returning kMaxDepth), so that a cancelled Measure ends.
+int depthWithinTolerance(const Scene& scene, double tolerance = 1.0 / 1024.0,
+                         const StopPredicate& stop = {});
 
 }  // namespace whitted

@@ -4,12 +4,14 @@
 // progressive curve.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 
 #include "analysis/depth_truncation.h"
 #include "analysis/tradeoff.h"
 #include "image/image_compare.h"
 #include "image/srgb.h"
+#include "scene/scene_io.h"
 #include "support/core_support.h"
 #include "tracer/renderer.h"
 
@@ -157,6 +159,21 @@ TEST(DepthTruncation, Seed_CutOffShrinksWithDepthBelowToleranceWhereTheSearchSto
     EXPECT_LT(largestTruncation(depthTruncationMap(s)), 1.0 / 1024.0);
     s.render.maxDepth = enough - 1;
     EXPECT_GE(largestTruncation(depthTruncationMap(s)), 1.0 / 1024.0);
+}
+
+TEST(DepthTruncation, CancelledReference_EndsDuringTheDepthSearch) {
+    // scenes/field.json: 2,501 reflective spheres, whose depth search alone
+    // takes many minutes. A user who cancels Measure waits a row of one map.
+    const Scene field = loadScene(WHITTED_SCENES_DIR "/field.json");
+    const auto start = std::chrono::steady_clock::now();
+    const auto cancelledAfterASecond = [&] {
+        return std::chrono::steady_clock::now() - start > std::chrono::seconds(1);
+    };
+    const ReferenceRender ref = renderReference(field, 64, cancelledAfterASecond);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_LT(seconds, 60.0);                         // without the stop: over ten minutes
+    EXPECT_EQ(ref.scene.render.maxDepth, kMaxDepth);  // the search did not finish
 }
 
 TEST(Tradeoff, FloatAndDoubleRows_DifferWithinTheNumericsBound) {

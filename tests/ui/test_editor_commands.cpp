@@ -227,7 +227,7 @@ TEST_F(EditorCommandsTest, ExportSize_LockedToSceneAspect_UnlockedSaysFramingDif
     Scene scene = doc->scene();
     scene.render.width = 640;
     scene.render.height = 480;
-    ExportDialog dialog(scene, QString::fromStdString(dir.path().string()), "out");
+    ExportDialog dialog(scene, std::nullopt, QString::fromStdString(dir.path().string()), "out");
     dialog.show();
     auto* width = dialog.findChild<QSpinBox*>(QStringLiteral("exportWidth"));
     auto* height = dialog.findChild<QSpinBox*>(QStringLiteral("exportHeight"));
@@ -269,7 +269,7 @@ TEST_F(EditorCommandsTest, ExportTurntable_WritesNumberedFramesTheFirstOfThemThe
     Scene scene = doc->scene();
     scene.render.width = 32;
     scene.render.height = 24;
-    ExportDialog dialog(scene, QString::fromStdString(dir.path().string()), "spin");
+    ExportDialog dialog(scene, std::nullopt, QString::fromStdString(dir.path().string()), "spin");
     auto* frames = dialog.findChild<QSpinBox*>(QStringLiteral("exportTurntable"));
     ASSERT_NE(frames, nullptr);
     EXPECT_EQ(dialog.settings().turntableFrames, 0) << "a still unless asked";

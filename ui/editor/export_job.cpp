@@ -14,6 +14,7 @@
 #include <algorithm>
 
 #include "camera/camera_control.h"
+#include "document/quality_choice.h"
 #include "image/image_io.h"
 #include "panels/image_size_fields.h"
 #include "tracer/renderer.h"
@@ -28,8 +29,8 @@ QString firstExtension(const ImageFormatInfo& f) {
 
 }  // namespace
 
-ExportDialog::ExportDialog(const Scene& scene, const QString& directory, const QString& baseName,
-                           QWidget* parent)
+ExportDialog::ExportDialog(const Scene& scene, const std::optional<QualityTarget>& quality,
+                           const QString& directory, const QString& baseName, QWidget* parent)
     : QDialog(parent) {
     setWindowTitle(tr("Export Image"));
     auto* form = new QFormLayout(this);
@@ -70,6 +71,19 @@ ExportDialog::ExportDialog(const Scene& scene, const QString& directory, const Q
         precision_->addItem(QString::fromLatin1(name.data(), int(name.size())), int(value));
     precision_->setCurrentIndex(precision_->findData(int(r.precision)));
     form->addRow(tr("Precision"), precision_);
+    quality_ = QualityChoice::makeComboBox(QStringLiteral("exportQuality"), quality);
+    quality_->setToolTip(
+        tr("With a target, the depth is chosen for the scene and each part of the picture "
+           "is sampled until its estimated error is under the target"));
+    form->addRow(tr("Render to"), quality_);
+    // A target chooses the samples and the depth: their fields would say nothing.
+    const auto followTarget = [this] {
+        const bool settings = quality_->currentIndex() == 0;
+        samples_->setEnabled(settings);
+        depth_->setEnabled(settings);
+    };
+    connect(quality_, &QComboBox::currentIndexChanged, this, followTarget);
+    followTarget();
     turntable_ = spin("exportTurntable", 0, 9999, 0);
     turntable_->setSpecialValueText(tr("None: one image"));
     turntable_->setSuffix(tr(" frames"));
@@ -126,6 +140,7 @@ ExportSettings ExportDialog::settings() const {
     s.render.maxDepth = depth_->value();
     s.render.precision = static_cast<Precision>(precision_->currentData().toInt());
     s.turntableFrames = turntable_->value();
+    s.quality = QualityChoice::chosenIn(quality_);
     return s;
 }
 
@@ -147,8 +162,10 @@ void ExportJob::start() {
         for (int frame = frames > 0 ? 1 : 0; frame <= frames; ++frame)
             if (!exportFrame(frame, camera, seconds)) return;
         if (frames == 0)
-            emit finished(true,
-                          tr("Exported %1 in %2 s.").arg(settings_.path).arg(seconds, 0, 'f', 2));
+            emit finished(true, tr("Exported %1 in %2 s.%3")
+                                    .arg(settings_.path)
+                                    .arg(seconds, 0, 'f', 2)
+                                    .arg(reached_));
         else
             emit finished(true, tr("Exported %1 frames, %2 to %3, in %4 s.")
                                     .arg(frames)
@@ -163,10 +180,17 @@ void ExportJob::start() {
 bool ExportJob::exportFrame(int frame, const Camera& camera, double& seconds) {
     const int frames = std::max(1, settings_.turntableFrames);
     if (frame > 0) scene_.camera = turntableCamera(camera, frame, frames);
-    const RenderOptions options = oneShotOptions();
+    RenderOptions options = oneShotOptions();
+    Scene scene = scene_;
+    std::optional<QualityPlan> plan;
+    if (settings_.quality) {
+        plan = planQuality(scene, *settings_.quality);
+        scene.render.maxDepth = plan->maxDepth;
+        options.adaptive = plan->sampling;
+    }
     std::atomic<int> lastPercent{-1};  // tiles report from several threads
     const RenderResult result = render(
-        scene_, options,
+        scene, options,
         [&](const TileUpdate& t) {
             const double done = (std::max(frame, 1) - 1 + t.progress.fraction) / frames;
             const int percent = static_cast<int>(done * 100);
@@ -179,13 +203,27 @@ bool ExportJob::exportFrame(int frame, const Camera& camera, double& seconds) {
     }
     try {
         writeImage(result.image, frameFile(settings_.path.toStdString(), frame),
-                   makeImageMetadata(scene_.render, result.seconds, "whitted"));
+                   makeImageMetadata(scene.render, result.seconds, "whitted"));
     } catch (const std::exception& e) {
         emit finished(false, QString::fromStdString(e.what()));
         return false;
     }
     seconds += result.seconds;
+    if (plan && result.adaptive) reached_ = qualityReached(*plan, *result.adaptive);
     return true;
+}
+
+QString ExportJob::qualityReached(const QualityPlan& plan, const AdaptiveOutcome& reached) const {
+    QString text = tr(" %1: depth %2, %3 to %4 samples per pixel, about %5 dB")
+                       .arg(QualityChoice::describe(plan.target))
+                       .arg(plan.maxDepth)
+                       .arg(reached.fewestSamples)
+                       .arg(reached.mostSamples)
+                       .arg(estimatedPsnr(plan, reached), 0, 'f', 1);
+    if (plan.target.largestCodes)
+        text += tr(", largest error about %1 codes")
+                    .arg(std::max(plan.depthLargest, reached.estimatedLargest), 0, 'f', 1);
+    return text + ".";
 }
 
 }  // namespace whitted::ui

@@ -8,8 +8,10 @@
 #include <QString>
 
 #include <atomic>
+#include <optional>
 #include <thread>
 
+#include "analysis/quality_target.h"
 #include "scene/scene.h"
 
 class QComboBox;
@@ -26,14 +28,18 @@ struct ExportSettings {
     // 0: a still. N: a turntable of N frames, the eye turning once about
     // look_at, written as path's name with 0001 to N before the extension.
     int turntableFrames = 0;
+    // Set: rendered to this quality (document/quality_choice.h), each frame
+    // with the depth and samples chosen for it; render's samples and depth unused.
+    std::optional<QualityTarget> quality;
 };
 
 class ExportDialog : public QDialog {
     Q_OBJECT
   public:
-    // Starts from the scene's render settings and a file name in `directory`.
-    ExportDialog(const Scene& scene, const QString& directory, const QString& baseName,
-                 QWidget* parent = nullptr);
+    // Starts from the scene's render settings, the editor's quality target
+    // and a file name in `directory`.
+    ExportDialog(const Scene& scene, const std::optional<QualityTarget>& quality,
+                 const QString& directory, const QString& baseName, QWidget* parent = nullptr);
     ExportSettings settings() const;
 
   private:
@@ -45,6 +51,7 @@ class ExportDialog : public QDialog {
     ImageSizeFields* size_;
     QSpinBox *samples_, *depth_, *turntable_;
     QComboBox* precision_;
+    QComboBox* quality_;
 };
 
 // Renders a scene with the given settings and writes it. Emits progress from
@@ -68,11 +75,14 @@ class ExportJob : public QObject {
     // `camera` (0: a still); false, having emitted finished(), when
     // cancelled or failed.
     bool exportFrame(int frame, const Camera& camera, double& seconds);
+    // What a still rendered to a quality chose and reached, for the message.
+    QString qualityReached(const QualityPlan& plan, const AdaptiveOutcome& reached) const;
 
     Scene scene_;
     ExportSettings settings_;
     std::atomic<bool> cancelled_{false};
     std::thread thread_;
+    QString reached_;  // the last frame's qualityReached(), empty without a target
 };
 
 }  // namespace whitted::ui

@@ -49,7 +49,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setAcceptDrops(true);
     // The first to hear of a change, so that the render starts while the
     // panels and the rest refresh (a few ms on a scene of 100,000 spheres).
-    connect(&doc_, &SceneDocument::sceneChanged, this, [this] { worker_.request(doc_.scene()); });
+    connect(&doc_, &SceneDocument::sceneChanged, this, &MainWindow::requestRender);
+    connect(&quality_, &QualityChoice::changed, this, &MainWindow::requestRender);
     view_ = new RenderView(&doc_, this);
     setCentralWidget(view_);
     buildDocks();
@@ -117,8 +118,36 @@ void MainWindow::onFrame(const RenderFrame& frame) {
     speedLabel_->setText(frame.renderComplete
                              ? tr("%1 Mrays/s").arg(frame.mraysPerSecond, 0, 'f', 1)
                              : tr("rendering…"));
-    if (frame.renderComplete) record_.addRender({frame.settings, frame.seconds, frame.rays});
+    if (frame.qualityPlan)
+        showQualityReached(frame);
+    else if (frame.renderComplete)  // the predictions are for settings, not targets
+        record_.addRender({frame.settings, frame.seconds, frame.rays});
     emit frameShown(frame);
+}
+
+// A render to a quality: the target, the depth chosen, the samples it took
+// and the error it estimates, with the plan's reasons in the tooltip.
+void MainWindow::showQualityReached(const RenderFrame& frame) {
+    const QualityPlan& plan = *frame.qualityPlan;
+    const QString target = QString::fromStdString(
+        plan.target.name.empty() ? describeTarget(plan.target) : plan.target.name);
+    passLabel_->setText(
+        tr("%1, depth %2: %3").arg(target).arg(plan.maxDepth).arg(passLabel_->text()));
+    passLabel_->setToolTip(QString::fromStdString(describeTarget(plan.target) + "\n" + plan.why));
+    if (!frame.renderComplete || !frame.qualityReached) return;
+    const AdaptiveOutcome& reached = *frame.qualityReached;
+    samplesLabel_->setText(
+        tr("%1 to %2 samples per pixel").arg(reached.fewestSamples).arg(reached.mostSamples));
+    QString estimate = tr("%1, depth %2: about %3 dB")
+                           .arg(target)
+                           .arg(plan.maxDepth)
+                           .arg(estimatedPsnr(plan, reached), 0, 'f', 1);
+    if (reached.tilesAtCap > 0)
+        estimate += tr(" (%1 of %2 tiles stopped at %3 samples short of the target)")
+                        .arg(reached.tilesAtCap)
+                        .arg(reached.tiles)
+                        .arg(plan.sampling.maxSamples);
+    passLabel_->setText(estimate);
 }
 
 bool MainWindow::openFile(const QString& path) {
@@ -190,7 +219,7 @@ bool MainWindow::saveTo(const QString& path) {
 void MainWindow::exportDialog() {
     const QString base =
         doc_.filePath().isEmpty() ? tr("untitled") : QFileInfo(doc_.filePath()).completeBaseName();
-    ExportDialog dialog(doc_.scene(), lastDirectory(), base, this);
+    ExportDialog dialog(doc_.scene(), quality_.target(), lastDirectory(), base, this);
     if (dialog.exec() != QDialog::Accepted) return;
     startExport(dialog.settings());
 }

@@ -13,6 +13,7 @@
 
 #include <memory>
 
+#include "document/quality_choice.h"
 #include "document/scene_document.h"
 #include "editor/help_dialogs.h"
 #include "tradeoff_dock/tradeoff_record.h"
@@ -60,6 +61,7 @@ class MainWindow : public QMainWindow {
     PrecisionView* precisionView() { return precisionView_; }
     TradeoffView* tradeoffView() { return tradeoffView_; }
     TradeoffRecord* tradeoffRecord() { return &record_; }
+    QualityChoice* qualityChoice() { return &quality_; }
     FloatRangeWarning* floatRangeWarning() { return floatRangeWarning_; }
     QString lastError() const { return lastError_; }  // the last message shown to the user
     Autosave* autosave() { return autosave_.get(); }
@@ -118,9 +120,12 @@ class MainWindow : public QMainWindow {
     QString lastDirectory() const;
     void rememberDirectory(const QString& path);
     void onFrame(const RenderFrame& frame);
+    void showQualityReached(const RenderFrame& frame);
+    void requestRender() { worker_.request(doc_.scene(), quality_.target()); }
 
     SceneDocument doc_;
     TradeoffRecord record_;
+    QualityChoice quality_;
     RenderWorker worker_;
     RenderView* view_ = nullptr;
     ScenePanel* scenePanel_ = nullptr;

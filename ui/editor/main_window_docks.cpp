@@ -26,7 +26,7 @@ void MainWindow::buildDocks() {
     tabs->setObjectName("settingsTabs");
     tabs->addTab(propertyPanel_, tr("Properties"));
     tabs->addTab(new CameraPanel(&doc_), tr("Camera"));
-    tabs->addTab(new RenderSettingsPanel(&doc_, &record_), tr("Render"));
+    tabs->addTab(new RenderSettingsPanel(&doc_, &record_, &quality_), tr("Render"));
     auto* settingsDock = new QDockWidget(tr("Settings"), this);
     settingsDock->setObjectName("settingsDock");
     settingsDock->setWidget(tabs);

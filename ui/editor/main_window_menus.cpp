@@ -95,7 +95,7 @@ void MainWindow::buildRenderMenu() {
         const QString name = QString::fromUtf8(preset.name.data(), qsizetype(preset.name.size()));
         QAction* a = renderMenu->addAction(tr("%1 Preset").arg(name), this, [this, &preset] {
             QString error;
-            if (!PresetControls::apply(&doc_, preset, &error))
+            if (!PresetControls::apply(&doc_, &quality_, preset, &error))
                 showError(tr("Cannot apply preset"), error);
             tickPreset();
         });

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "analysis/render_presets.h"
+#include "document/quality_choice.h"
 #include "document/scene_document.h"
 #include "panels/number_field.h"
 #include "tradeoff_dock/tradeoff_points.h"
@@ -42,8 +43,9 @@ QLabel* makePredictionLabel(const QString& name) {
 
 }  // namespace
 
-PresetControls::PresetControls(SceneDocument* doc, TradeoffRecord* record, QFormLayout* form)
-    : QObject(form->parentWidget()), doc_(doc), record_(record) {
+PresetControls::PresetControls(SceneDocument* doc, TradeoffRecord* record, QualityChoice* quality,
+                               QFormLayout* form)
+    : QObject(form->parentWidget()), doc_(doc), record_(record), quality_(quality) {
     combo_ = new QComboBox;
     combo_->setObjectName(QStringLiteral("renderPreset"));
     combo_->addItem(tr("Custom"));
@@ -53,7 +55,9 @@ PresetControls::PresetControls(SceneDocument* doc, TradeoffRecord* record, QForm
                             .arg(p.samplesPerPixel)
                             .arg(p.maxDepth)
                             .arg(viewText(precisionName(p.precision))));
-    combo_->setToolTip(tr("Sets samples per pixel, max depth and precision in one step"));
+    combo_->setToolTip(
+        tr("Sets samples per pixel, max depth and precision in one step, and renders "
+           "to the preset's quality"));
     // activated: only the user's choices, not the refreshes that follow edits.
     connect(combo_, &QComboBox::activated, this, &PresetControls::choose);
 
@@ -63,11 +67,21 @@ PresetControls::PresetControls(SceneDocument* doc, TradeoffRecord* record, QForm
     error_->setToolTip(
         tr("Root-mean-square error of the 8-bit sRGB image against Measure's "
            "reference (in steps of 1/255), and its PSNR"));
+    target_ = QualityChoice::makeComboBox(QStringLiteral("qualityTarget"), quality_->target());
+    target_->setToolTip(
+        tr("With a target, each render chooses its depth for the scene and samples each "
+           "part of the picture until its estimated error is under the target (at most "
+           "%1 samples per pixel); the status bar says what it chose and reached")
+            .arg(kDefaultMaxSamples));
+    connect(target_, &QComboBox::activated, this, &PresetControls::chooseTarget);
+
     form->insertRow(0, tr("Preset:"), combo_);
-    form->insertRow(1, tr("Predicted time:"), time_);
-    form->insertRow(2, tr("Predicted error:"), error_);
+    form->insertRow(1, tr("Render to:"), target_);
+    form->insertRow(2, tr("Predicted time:"), time_);
+    form->insertRow(3, tr("Predicted error:"), error_);
 
     connect(doc_, &SceneDocument::sceneChanged, this, &PresetControls::refresh);
+    connect(quality_, &QualityChoice::changed, this, &PresetControls::refresh);
     connect(record_, &TradeoffRecord::changed, this, &PresetControls::refresh);
     refresh();
 }
@@ -100,14 +114,22 @@ void PresetControls::choose(int index) {
         return;
     }
     QString error;
-    if (!apply(doc_, kRenderPresets[std::size_t(index - 1)], &error)) showRefusal(combo_, error);
+    if (!apply(doc_, quality_, kRenderPresets[std::size_t(index - 1)], &error))
+        showRefusal(combo_, error);
     refresh();
 }
 
-bool PresetControls::apply(SceneDocument* doc, const RenderPreset& preset, QString* error) {
-    return doc->edit(
+void PresetControls::chooseTarget(int) {
+    quality_->setTarget(QualityChoice::chosenIn(target_));
+}
+
+bool PresetControls::apply(SceneDocument* doc, QualityChoice* quality, const RenderPreset& preset,
+                           QString* error) {
+    const bool applied = doc->edit(
         tr("Apply %1 preset").arg(presetName(preset)),
         [&](Scene& s) { applyPreset(preset, s.render); }, error);
+    if (applied && quality) quality->setTarget(qualityPreset(preset.name));
+    return applied;
 }
 
 void PresetControls::refresh() {
@@ -116,9 +138,23 @@ void PresetControls::refresh() {
         const QSignalBlocker block(combo_);
         combo_->setCurrentIndex(matchingPreset(scene.render) + 1);
     }
+    const std::optional<QualityTarget>& target = quality_->target();
+    {
+        const QSignalBlocker block(target_);
+        target_->setCurrentIndex(QualityChoice::indexOf(target));
+    }
     const Prediction now = record_->predict(scene);
-    time_->setText(timeText(now));
-    error_->setText(errorText(now));
+    if (target) {
+        // Depth and samples are chosen at the render: nothing measured yet says what they cost.
+        time_->setText(
+            tr("not predicted: each render to a target chooses its own depth and "
+               "samples (the status bar shows what it took)"));
+        error_->setText(tr("the target, %1; the status bar shows the render's estimate")
+                            .arg(QualityChoice::describe(target)));
+    } else {
+        time_->setText(timeText(now));
+        error_->setText(errorText(now));
+    }
     // Each preset's own prediction where the user hovers before choosing.
     for (std::size_t i = 0; i < kRenderPresets.size(); ++i) {
         RenderSettings with = scene.render;

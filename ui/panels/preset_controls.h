@@ -2,9 +2,12 @@
 // predicted for the current settings (settings_prediction.h).
 //
 // Choosing Draft, Preview or Final sets samples per pixel, max depth and
-// precision as one undoable edit; the combo box shows the preset the scene's
-// settings match, else Custom. The predictions follow every edit, every
-// finished render and every Measure result, and say where they come from.
+// precision as one undoable edit, and makes the preset's quality the target
+// the editor renders to ("Render to", document/quality_choice.h): depth and
+// samples are then chosen for the scene at each render. The combo box shows
+// the preset the scene's settings match, else Custom. The predictions are for
+// the settings; they follow every edit, every finished render and every
+// Measure result, and say where they come from, or that a target has none.
 #pragma once
 
 #include <QObject>
@@ -18,6 +21,7 @@ class QLabel;
 
 namespace whitted::ui {
 
+class QualityChoice;
 class SceneDocument;
 class TradeoffRecord;
 struct Prediction;
@@ -26,11 +30,14 @@ class PresetControls : public QObject {
     Q_OBJECT
   public:
     // Inserts its rows at the top of `form`; lives as long as the form's widget.
-    PresetControls(SceneDocument* doc, TradeoffRecord* record, QFormLayout* form);
+    PresetControls(SceneDocument* doc, TradeoffRecord* record, QualityChoice* quality,
+                   QFormLayout* form);
 
-    // Sets the preset's samples, depth and precision as one undoable edit
-    // (what choosing it does); false with the reason if the edit is refused.
-    static bool apply(SceneDocument* doc, const RenderPreset& preset, QString* error = nullptr);
+    // Sets the preset's samples, depth and precision as one undoable edit and
+    // its quality as the target (what choosing it does); false with the
+    // reason if the edit is refused, and then the target stays as it was.
+    static bool apply(SceneDocument* doc, QualityChoice* quality, const RenderPreset& preset,
+                      QString* error = nullptr);
     // Index into kRenderPresets of the preset `settings` match, or -1.
     static int matchingPreset(const RenderSettings& settings);
     // "1.2 s" and "RMSE 2.3 of 255, PSNR 41 dB" with their sources, as the labels show them.
@@ -39,11 +46,14 @@ class PresetControls : public QObject {
 
   private:
     void choose(int index);
+    void chooseTarget(int index);
     void refresh();
 
     SceneDocument* doc_;
     TradeoffRecord* record_;
+    QualityChoice* quality_;
     QComboBox* combo_;
+    QComboBox* target_;
     QLabel* time_;
     QLabel* error_;
 };

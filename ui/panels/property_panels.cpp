@@ -160,7 +160,7 @@ void CameraPanel::refresh() {
 // RenderSettingsPanel
 
 RenderSettingsPanel::RenderSettingsPanel(SceneDocument* doc, TradeoffRecord* record,
-                                         QWidget* parent)
+                                         QualityChoice* quality, QWidget* parent)
     : QWidget(parent), doc_(doc) {
     QFormLayout* form = makeForm(this);
     auto addInt = [&](const QString& label, const QString& name, int min, int max, auto member,
@@ -221,7 +221,7 @@ RenderSettingsPanel::RenderSettingsPanel(SceneDocument* doc, TradeoffRecord* rec
     ambient_ = addColor(tr("Ambient:"), QStringLiteral("sceneAmbient"), &Scene::ambient,
                         tr("ambient colour"));
 
-    if (record) new PresetControls(doc_, record, form);
+    if (record && quality) new PresetControls(doc_, record, quality, form);
 
     connect(doc_, &SceneDocument::sceneChanged, this, &RenderSettingsPanel::refresh);
     refresh();

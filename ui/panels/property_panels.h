@@ -17,6 +17,7 @@ class QStackedWidget;
 namespace whitted::ui {
 
 class ColorButton;
+class QualityChoice;
 class DoubleField;
 class IntField;
 class MaterialPage;
@@ -74,8 +75,10 @@ class TradeoffRecord;
 class RenderSettingsPanel : public QWidget {
     Q_OBJECT
   public:
+    // With a record and a quality choice: the presets, the quality target and
+    // the predictions (preset_controls.h) above the settings.
     explicit RenderSettingsPanel(SceneDocument* doc, TradeoffRecord* record = nullptr,
-                                 QWidget* parent = nullptr);
+                                 QualityChoice* quality = nullptr, QWidget* parent = nullptr);
 
   private:
     void refresh();

@@ -14,9 +14,10 @@ namespace whitted::ui {
 
 RenderWorker::RenderWorker(QObject* parent)
     : QObject(parent),
-      requests_(
-          RequestThread<Scene>::Policy::LatestWins,
-          [this](Scene&& scene, quint64 generation) { renderOne(std::move(scene), generation); }) {
+      requests_(RequestThread<RenderRequest>::Policy::LatestWins,
+                [this](RenderRequest&& request, quint64 generation) {
+                    renderOne(std::move(request), generation);
+                }) {
     qRegisterMetaType<whitted::ui::RenderFrame>();
     connect(this, &RenderWorker::framePosted, this, &RenderWorker::deliver, Qt::QueuedConnection);
 }
@@ -40,8 +41,8 @@ void RenderWorker::deliver() {
     emit frameReady(frame);
 }
 
-quint64 RenderWorker::request(const Scene& scene) {
-    return requests_.request(scene);
+quint64 RenderWorker::request(const Scene& scene, const std::optional<QualityTarget>& quality) {
+    return requests_.request(RenderRequest{scene, quality});
 }
 
 Scene viewSized(Scene scene) {
@@ -72,9 +73,10 @@ using Clock = std::chrono::steady_clock;
 // posted, so frames go out in the order they were made.
 class FrameAssembler {
   public:
-    FrameAssembler(const Scene& scene, quint64 generation, std::function<bool()> stopping,
-                   std::function<void(RenderFrame)> post)
+    FrameAssembler(const Scene& scene, std::shared_ptr<const QualityPlan> plan, quint64 generation,
+                   std::function<bool()> stopping, std::function<void(RenderFrame)> post)
         : scene_(scene),
+          plan_(std::move(plan)),
           generation_(generation),
           stopping_(std::move(stopping)),
           post_(std::move(post)),
@@ -119,6 +121,7 @@ class FrameAssembler {
             result.seconds > 0 ? result.rays.total() / result.seconds / 1e6 : 0.0;
         frame.rays = result.rays.total();
         frame.linear = std::make_shared<const Image>(std::move(result.image));
+        frame.qualityReached = result.adaptive;
         return frame;
     }
 
@@ -153,11 +156,13 @@ class FrameAssembler {
         frame.passComplete = passComplete;
         frame.samples = samplesDone_;
         frame.settings = scene_.render;
+        frame.qualityPlan = plan_;
         frame.seconds = std::chrono::duration<double>(Clock::now() - start_).count();
         return frame;
     }
 
     const Scene& scene_;
+    const std::shared_ptr<const QualityPlan> plan_;
     const quint64 generation_;
     const std::function<bool()> stopping_;
     const std::function<void(RenderFrame)> post_;
@@ -177,14 +182,22 @@ class FrameAssembler {
 
 }  // namespace
 
-void RenderWorker::renderOne(Scene requested, quint64 generation) {
-    const Scene scene = viewSized(std::move(requested));
+void RenderWorker::renderOne(RenderRequest requested, quint64 generation) {
+    Scene scene = viewSized(std::move(requested.scene));
     const auto shouldStop = [&] { return requests_.stale(generation); };
-    FrameAssembler frames(scene, generation, shouldStop,
-                          [this](RenderFrame frame) { post(std::move(frame)); });
     RenderOptions options;
     options.sceneValidated = true;  // request() asks for a valid scene
     options.bvhCache = &bvhCache_;
+    std::shared_ptr<const QualityPlan> plan;
+    if (requested.quality) {
+        // Chosen for the picture the view shows: its size, the scene's precision.
+        plan = std::make_shared<const QualityPlan>(planQuality(scene, *requested.quality));
+        if (shouldStop()) return;
+        scene.render.maxDepth = plan->maxDepth;
+        options.adaptive = plan->sampling;
+    }
+    FrameAssembler frames(scene, plan, generation, shouldStop,
+                          [this](RenderFrame frame) { post(std::move(frame)); });
     RenderResult result = render(
         scene, options, [&](const TileUpdate& t) { frames.addTile(t); }, shouldStop);
     bvhBuilds_ = bvhCache_.builds;

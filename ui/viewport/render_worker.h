@@ -19,7 +19,9 @@
 #include <deque>
 #include <memory>
 #include <mutex>
+#include <optional>
 
+#include "analysis/quality_target.h"
 #include "base/request_thread.h"
 #include "scene/scene.h"
 #include "tracer/renderer.h"
@@ -35,6 +37,13 @@ inline constexpr int kMaxViewSize = 2048;
 // The scene as the view renders it: render size capped at kMaxViewSize. By
 // value, so that the worker moves its request in rather than copying it.
 Scene viewSized(Scene scene);
+
+// What the view is asked to render: the scene, to its own samples and depth
+// or, with a target, to that quality (document/quality_choice.h).
+struct RenderRequest {
+    Scene scene;
+    std::optional<QualityTarget> quality;
+};
 
 struct RenderFrame {
     quint64 generation = 0;
@@ -55,6 +64,10 @@ struct RenderFrame {
     // copied (the trade-off dock measures errors on it), and its ray count.
     std::shared_ptr<const Image> linear;
     std::uint64_t rays = 0;
+    // A render to a quality: what planQuality() chose (in every frame; its
+    // depth is in `settings`) and, in the complete frame, what was reached.
+    std::shared_ptr<const QualityPlan> qualityPlan;
+    std::optional<AdaptiveOutcome> qualityReached;
 };
 
 class RenderWorker : public QObject {
@@ -67,7 +80,7 @@ class RenderWorker : public QObject {
     // returns the request's generation. Never blocks on the renderer. The
     // scene must pass validateScene(), as the document's always does; the
     // render does not check it again.
-    quint64 request(const Scene& scene);
+    quint64 request(const Scene& scene, const std::optional<QualityTarget>& quality = std::nullopt);
     quint64 latestGeneration() const { return requests_.latestTicket(); }
 
     // How often frames are sent while a pass is in progress.
@@ -85,7 +98,7 @@ class RenderWorker : public QObject {
     void framePosted();
 
   private:
-    void renderOne(Scene requested, quint64 generation);
+    void renderOne(RenderRequest requested, quint64 generation);
     // The render thread's frames pass through an outbox guarded by our own
     // mutex rather than inside Qt's queued signal: the hand-over is then a
     // synchronisation ThreadSanitizer can see (Qt's event queue is not
@@ -100,7 +113,7 @@ class RenderWorker : public QObject {
     BvhCache bvhCache_;
     std::atomic<int> bvhBuilds_{0}, bvhRefits_{0};
     // Last, so that it stops and joins the render thread before the rest goes.
-    RequestThread<Scene> requests_;
+    RequestThread<RenderRequest> requests_;
 };
 
 }  // namespace whitted::ui

@@ -1,0 +1,125 @@
+// Issue 15 in the editor: the presets render to their quality. A preset's
+// shortcut makes its target the one the view renders to; each render chooses
+// its depth for the scene and samples until the estimate is under the target,
+// and the status bar says what it chose and reached. "Render to" in the
+// Render tab goes back to the scene's own samples and depth; Export renders
+// to the target it is given. Measured against a converged render of the same
+// scene (double, 512 samples a pixel, depth 14).
+#include <QComboBox>
+#include <QLabel>
+#include <QStatusBar>
+#include <QTest>
+
+#include "analysis/quality_check.h"
+#include "editor/export_job.h"
+#include "editor/main_window.h"
+#include "image/image_error.h"
+#include "image/image_io.h"
+#include "support/gui_test_main.h"
+#include "support/main_window_fixture.h"
+#include "support/test_support.h"
+
+namespace whitted::ui {
+namespace {
+
+class QualityEditorTest : public MainWindowTest {
+  protected:
+    // The status bar's labels, joined: what a user reads there.
+    QString statusText() const {
+        QStringList texts;
+        for (const QLabel* l : window->statusBar()->findChildren<QLabel*>()) texts << l->text();
+        return texts.join(QStringLiteral(" | "));
+    }
+
+    // Presses `keys` and waits for the complete frame of the render they start.
+    ::testing::AssertionResult pressAndWait(const char* keys) {
+        const int before = log->completed;
+        QTest::keySequence(window.get(), QKeySequence(QString::fromLatin1(keys)));
+        return waitForRender(before);
+    }
+};
+
+TEST_F(QualityEditorTest, FinalShortcut_RendersToFinalsTarget_MeasuredAgainstAConvergedRender) {
+    ASSERT_TRUE(pressAndWait("Ctrl+3"));
+    ASSERT_TRUE(window->qualityChoice()->target().has_value());
+    EXPECT_EQ(window->qualityChoice()->target()->name, "Final");
+    EXPECT_EQ(child<QComboBox>("qualityTarget")->currentIndex(), 3);  // after the settings
+    const RenderFrame& frame = log->lastComplete;
+    ASSERT_TRUE(frame.qualityPlan && frame.qualityReached && frame.linear);
+
+    const ErrorStats error = measureError(*frame.linear, convergedReference(doc->scene()));
+    EXPECT_GE(error.psnrSrgb8, 50.0);
+    EXPECT_LE(error.largest, 16.0);
+    // Sampled where the picture needs it, not everywhere alike.
+    EXPECT_LT(frame.qualityReached->fewestSamples, frame.qualityReached->mostSamples);
+    EXPECT_EQ(frame.settings.maxDepth, frame.qualityPlan->maxDepth);
+
+    const QString status = statusText();
+    EXPECT_TRUE(
+        status.contains(QStringLiteral("Final, depth %1: about ").arg(frame.qualityPlan->maxDepth)))
+        << status.toStdString();
+    EXPECT_TRUE(status.contains(QStringLiteral(" dB"))) << status.toStdString();
+    EXPECT_TRUE(status.contains(QStringLiteral("%1 to %2 samples per pixel")
+                                    .arg(frame.qualityReached->fewestSamples)
+                                    .arg(frame.qualityReached->mostSamples)))
+        << status.toStdString();
+    // The predictions are for settings: with a target the Render tab says so.
+    EXPECT_TRUE(child<QLabel>("predictedTime")->text().startsWith(QStringLiteral("not predicted")));
+}
+
+TEST_F(QualityEditorTest, RenderToTheSettings_AfterATarget_RendersTheScenesSamplesAgain) {
+    ASSERT_TRUE(pressAndWait("Ctrl+1"));
+    ASSERT_TRUE(log->lastComplete.qualityPlan);
+    EXPECT_EQ(log->lastComplete.qualityPlan->target.name, "Draft");
+
+    auto* target = child<QComboBox>("qualityTarget");
+    const int before = log->completed;
+    target->setCurrentIndex(0);
+    emit target->activated(0);  // as a user's choice arrives
+    ASSERT_TRUE(waitForRender(before));
+    EXPECT_FALSE(window->qualityChoice()->target().has_value());
+    const RenderFrame& frame = log->lastComplete;
+    EXPECT_FALSE(frame.qualityPlan);
+    EXPECT_EQ(frame.samples, doc->scene().render.samplesPerPixel);  // Draft's: 1
+    EXPECT_EQ(frame.settings.maxDepth, doc->scene().render.maxDepth);
+    // The same pixels as a fixed render of the scene: nothing of the target is left.
+    EXPECT_TRUE(sameImage(frame.image, coreRender(doc->scene())));
+}
+
+TEST_F(QualityEditorTest, ExportToPreview_WritesAFileThatMeetsIt_AndSaysWhatItReached) {
+    ExportDialog dialog(doc->scene(), previewQuality(), QString::fromStdString(dir.path().string()),
+                        QStringLiteral("preview"));
+    auto* quality = dialog.findChild<QComboBox*>(QStringLiteral("exportQuality"));
+    ASSERT_NE(quality, nullptr);
+    EXPECT_EQ(quality->currentIndex(), 2);  // the editor's target is the dialog's first choice
+    EXPECT_FALSE(dialog.findChild<QWidget*>(QStringLiteral("exportSamples"))->isEnabled());
+    ExportSettings settings = dialog.settings();
+    ASSERT_TRUE(settings.quality.has_value());
+
+    ExportJob job(doc->scene(), settings);
+    bool done = false, ok = false;
+    QString message;
+    QObject::connect(&job, &ExportJob::finished, [&](bool success, const QString& text) {
+        done = true;
+        ok = success;
+        message = text;
+    });
+    job.start();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return done; }, kRenderTimeoutMs));
+    ASSERT_TRUE(ok) << message.toStdString();
+    EXPECT_TRUE(message.contains(QStringLiteral("Preview: 35 dB"))) << message.toStdString();
+    EXPECT_TRUE(message.contains(QStringLiteral("samples per pixel, about ")))
+        << message.toStdString();
+
+    const Image written = readImage(dir.path() / "preview.png");
+    const ErrorStats error = measureError(written, convergedReference(doc->scene()));
+    EXPECT_GE(error.psnrSrgb8, 35.0);
+    EXPECT_LE(error.largest, 64.0);
+}
+
+}  // namespace
+}  // namespace whitted::ui
+
+int main(int argc, char** argv) {
+    return whitted::test::runGuiTests(argc, argv, "test_quality_editor");
+}

@@ -1,0 +1,55 @@
+#include "document/quality_choice.h"
+
+#include <QComboBox>
+
+namespace whitted::ui {
+
+namespace {
+
+bool sameTarget(const std::optional<QualityTarget>& a, const std::optional<QualityTarget>& b) {
+    if (a.has_value() != b.has_value()) return false;
+    return !a ||
+           (a->name == b->name && a->psnrDb == b->psnrDb && a->largestCodes == b->largestCodes);
+}
+
+}  // namespace
+
+void QualityChoice::setTarget(std::optional<QualityTarget> target) {
+    if (sameTarget(target, target_)) return;
+    target_ = std::move(target);
+    emit changed();
+}
+
+std::vector<QualityTarget> QualityChoice::offered() {
+    return {draftQuality(), previewQuality(), finalQuality()};
+}
+
+int QualityChoice::indexOf(const std::optional<QualityTarget>& target) {
+    const std::vector<QualityTarget> all = offered();
+    for (std::size_t i = 0; i < all.size(); ++i)
+        if (sameTarget(all[i], target)) return int(i) + 1;
+    return 0;
+}
+
+QComboBox* QualityChoice::makeComboBox(const QString& objectName,
+                                       const std::optional<QualityTarget>& shown) {
+    auto* box = new QComboBox;
+    box->setObjectName(objectName);
+    box->addItem(describe(std::nullopt));
+    for (const QualityTarget& t : offered()) box->addItem(describe(t));
+    box->setCurrentIndex(indexOf(shown));
+    return box;
+}
+
+std::optional<QualityTarget> QualityChoice::chosenIn(const QComboBox* box) {
+    const int index = box->currentIndex();
+    if (index <= 0) return std::nullopt;
+    return offered()[std::size_t(index - 1)];
+}
+
+QString QualityChoice::describe(const std::optional<QualityTarget>& target) {
+    if (!target) return tr("The samples per pixel and max depth set here");
+    return QString::fromStdString(describeTarget(*target));
+}
+
+}  // namespace whitted::ui

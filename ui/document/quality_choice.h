@@ -1,0 +1,50 @@
+// Whether the editor renders to the scene's samples and depth or to a quality
+// target (issue 15): Draft, Preview or Final, each resolved per scene by
+// planQuality() at every render. Chosen in the Render tab, by the presets
+// (Ctrl+1 to Ctrl+3) and in the Export dialog. An editor setting like the
+// view's camera, not part of the scene file (SPEC §4 has no such field), so
+// choosing it is not an undo step; a new or opened scene keeps it.
+#pragma once
+
+#include <QObject>
+#include <QString>
+
+#include <optional>
+#include <vector>
+
+#include "analysis/quality_target.h"
+
+class QComboBox;
+
+namespace whitted::ui {
+
+class QualityChoice : public QObject {
+    Q_OBJECT
+  public:
+    explicit QualityChoice(QObject* parent = nullptr) : QObject(parent) {}
+
+    // Unset: render the scene's samples per pixel and max depth.
+    const std::optional<QualityTarget>& target() const { return target_; }
+    void setTarget(std::optional<QualityTarget> target);
+
+    // "Final: 50 dB, no pixel off by more than 16 codes", or what no target means.
+    static QString describe(const std::optional<QualityTarget>& target);
+    // The targets the editor offers (Draft, Preview, Final), in the order of
+    // its combo boxes, after "the settings".
+    static std::vector<QualityTarget> offered();
+    // A combo box of "the settings" and the offered targets, showing `shown`.
+    static QComboBox* makeComboBox(const QString& objectName,
+                                   const std::optional<QualityTarget>& shown);
+    // The target a combo box from makeComboBox() shows.
+    static std::optional<QualityTarget> chosenIn(const QComboBox* box);
+    // Its index for `target` (0: the settings).
+    static int indexOf(const std::optional<QualityTarget>& target);
+
+  signals:
+    void changed();
+
+  private:
+    std::optional<QualityTarget> target_;
+};
+
+}  // namespace whitted::ui

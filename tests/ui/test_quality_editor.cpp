@@ -63,6 +63,9 @@ TEST_F(QualityEditorTest, FinalShortcut_RendersToFinalsTarget_MeasuredAgainstACo
                                     .arg(frame.qualityReached->fewestSamples)
                                     .arg(frame.qualityReached->mostSamples)))
         << status.toStdString();
+    // Depth and samples are the target's to choose: their fields rest.
+    EXPECT_FALSE(child<QWidget>("renderMaxDepth")->isEnabled());
+    EXPECT_FALSE(child<QWidget>("renderSamples")->isEnabled());
     // The predictions are for settings: with a target the Render tab says so.
     EXPECT_TRUE(child<QLabel>("predictedTime")->text().startsWith(QStringLiteral("not predicted")));
 }
@@ -78,6 +81,8 @@ TEST_F(QualityEditorTest, RenderToTheSettings_AfterATarget_RendersTheScenesSampl
     emit target->activated(0);  // as a user's choice arrives
     ASSERT_TRUE(waitForRender(before));
     EXPECT_FALSE(window->qualityChoice()->target().has_value());
+    EXPECT_TRUE(child<QWidget>("renderMaxDepth")->isEnabled());
+    EXPECT_TRUE(child<QWidget>("renderSamples")->isEnabled());
     const RenderFrame& frame = log->lastComplete;
     EXPECT_FALSE(frame.qualityPlan);
     EXPECT_EQ(frame.samples, doc->scene().render.samplesPerPixel);  // Draft's: 1

@@ -10,6 +10,7 @@
 #include <QStackedWidget>
 #include <QVBoxLayout>
 
+#include "document/quality_choice.h"
 #include "panels/color_button.h"
 #include "panels/image_size_fields.h"
 #include "panels/material_page.h"
@@ -221,7 +222,26 @@ RenderSettingsPanel::RenderSettingsPanel(SceneDocument* doc, TradeoffRecord* rec
     ambient_ = addColor(tr("Ambient:"), QStringLiteral("sceneAmbient"), &Scene::ambient,
                         tr("ambient colour"));
 
-    if (record && quality) new PresetControls(doc_, record, quality, form);
+    if (record && quality) {
+        new PresetControls(doc_, record, quality, form);
+        // A target chooses depth and samples at each render: the fields would
+        // change nothing the user sees, so they rest until the settings rule again.
+        const auto followTarget = [this, quality] {
+            const bool settings = !quality->target();
+            for (const char* name : {"renderMaxDepth", "renderSamples"}) {
+                auto* field = findChild<IntField*>(QLatin1String(name));
+                if (field->isEnabled() == settings) continue;
+                field->setEnabled(settings);
+                // The field's own tooltip comes back with the settings.
+                if (!settings) field->setProperty("settingsToolTip", field->toolTip());
+                field->setToolTip(settings ? field->property("settingsToolTip").toString()
+                                           : tr("Chosen for the scene at each render while "
+                                                "rendering to a quality (Render to)"));
+            }
+        };
+        connect(quality, &QualityChoice::changed, this, followTarget);
+        followTarget();
+    }
 
     connect(doc_, &SceneDocument::sceneChanged, this, &RenderSettingsPanel::refresh);
     refresh();

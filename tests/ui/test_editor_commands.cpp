@@ -278,7 +278,8 @@ TEST_F(EditorCommandsTest, ExportTurntable_WritesNumberedFramesTheFirstOfThemThe
         ExportJob job(scene, settings);
         bool done = false, ok = false;
         QString message;
-        QObject::connect(&job, &ExportJob::finished, [&](bool success, const QString& text) {
+        // &job as context: queued to this thread (finished comes from the export thread).
+        QObject::connect(&job, &ExportJob::finished, &job, [&](bool success, const QString& text) {
             done = true;
             ok = success;
             message = text;

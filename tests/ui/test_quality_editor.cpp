@@ -104,7 +104,8 @@ TEST_F(QualityEditorTest, ExportToPreview_WritesAFileThatMeetsIt_AndSaysWhatItRe
     ExportJob job(doc->scene(), settings);
     bool done = false, ok = false;
     QString message;
-    QObject::connect(&job, &ExportJob::finished, [&](bool success, const QString& text) {
+    // &job as context: queued to this thread (finished comes from the export thread).
+    QObject::connect(&job, &ExportJob::finished, &job, [&](bool success, const QString& text) {
         done = true;
         ok = success;
         message = text;

@@ -23,10 +23,12 @@
 #include <QUndoStack>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <string>
 
+#include "analysis/quality_check.h"
 #include "analysis/render_presets.h"
 #include "analysis/tradeoff.h"
 #include "editor/main_window.h"
@@ -180,11 +182,53 @@ TEST_F(TradeoffViewTest, Predictions_BeforeMeasure_TimeFromTheLastRender_ErrorPo
     auto* error = child<QLabel>("predictedError");
     EXPECT_TRUE(time->text().contains(QStringLiteral("measured: the last render")))
         << time->text().toStdString();
-    EXPECT_EQ(error->text(), QStringLiteral("Measure gives an error prediction"));
-    // More samples than any render so far: an estimate, and it says so.
+    // More samples than any render so far: an estimate, and it says so. Checked
+    // before any event runs: the probes' prediction (ProbePredictor) for
+    // these settings starts only once the edits pause.
     ASSERT_TRUE(doc->edit(QStringLiteral("spp"), [](Scene& s) { s.render.samplesPerPixel = 8; }));
     EXPECT_TRUE(time->text().contains(QStringLiteral("estimated from the last render")))
         << time->text().toStdString();
+    EXPECT_EQ(error->text(), QStringLiteral("Measure gives an error prediction"));
+}
+
+// Issue 15, item 3: once the edits pause, small probe renders predict the
+// error and the rays of the settings; the time is those rays at the last
+// render's speed. The seed's error, checked against a converged render.
+TEST_F(TradeoffViewTest, Predictions_FromProbes_WithinTwoDecibelsOfTheRender) {
+    auto* time = child<QLabel>("predictedTime");
+    auto* error = child<QLabel>("predictedError");
+    ASSERT_TRUE(doc->edit(QStringLiteral("spp"), [](Scene& s) { s.render.samplesPerPixel = 8; }));
+    const RenderSettings want = doc->scene().render;
+    const auto predictedNow = [&] {
+        const ProbePrediction* p = window->tradeoffRecord()->probePrediction();
+        return p && p->scene.render == want;
+    };
+    ASSERT_TRUE(QTest::qWaitFor(predictedNow, kTimeoutMs));
+    const RenderPrediction& p = window->tradeoffRecord()->probePrediction()->prediction;
+    ASSERT_TRUE(p.predicted) << p.cannot;
+    EXPECT_TRUE(error->text().startsWith(QStringLiteral("RMSE %1 of 255, PSNR %2 dB")
+                                             .arg(std::sqrt(p.mseCodes2), 0, 'f', 2)
+                                             .arg(p.psnrDb, 0, 'f', 1)))
+        << error->text().toStdString();
+    EXPECT_TRUE(error->text().contains(QStringLiteral("predicted from small probe renders")));
+    // The view has rendered these settings by now, so the label's time is
+    // measured; before that render, the time is the predicted rays at the
+    // speed of the render before (1 spp, 1.5 Mrays in 0.1 s here).
+    EXPECT_TRUE(time->text().contains(QStringLiteral("measured"))) << time->text().toStdString();
+    RenderSettings before = want;
+    before.samplesPerPixel = 1;
+    const Prediction fromProbe =
+        predictSettings(doc->scene(), {{before, 0.1, 1'500'000}}, nullptr, nullptr,
+                        window->tradeoffRecord()->probePrediction());
+    ASSERT_TRUE(fromProbe.seconds.has_value());
+    EXPECT_DOUBLE_EQ(*fromProbe.seconds, p.rays / 15e6);
+    EXPECT_TRUE(
+        fromProbe.timeSource.contains(QStringLiteral("Mrays predicted, at the 15.0 Mrays/s")))
+        << fromProbe.timeSource.toStdString();
+
+    const FixedCheck rendered = checkFixed(doc->scene(), convergedReference(doc->scene()));
+    EXPECT_NEAR(p.psnrDb, rendered.error.psnrSrgb8, 2.0);
+    EXPECT_NEAR(p.rays / double(rendered.rays), 1.0, 0.25);
 }
 
 // ---------------------------------------------------------------------------

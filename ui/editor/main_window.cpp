@@ -51,6 +51,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     // panels and the rest refresh (a few ms on a scene of 100,000 spheres).
     connect(&doc_, &SceneDocument::sceneChanged, this, &MainWindow::requestRender);
     connect(&quality_, &QualityChoice::changed, this, &MainWindow::requestRender);
+    connect(&doc_, &SceneDocument::sceneChanged, this,
+            [this] { predictor_.sceneChanged(doc_.scene()); });
+    connect(&predictor_, &ProbePredictor::predicted, &record_, &TradeoffRecord::setProbePrediction);
     view_ = new RenderView(&doc_, this);
     setCentralWidget(view_);
     buildDocks();

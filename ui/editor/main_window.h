@@ -16,6 +16,7 @@
 #include "document/quality_choice.h"
 #include "document/scene_document.h"
 #include "editor/help_dialogs.h"
+#include "tradeoff_dock/probe_predictor.h"
 #include "tradeoff_dock/tradeoff_record.h"
 #include "viewport/render_worker.h"
 
@@ -126,6 +127,7 @@ class MainWindow : public QMainWindow {
     SceneDocument doc_;
     TradeoffRecord record_;
     QualityChoice quality_;
+    ProbePredictor predictor_;  // the Render tab's predictions for scenes never measured
     RenderWorker worker_;
     RenderView* view_ = nullptr;
     ScenePanel* scenePanel_ = nullptr;

@@ -30,8 +30,48 @@ double work(const RenderSettings& r) {
     return double(r.width) * double(r.height) * double(r.samplesPerPixel);
 }
 
+// The probes' error and rays for these settings, when they were made for them.
+const RenderPrediction* probeFor(const Scene& scene, const RenderSettings& want,
+                                 const ProbePrediction* probe) {
+    if (!probe || !(probe->scene.render == want) || !sameSceneContent(scene, probe->scene))
+        return nullptr;
+    return &probe->prediction;
+}
+
+void errorFromProbe(const RenderPrediction& r, Prediction& p) {
+    if (!r.predicted) {
+        p.errorSource = QObject::tr("cannot predict: %1").arg(QString::fromStdString(r.cannot));
+        return;
+    }
+    p.rmseSrgb8 = std::sqrt(r.mseCodes2);
+    p.psnrSrgb8 = r.psnrDb;
+    p.errorSource = QObject::tr("predicted from small probe renders of this scene");
+}
+
+// The probes' rays at the last render's speed, of the same precision if any.
+bool timeFromProbe(const RenderPrediction& r, const std::vector<EditorRender>& renders,
+                   const RenderSettings& want, Prediction& p) {
+    if (!r.predicted || renders.empty()) return false;
+    const EditorRender* speed = &renders.back();
+    for (auto e = renders.rbegin(); e != renders.rend(); ++e)
+        if (e->settings.precision == want.precision && e->rays > 0) {
+            speed = &*e;
+            break;
+        }
+    if (speed->rays == 0 || speed->seconds <= 0) return false;
+    const double raysPerSecond = double(speed->rays) / speed->seconds;
+    p.seconds = r.rays / raysPerSecond;
+    p.timeSource = QObject::tr(
+                       "estimated: %1 Mrays predicted, at the %2 Mrays/s of the last "
+                       "render at %3")
+                       .arg(r.rays / 1e6, 0, 'f', 1)
+                       .arg(raysPerSecond / 1e6, 0, 'f', 1)
+                       .arg(settingsText(speed->settings));
+    return true;
+}
+
 void timeFromRenders(const RenderSettings& want, const std::vector<EditorRender>& renders,
-                     Prediction& p) {
+                     const RenderPrediction* probe, Prediction& p) {
     if (renders.empty()) {
         p.timeSource = QObject::tr("no render has finished yet");
         return;
@@ -42,6 +82,7 @@ void timeFromRenders(const RenderSettings& want, const std::vector<EditorRender>
             p.timeSource = QObject::tr("measured: the last render at these settings");
             return;
         }
+    if (probe && timeFromProbe(*probe, renders, want, p)) return;
     // Rays per second stay put while depth and precision do; the ray count
     // grows with pixels times samples.
     auto scaled = [&](const EditorRender& r, const QString& source) {
@@ -133,9 +174,12 @@ bool sameSceneContent(const Scene& a, const Scene& b) {
 }
 
 Prediction predictSettings(const Scene& scene, const std::vector<EditorRender>& renders,
-                           const MeasureResults* measure, const RenderSettings* settings) {
+                           const MeasureResults* measure, const RenderSettings* settings,
+                           const ProbePrediction* probe) {
     Prediction p;
     const RenderSettings& want = settings ? *settings : scene.render;
+    const RenderPrediction* probed = probeFor(scene, want, probe);
+    Coverage c = Coverage::None;
     if (!measure) {
         p.errorSource = QObject::tr("Measure gives an error prediction");
     } else if (!sameSceneContent(scene, measure->scene)) {
@@ -143,13 +187,14 @@ Prediction predictSettings(const Scene& scene, const std::vector<EditorRender>& 
             "the scene changed since Measure: measure again for an "
             "error prediction");
     } else {
-        const Coverage c = fromMeasure(*measure, want, p);
+        c = fromMeasure(*measure, want, p);
         // An interpolated time yields to the editor's own renders, which come
         // from the very settings or a plain scaling of them.
         if (c == Coverage::Exact || (c == Coverage::Interpolated && renders.empty())) return p;
         p.seconds.reset();
     }
-    timeFromRenders(want, renders, p);
+    if (c == Coverage::None && probed) errorFromProbe(*probed, p);
+    timeFromRenders(want, renders, probed, p);
     return p;
 }
 

@@ -12,6 +12,7 @@
 
 #include "analysis/tradeoff.h"
 #include "scene/scene.h"
+#include "tradeoff_dock/probe_predictor.h"
 
 namespace whitted::ui {
 
@@ -54,8 +55,14 @@ bool sameSceneContent(const Scene& a, const Scene& b);
 //    same settings, else one with the same depth and precision scaled by
 //    pixels times samples, else the newest scaled the same way (rough).
 //  - The error interpolated between Measure's neighbouring sample counts (log-
-//    log, as error falls like a power of the samples), else none, with the reason.
+//    log, as error falls like a power of the samples).
+//  - Where Measure does not cover the settings, the error and the rays from
+//    `probe` (probe_predictor.h) when it was made for this very scene and
+//    these settings; the time is then those rays at the speed of the last
+//    render (of the same precision if any), where no render at these settings
+//    gives it. Else no error, with the reason.
 Prediction predictSettings(const Scene& scene, const std::vector<EditorRender>& renders,
-                           const MeasureResults* measure, const RenderSettings* settings = nullptr);
+                           const MeasureResults* measure, const RenderSettings* settings = nullptr,
+                           const ProbePrediction* probe = nullptr);
 
 }  // namespace whitted::ui

@@ -17,9 +17,15 @@ void TradeoffRecord::setMeasure(std::optional<MeasureResults> results) {
     emit changed();
 }
 
+void TradeoffRecord::setProbePrediction(std::shared_ptr<const ProbePrediction> probe) {
+    probe_ = std::move(probe);
+    emit changed();
+}
+
 void TradeoffRecord::clear() {
     renders_.clear();
     measure_.reset();
+    probe_.reset();
     emit changed();
 }
 

@@ -5,6 +5,7 @@
 
 #include <QObject>
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -26,11 +27,15 @@ class TradeoffRecord : public QObject {
     void setMeasure(std::optional<MeasureResults> results);
     const MeasureResults* measure() const { return measure_ ? &*measure_ : nullptr; }
 
+    // The newest probe prediction (probe_predictor.h); it speaks for its scene only.
+    void setProbePrediction(std::shared_ptr<const ProbePrediction> probe);
+    const ProbePrediction* probePrediction() const { return probe_.get(); }
+
     // Forgets everything: another scene was opened.
     void clear();
 
     Prediction predict(const Scene& scene, const RenderSettings* settings = nullptr) const {
-        return predictSettings(scene, renders_, measure(), settings);
+        return predictSettings(scene, renders_, measure(), settings, probe_.get());
     }
 
   signals:
@@ -39,6 +44,7 @@ class TradeoffRecord : public QObject {
   private:
     std::vector<EditorRender> renders_;  // newest last
     std::optional<MeasureResults> measure_;
+    std::shared_ptr<const ProbePrediction> probe_;
 };
 
 }  // namespace whitted::ui

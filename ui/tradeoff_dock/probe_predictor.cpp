@@ -1,0 +1,29 @@
+#include "tradeoff_dock/probe_predictor.h"
+
+#include <utility>
+
+namespace whitted::ui {
+
+ProbePredictor::ProbePredictor(QObject* parent)
+    : QObject(parent),
+      requests_(RequestThread<Scene>::Policy::LatestWins,
+                [this](Scene&& scene, quint64 ticket) { predict(std::move(scene), ticket); }) {
+    qRegisterMetaType<std::shared_ptr<const whitted::ui::ProbePrediction>>();
+    quiet_.setSingleShot(true);
+    quiet_.setInterval(kQuietMs);
+    connect(&quiet_, &QTimer::timeout, this, [this] { requests_.request(std::move(waiting_)); });
+}
+
+void ProbePredictor::sceneChanged(const Scene& scene) {
+    waiting_ = scene;
+    quiet_.start();
+}
+
+void ProbePredictor::predict(Scene&& scene, quint64 ticket) {
+    auto result = std::make_shared<ProbePrediction>();
+    result->prediction = predictRender(scene);
+    result->scene = std::move(scene);
+    if (!requests_.stale(ticket)) emit predicted(std::move(result));
+}
+
+}  // namespace whitted::ui

@@ -48,16 +48,23 @@ void errorFromProbe(const RenderPrediction& r, Prediction& p) {
     p.errorSource = QObject::tr("predicted from small probe renders of this scene");
 }
 
-// The probes' rays at the last render's speed, of the same precision if any.
+// The probes' rays at the speed of the last render of the same depth and
+// precision, else of the same precision, else of the last: rays per second
+// change with the depth (deeper rays are less coherent) and the precision.
 bool timeFromProbe(const RenderPrediction& r, const std::vector<EditorRender>& renders,
                    const RenderSettings& want, Prediction& p) {
     if (!r.predicted || renders.empty()) return false;
-    const EditorRender* speed = &renders.back();
-    for (auto e = renders.rbegin(); e != renders.rend(); ++e)
-        if (e->settings.precision == want.precision && e->rays > 0) {
-            speed = &*e;
-            break;
-        }
+    const auto newest = [&](auto alike) -> const EditorRender* {
+        for (auto e = renders.rbegin(); e != renders.rend(); ++e)
+            if (e->rays > 0 && alike(e->settings)) return &*e;
+        return nullptr;
+    };
+    const EditorRender* speed = newest([&](const RenderSettings& s) {
+        return s.maxDepth == want.maxDepth && s.precision == want.precision;
+    });
+    if (!speed)
+        speed = newest([&](const RenderSettings& s) { return s.precision == want.precision; });
+    if (!speed) speed = &renders.back();
     if (speed->rays == 0 || speed->seconds <= 0) return false;
     const double raysPerSecond = double(speed->rays) / speed->seconds;
     p.seconds = r.rays / raysPerSecond;

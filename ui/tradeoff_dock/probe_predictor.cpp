@@ -12,6 +12,7 @@ ProbePredictor::ProbePredictor(QObject* parent)
     quiet_.setSingleShot(true);
     quiet_.setInterval(kQuietMs);
     connect(&quiet_, &QTimer::timeout, this, [this] { requests_.request(std::move(waiting_)); });
+    connect(this, &ProbePredictor::posted, this, &ProbePredictor::deliver, Qt::QueuedConnection);
 }
 
 void ProbePredictor::sceneChanged(const Scene& scene) {
@@ -23,7 +24,21 @@ void ProbePredictor::predict(Scene&& scene, quint64 ticket) {
     auto result = std::make_shared<ProbePrediction>();
     result->prediction = predictRender(scene);
     result->scene = std::move(scene);
-    if (!requests_.stale(ticket)) emit predicted(std::move(result));
+    if (requests_.stale(ticket)) return;
+    {
+        std::lock_guard lock(outboxMutex_);
+        outbox_ = std::move(result);
+    }
+    emit posted();
+}
+
+void ProbePredictor::deliver() {
+    std::shared_ptr<const ProbePrediction> result;
+    {
+        std::lock_guard lock(outboxMutex_);
+        result = std::move(outbox_);
+    }
+    if (result) emit predicted(std::move(result));
 }
 
 }  // namespace whitted::ui

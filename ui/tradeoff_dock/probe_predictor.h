@@ -3,13 +3,16 @@
 // edit (it renders small probes of the scene, a few tenths of a second on a
 // glass field, and would only compete with the view's render during a drag).
 // The newest scene wins (core/base/request_thread.h); a result comes back
-// through a queued signal with the scene it was made for.
+// with the scene it was made for, through an outbox under a mutex of our own
+// (as RenderWorker's frames do: ThreadSanitizer cannot see Qt's event queue
+// hand a shared_ptr over, and reported the hand-over as a race).
 #pragma once
 
 #include <QObject>
 #include <QTimer>
 
 #include <memory>
+#include <mutex>
 
 #include "analysis/render_prediction.h"
 #include "base/request_thread.h"
@@ -35,10 +38,17 @@ class ProbePredictor : public QObject {
     void sceneChanged(const Scene& scene);
 
   signals:
+    // In the GUI thread.
     void predicted(std::shared_ptr<const whitted::ui::ProbePrediction> result);
+    // From the prediction thread: a result is waiting in the outbox.
+    void posted();
 
   private:
     void predict(Scene&& scene, quint64 ticket);
+    void deliver();  // GUI thread: takes the result and emits predicted()
+
+    std::mutex outboxMutex_;
+    std::shared_ptr<const ProbePrediction> outbox_;  // guarded by outboxMutex_
 
     Scene waiting_;
     QTimer quiet_;

@@ -34,6 +34,7 @@
 #include "image/image_io.h"
 #include "panels/scene_panel.h"
 #include "scene/scene_io.h"
+#include "support/export_support.h"
 #include "support/gui_test_main.h"
 #include "support/main_window_fixture.h"
 #include "support/test_support.h"
@@ -275,19 +276,9 @@ TEST_F(EditorCommandsTest, ExportTurntable_WritesNumberedFramesTheFirstOfThemThe
     EXPECT_EQ(dialog.settings().turntableFrames, 0) << "a still unless asked";
     frames->setValue(3);
     const auto exportWith = [&](const ExportSettings& settings) {
-        ExportJob job(scene, settings);
-        bool done = false, ok = false;
-        QString message;
-        // &job as context: queued to this thread (finished comes from the export thread).
-        QObject::connect(&job, &ExportJob::finished, &job, [&](bool success, const QString& text) {
-            done = true;
-            ok = success;
-            message = text;
-        });
-        job.start();
-        EXPECT_TRUE(QTest::qWaitFor([&] { return done; }, 30000));
-        EXPECT_TRUE(ok) << message.toStdString();
-        return message;
+        const ExportOutcome exported = exportAndWait(scene, settings);
+        EXPECT_TRUE(exported.finished && exported.ok) << exported.message.toStdString();
+        return exported.message;
     };
     const QString message = exportWith(dialog.settings());
     EXPECT_TRUE(message.contains(QStringLiteral("3 frames"))) << message.toStdString();

@@ -11,10 +11,10 @@
 #include <QTest>
 
 #include "analysis/quality_check.h"
-#include "editor/export_job.h"
 #include "editor/main_window.h"
 #include "image/image_error.h"
 #include "image/image_io.h"
+#include "support/export_support.h"
 #include "support/gui_test_main.h"
 #include "support/main_window_fixture.h"
 #include "support/test_support.h"
@@ -101,18 +101,10 @@ TEST_F(QualityEditorTest, ExportToPreview_WritesAFileThatMeetsIt_AndSaysWhatItRe
     ExportSettings settings = dialog.settings();
     ASSERT_TRUE(settings.quality.has_value());
 
-    ExportJob job(doc->scene(), settings);
-    bool done = false, ok = false;
-    QString message;
-    // &job as context: queued to this thread (finished comes from the export thread).
-    QObject::connect(&job, &ExportJob::finished, &job, [&](bool success, const QString& text) {
-        done = true;
-        ok = success;
-        message = text;
-    });
-    job.start();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return done; }, kRenderTimeoutMs));
-    ASSERT_TRUE(ok) << message.toStdString();
+    const ExportOutcome exported = exportAndWait(doc->scene(), settings, kRenderTimeoutMs);
+    ASSERT_TRUE(exported.finished);
+    const QString& message = exported.message;
+    ASSERT_TRUE(exported.ok) << message.toStdString();
     EXPECT_TRUE(message.contains(QStringLiteral("Preview: 35 dB"))) << message.toStdString();
     EXPECT_TRUE(message.contains(QStringLiteral("samples per pixel, about ")))
         << message.toStdString();

@@ -12,6 +12,7 @@
 #include <string>
 #include <thread>
 
+#include "base/thread_cpu_time.h"
 #include "scene/scene_io.h"
 #include "tracer/kernel_dispatch.h"
 
@@ -108,6 +109,7 @@ class TileRenderer {
         result.threads = threads_;
         result.completed = !stopped_;
         result.rays = rays_;
+        result.tilesCpuSeconds = tilesCpuSeconds_;
         result.image = std::move(image_);
         return result;
     }
@@ -213,6 +215,7 @@ class TileRenderer {
                                         ? 1.0 / (double(block_) * block_)
                                         : double(pass.lastSample - pass.firstSample);
         auto worker = [&] {
+            const double cpuAtStart = threadCpuSeconds();
             RayCounts counts;
             Row row;  // the worker's own
             for (;;) {
@@ -243,6 +246,7 @@ class TileRenderer {
             }
             std::lock_guard lock(raysMutex_);
             rays_ += counts;
+            tilesCpuSeconds_ += threadCpuSeconds() - cpuAtStart;
         };
         std::vector<std::thread> helpers;
         for (int i = 1; i < std::min<int>(threads_, ids.size()); ++i) helpers.emplace_back(worker);
@@ -366,8 +370,9 @@ class TileRenderer {
     std::atomic<bool> stopped_{false};
     std::atomic<double> workDone_{0.0};
     double totalWork_ = 0.0;
-    std::mutex raysMutex_;
+    std::mutex raysMutex_;  // guards rays_ and tilesCpuSeconds_
     RayCounts rays_;
+    double tilesCpuSeconds_ = 0.0;
     std::vector<Tile> tiles_;
     int threads_ = 1;
     std::vector<TileSamplingState> tileStates_;  // adaptive renders only

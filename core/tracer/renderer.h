@@ -104,7 +104,10 @@ struct RenderResult {
     Image image;
     RayCounts rays;
     double seconds = 0.0;  // wall time of render(), preparation included
-    int threads = 1;       // worker threads used
+    // CPU time the worker threads spent on tiles, summed: what the tracing
+    // cost, whatever else ran on the machine (thread_cpu_time.h).
+    double tilesCpuSeconds = 0.0;
+    int threads = 1;  // worker threads used
     // Samples per pixel in every pixel of `image`. 0: stopped before one
     // full-size pass was complete; `image` then holds the full-size tiles
     // finished, and zero elsewhere (the preview is only in the tile reports).

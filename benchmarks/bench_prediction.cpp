@@ -2,11 +2,11 @@
 // scene and two generated fields, at four settings, the PSNR, rays and
 // seconds predictRender() expects against what the render then measures
 // (PSNR against a converged render: double, 512 samples, depth 14). The
-// seconds are the rays at the throughput of the render before, of the
-// settings above in the table, as the editor predicts from its last render;
-// the first row of a scene has the probes' own. The last column takes the
-// speed of a one-sample render at the same depth and precision instead (the
-// editor prefers such a render when it has one).
+// seconds three ways: the rays at the throughput of the render before (the
+// settings above in the table; the first row of a scene has the probes'
+// own), at that of a one-sample render at the same depth and precision, and
+// predictRender()'s own, from its timed probes (speed_probe.h), which the
+// editor shows. The last column also gives the render's measured seconds.
 // Usage: bench_prediction [WIDTH HEIGHT] (default 320 240). Prints a Markdown table.
 #include <cmath>
 #include <cstdio>
@@ -60,9 +60,10 @@ int main(int argc, char** argv) {
     const int height = argc > 2 ? std::atoi(argv[2]) : 240;
     std::printf(
         "| scene | spp, depth | PSNR predicted | measured | off by | rays predicted / "
-        "measured | seconds predicted / measured | same depth |\n"
-        "|---|---|---|---|---|---|---|---|\n");
-    int within = 0, total = 0, raysWithin = 0, secondsWithin = 0, sameDepthWithin = 0;
+        "measured | seconds predicted / measured | same depth | probes' speed |\n"
+        "|---|---|---|---|---|---|---|---|---|\n");
+    int within = 0, total = 0, raysWithin = 0, secondsWithin = 0, sameDepthWithin = 0,
+        probedWithin = 0;
     for (const Named& n : scenes(width, height)) {
         const Image reference = convergedReference(n.scene);
         double secondsPerRay = 0.0;  // of the render before: none yet
@@ -82,20 +83,23 @@ int main(int argc, char** argv) {
             const FixedCheck one = checkFixed(oneSample, reference);
             const double sameDepth = p.rays * (one.seconds / one.rays) / m.seconds;
             sameDepthWithin += std::fabs(sameDepth - 1.0) <= 0.25;
+            const double probed = p.seconds / m.seconds;
+            probedWithin += std::fabs(probed - 1.0) <= 0.25;
             ++total;
             within += std::fabs(off) <= 2.0;
             raysWithin += std::fabs(rays - 1.0) <= 0.25;
             secondsWithin += std::fabs(seconds - 1.0) <= 0.25;
             std::printf(
                 "| %s | %d, %d | %.1f dB (depth %.3g, float %.3g, samples %.3g codes^2; "
-                "slope %.2f) | %.1f dB | %+.1f | %.2f | %.2f | %.2f |\n",
+                "slope %.2f) | %.1f dB | %+.1f | %.2f | %.2f | %.2f | %.2f (%.3f s) |\n",
                 n.name.c_str(), spp, depth, p.psnrDb, p.depthMse, p.precisionMse, p.samplingMse,
-                p.samplingSlope, m.error.psnrSrgb8, off, rays, seconds, sameDepth);
+                p.samplingSlope, m.error.psnrSrgb8, off, rays, seconds, sameDepth, probed,
+                m.seconds);
             std::fflush(stdout);
         }
     }
     std::printf(
         "\nPSNR within 2 dB: %d of %d; rays within 25%%: %d; seconds within 25%%: %d, "
-        "from a same-depth render: %d\n",
-        within, total, raysWithin, secondsWithin, sameDepthWithin);
+        "from a same-depth render: %d, from the probes' speed: %d\n",
+        within, total, raysWithin, secondsWithin, sameDepthWithin, probedWithin);
 }

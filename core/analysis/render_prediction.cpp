@@ -7,6 +7,7 @@
 #include <map>
 
 #include "analysis/quality_target.h"
+#include "analysis/speed_probe.h"
 #include "analysis/tradeoff.h"
 #include "tracer/renderer.h"
 
@@ -106,6 +107,7 @@ RenderPrediction predictRender(const Scene& scene) {
     p.mseCodes2 = p.depthMse + p.precisionMse + p.samplingMse;
     p.psnrDb = psnrOf(p.mseCodes2);
     p.rays = noise.raysPerSample * pixels * scene.render.samplesPerPixel;
+    p.seconds = predictSeconds(probeSpeed(scene, kNoiseProbeSide), scene, p.rays);
     p.probeRays = plan.probeRays + noise.rays;
     p.probeSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -13,7 +13,9 @@
 //   noise is scaled by its side over the picture's, and by a factor fitted
 //   on the shipped scenes (render_prediction.cpp).
 // - The rays: the probe's rays per sample at the scene's depth, times the
-//   picture's samples. Seconds follow from a throughput the caller measured.
+//   picture's samples.
+// - The seconds: those rays at the costs that timed renders of the scene at
+//   two small sizes show (speed_probe.h).
 //
 // For a picture under kNoiseProbeSide / 2 pixels across, the probes would
 // cost more than the render: `predicted` is false and `cannot` says why.
@@ -37,8 +39,9 @@ struct RenderPrediction {
     double depthMse = 0.0, precisionMse = 0.0, samplingMse = 0.0;  // its parts
     double samplingSlope = 0.0;   // the noise falls like samples^-slope past the probes
     double rays = 0.0;            // the render's
+    double seconds = 0.0;         // the render's on this machine, as fast as the probes ran
     std::uint64_t probeRays = 0;  // what predicting traced
-    double probeSeconds = 0.0;    // and how long it took: a throughput for `rays`
+    double probeSeconds = 0.0;    // how long predicting took
 };
 
 RenderPrediction predictRender(const Scene& scene);

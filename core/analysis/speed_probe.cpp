@@ -1,0 +1,99 @@
+#include "analysis/speed_probe.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "analysis/tradeoff.h"
+#include "base/thread_cpu_time.h"
+#include "tracer/renderer.h"
+
+namespace whitted {
+
+namespace {
+
+// A jittered probe's samples a pixel: enough that its first sample, a
+// pixel's centre, is an eighth of its rays.
+constexpr int kJitteredSamples = 8;
+// Past this, a few pixels' timing says nothing about the power of size.
+constexpr double kLargestSizePower = 1.0;
+
+struct Timed {
+    double rays = 0.0, cpuSeconds = 0.0;
+};
+
+// The cheaper of two renders, in the CPU time of the threads that traced
+// it: a render the machine's other work slowed costs no more CPU time, but
+// the caches it shares still vary.
+Timed timedRender(const Scene& scene) {
+    Timed best;
+    for (int attempt = 0; attempt < 2; ++attempt) {
+        const RenderResult r = render(scene, oneShotOptions());
+        if (attempt == 0 || r.tilesCpuSeconds < best.cpuSeconds)
+            best = {double(r.rays.total()), r.tilesCpuSeconds};
+    }
+    return best;
+}
+
+// The centres' cost; the jittered samples' cost from the difference of the
+// two renders, which leaves the centres out.
+RayCost rayCostAt(const Scene& scene, int side) {
+    const int longest = std::max(scene.render.width, scene.render.height);
+    TradeoffSettings s{1, scene.render.maxDepth, scene.render.precision,
+                       std::min(1.0, double(side) / longest)};
+    Scene probe = withSettings(scene, s);
+    const Timed centres = timedRender(probe);
+    probe.render.samplesPerPixel = kJitteredSamples;
+    const Timed jittered = timedRender(probe);
+    RayCost cost;
+    cost.centre = centres.cpuSeconds / std::max(1.0, centres.rays);
+    cost.jittered = std::max(0.0, jittered.cpuSeconds - centres.cpuSeconds) /
+                    std::max(1.0, jittered.rays - centres.rays);
+    if (cost.jittered <= 0.0) cost.jittered = cost.centre;
+    return cost;
+}
+
+// The render of one pixel, in the CPU time of this thread, which prepares
+// the scene: the overhead, as any other render would pay it.
+double overheadOf(const Scene& scene) {
+    RenderOptions options = oneShotOptions();
+    options.region = PixelRect{0, 0, 1, 1};
+    const double start = threadCpuSeconds();
+    render(scene, options);
+    return threadCpuSeconds() - start;
+}
+
+// The threads a render of the whole picture runs on: no more than its tiles.
+int threadsFor(const Scene& scene) {
+    const RenderOptions options;
+    const int tileSide = std::max(1, options.tileSize);
+    const int tiles = ((scene.render.width + tileSide - 1) / tileSide) *
+                      ((scene.render.height + tileSide - 1) / tileSide);
+    return std::max(1, std::min(resolveThreadCount(options.threads), tiles));
+}
+
+}  // namespace
+
+SpeedProbe probeSpeed(const Scene& scene, int side) {
+    SpeedProbe probe;
+    probe.overheadSeconds = std::min(overheadOf(scene), overheadOf(scene));
+    probe.side = std::min(side, std::max(scene.render.width, scene.render.height));
+    probe.atSide = rayCostAt(scene, probe.side);
+    probe.atHalfSide = rayCostAt(scene, probe.side / 2);
+    const double all = probe.atSide.centre + probe.atSide.jittered;
+    const double allAtHalf = probe.atHalfSide.centre + probe.atHalfSide.jittered;
+    if (all > 0.0 && allAtHalf > 0.0)
+        probe.sizePower = std::clamp(std::log2(allAtHalf / all), 0.0, kLargestSizePower);
+    return probe;
+}
+
+double predictSeconds(const SpeedProbe& probe, const Scene& scene, double rays) {
+    const int longest = std::max(scene.render.width, scene.render.height);
+    const double finer = std::pow(double(longest) / std::max(1, probe.side), -probe.sizePower);
+    const int samples = std::max(1, scene.render.samplesPerPixel);
+    const double centres = rays / samples;
+    const double cpuSeconds =
+        finer * (centres * probe.atSide.centre + (rays - centres) * probe.atSide.jittered);
+    return probe.overheadSeconds + cpuSeconds / threadsFor(scene);
+}
+
+}  // namespace whitted

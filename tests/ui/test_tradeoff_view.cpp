@@ -192,8 +192,8 @@ TEST_F(TradeoffViewTest, Predictions_BeforeMeasure_TimeFromTheLastRender_ErrorPo
 }
 
 // Issue 15, item 3: once the edits pause, small probe renders predict the
-// error and the rays of the settings; the time is those rays at the last
-// render's speed. The seed's error, checked against a converged render.
+// error, the rays and the time of the settings. The seed's error, checked
+// against a converged render; the time only where no render has measured it.
 TEST_F(TradeoffViewTest, Predictions_FromProbes_WithinTwoDecibelsOfTheRender) {
     auto* time = child<QLabel>("predictedTime");
     auto* error = child<QLabel>("predictedError");
@@ -212,19 +212,22 @@ TEST_F(TradeoffViewTest, Predictions_FromProbes_WithinTwoDecibelsOfTheRender) {
         << error->text().toStdString();
     EXPECT_TRUE(error->text().contains(QStringLiteral("predicted from small probe renders")));
     // The view has rendered these settings by now, so the label's time is
-    // measured; before that render, the time is the predicted rays at the
-    // speed of the render before (1 spp, 1.5 Mrays in 0.1 s here).
+    // measured; before that render (here: after a render at 1 spp, or none),
+    // the probes' timed renders give it.
     EXPECT_TRUE(time->text().contains(QStringLiteral("measured"))) << time->text().toStdString();
     RenderSettings before = want;
     before.samplesPerPixel = 1;
-    const Prediction fromProbe =
-        predictSettings(doc->scene(), {{before, 0.1, 1'500'000}}, nullptr, nullptr,
-                        window->tradeoffRecord()->probePrediction());
-    ASSERT_TRUE(fromProbe.seconds.has_value());
-    EXPECT_DOUBLE_EQ(*fromProbe.seconds, p.rays / 15e6);
-    EXPECT_TRUE(
-        fromProbe.timeSource.contains(QStringLiteral("Mrays predicted, at the 15.0 Mrays/s")))
-        << fromProbe.timeSource.toStdString();
+    for (const std::vector<EditorRender>& renders :
+         {std::vector<EditorRender>{{before, 0.1, 1'500'000}}, std::vector<EditorRender>{}}) {
+        const Prediction fromProbe = predictSettings(doc->scene(), renders, nullptr, nullptr,
+                                                     window->tradeoffRecord()->probePrediction());
+        ASSERT_TRUE(fromProbe.seconds.has_value());
+        EXPECT_DOUBLE_EQ(*fromProbe.seconds, p.seconds);
+        EXPECT_TRUE(fromProbe.timeSource.contains(
+            QStringLiteral("predicted from small timed probe renders: %1 Mrays")
+                .arg(p.rays / 1e6, 0, 'f', 1)))
+            << fromProbe.timeSource.toStdString();
+    }
 
     const FixedCheck rendered = checkFixed(doc->scene(), convergedReference(doc->scene()));
     EXPECT_NEAR(p.psnrDb, rendered.error.psnrSrgb8, 2.0);

@@ -48,48 +48,30 @@ void errorFromProbe(const RenderPrediction& r, Prediction& p) {
     p.errorSource = QObject::tr("predicted from small probe renders of this scene");
 }
 
-// The probes' rays at the speed of the last render of the same depth and
-// precision, else of the same precision, else of the last: rays per second
-// change with the depth (deeper rays are less coherent) and the precision.
-bool timeFromProbe(const RenderPrediction& r, const std::vector<EditorRender>& renders,
-                   const RenderSettings& want, Prediction& p) {
-    if (!r.predicted || renders.empty()) return false;
-    const auto newest = [&](auto alike) -> const EditorRender* {
-        for (auto e = renders.rbegin(); e != renders.rend(); ++e)
-            if (e->rays > 0 && alike(e->settings)) return &*e;
-        return nullptr;
-    };
-    const EditorRender* speed = newest([&](const RenderSettings& s) {
-        return s.maxDepth == want.maxDepth && s.precision == want.precision;
-    });
-    if (!speed)
-        speed = newest([&](const RenderSettings& s) { return s.precision == want.precision; });
-    if (!speed) speed = &renders.back();
-    if (speed->rays == 0 || speed->seconds <= 0) return false;
-    const double raysPerSecond = double(speed->rays) / speed->seconds;
-    p.seconds = r.rays / raysPerSecond;
-    p.timeSource = QObject::tr(
-                       "estimated: %1 Mrays predicted, at the %2 Mrays/s of the last "
-                       "render at %3")
+// The probes' seconds: their rays at the speed their timed renders showed for
+// these samples, depth, precision and picture size (speed_probe.h).
+bool timeFromProbe(const RenderPrediction& r, Prediction& p) {
+    if (!r.predicted || r.seconds <= 0) return false;
+    p.seconds = r.seconds;
+    p.timeSource = QObject::tr("predicted from small timed probe renders: %1 Mrays at %2 Mrays/s")
                        .arg(r.rays / 1e6, 0, 'f', 1)
-                       .arg(raysPerSecond / 1e6, 0, 'f', 1)
-                       .arg(settingsText(speed->settings));
+                       .arg(r.rays / r.seconds / 1e6, 0, 'f', 1);
     return true;
 }
 
 void timeFromRenders(const RenderSettings& want, const std::vector<EditorRender>& renders,
                      const RenderPrediction* probe, Prediction& p) {
-    if (renders.empty()) {
-        p.timeSource = QObject::tr("no render has finished yet");
-        return;
-    }
     for (auto r = renders.rbegin(); r != renders.rend(); ++r)
         if (r->settings == want) {
             p.seconds = r->seconds;
             p.timeSource = QObject::tr("measured: the last render at these settings");
             return;
         }
-    if (probe && timeFromProbe(*probe, renders, want, p)) return;
+    if (probe && timeFromProbe(*probe, p)) return;
+    if (renders.empty()) {
+        p.timeSource = QObject::tr("no render has finished yet");
+        return;
+    }
     // Rays per second stay put while depth and precision do; the ray count
     // grows with pixels times samples.
     auto scaled = [&](const EditorRender& r, const QString& source) {

@@ -58,9 +58,8 @@ bool sameSceneContent(const Scene& a, const Scene& b);
 //    log, as error falls like a power of the samples).
 //  - Where Measure does not cover the settings, the error and the rays from
 //    `probe` (probe_predictor.h) when it was made for this very scene and
-//    these settings; the time is then those rays at the speed of the last
-//    render (of the same precision if any), where no render at these settings
-//    gives it. Else no error, with the reason.
+//    these settings; where no render at these settings gives the time, so
+//    do the probes' timed renders. Else no error, with the reason.
 Prediction predictSettings(const Scene& scene, const std::vector<EditorRender>& renders,
                            const MeasureResults* measure, const RenderSettings* settings = nullptr,
                            const ProbePrediction* probe = nullptr);

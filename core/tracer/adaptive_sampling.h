@@ -10,8 +10,7 @@
 // it, from the picture as it was after the tile's last pass (A) and after this
 // one (F): nothing more is stored. Stratified samples (progressiveSample())
 // make the halves' difference, if anything, larger than F's error.
-// A tile's first pass has one sample: then every fourth pixel of every fourth
-// row also traces a second, and the pair (x1, x2) gives (x1 - x2)^2 / 2.
+// A tile's first pass has two samples, so that it has halves to compare.
 //
 // Rounding to 8-bit codes adds to the error: a value off by e < 1 code rounds
 // to a different code with probability |e|, so a pixel's squared 8-bit error
@@ -64,10 +63,6 @@ struct TileErrorEstimate {
 
     // A channel whose picture value went from `before` (n/2 samples) to `after` (n).
     void addHalves(float before, float after) { add(srgbCode(before) - srgbCode(after)); }
-    // A channel of a pixel with two single samples.
-    void addPair(float first, float second) {
-        add((srgbCode(first) - srgbCode(second)) / std::sqrt(2.0));
-    }
     void add(double e) {
         squaredSum += codeSquaredError(e);
         largest = std::max(largest, std::fabs(e));

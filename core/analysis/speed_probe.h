@@ -2,8 +2,8 @@
 // renders of it (issue 15, item 3: the Render tab's predicted time).
 //
 // A ray's cost depends on the scene (how many spheres a ray passes near),
-// on the sample (a pixel's centre, traced in coherent rows, runs up to twice
-// as fast as a jittered sample), and on the picture's size: the finer the
+// on the sample (a pixel's centre, traced in coherent rows, costs a half to a
+// third of a jittered sample on a few balls), and on the picture's size: the finer the
 // pixels, the more alike the rays of a row, the fewer nodes of the tree they
 // visit. The probe times pixel centres and jittered samples at two sizes, a
 // side and half of it, and carries the cost a ray down to the picture's size
@@ -11,8 +11,8 @@
 // to 0.6 on fields of hundreds; docs/quality.md).
 //
 // The probes count CPU time, not wall time: the editor probes while its view
-// renders on the same cores, and a probe timed on the wall clock then took
-// up to twice as long as on an idle machine. The render's seconds are that
+// renders on the same cores, where a probe's wall time would count the time
+// it waits for them. The render's seconds are that
 // CPU time shared among the threads it will run on.
 #pragma once
 

@@ -152,9 +152,12 @@ std::string depthWhy(const QualityPlan& p) {
 }
 
 std::string samplingWhy(const QualityPlan& p) {
-    std::string why =
-        format("samples: each tile until the picture's estimated error is under %.3g codes^2",
-               p.sampling.allowedMse);
+    std::string why = p.sampling.centresFirst
+                          ? "samples: one at each pixel's centre, its error estimated from "
+                            "neighbouring pixels; then "
+                          : "samples: ";
+    why += format("each tile until the picture's estimated error is under %.3g codes^2",
+                  p.sampling.allowedMse);
     if (p.target.largestCodes)
         why += format(" and no pixel's estimate over %.3g codes", p.sampling.allowedLargest);
     return why + ", at most " + std::to_string(p.sampling.maxSamples) + " a pixel";
@@ -212,6 +215,7 @@ QualityPlan planQuality(const Scene& scene, const QualityTarget& target, int max
     // same pixel (light trapped in glass; edges), so each gets the whole limit.
     if (target.largestCodes) plan.sampling.allowedLargest = kLargestMargin * *target.largestCodes;
     plan.sampling.maxSamples = std::max(1, maxSamples);
+    plan.sampling.centresFirst = !target.largestCodes && target.psnrDb <= kCentresFirstUpToDb;
     plan.why = depthWhy(plan) + "\n";
     if (scene.render.precision == Precision::Float)
         plan.why +=

@@ -2,6 +2,25 @@
 
 namespace whitted {
 
+TileErrorEstimate centreSampleEstimate(const Image& image, const PixelRect& tile) {
+    TileErrorEstimate estimate;
+    const double scale = std::sqrt(kNeighbourShare);
+    // The 8-bit codes the user sees: a table lookup, where srgbCode()'s
+    // std::pow would cost more than tracing the centres of a simple scene.
+    auto code = [&](int x, int y, int c) { return int(srgbEncode8(image.pixel(x, y)[c])); };
+    for (int y = tile.y; y < tile.y + tile.height; ++y)
+        for (int x = tile.x; x < tile.x + tile.width; ++x) {
+            const bool right = x + 1 < tile.x + tile.width, below = y + 1 < tile.y + tile.height;
+            for (int c = 0; c < 3; ++c) {
+                const int here = code(x, y, c);
+                if (right) estimate.add(scale * (here - code(x + 1, y, c)));
+                if (below) estimate.add(scale * (here - code(x, y + 1, c)));
+            }
+        }
+    if (estimate.values == 0) estimate.add(255.0);
+    return estimate;
+}
+
 double estimatedPictureMse(const std::vector<TileSamplingState>& tiles) {
     double weighted = 0.0, pixels = 0.0;
     for (const TileSamplingState& t : tiles) {

@@ -27,6 +27,7 @@ struct Pass {
     PassKind kind;
     int firstSample, lastSample;  // samples [first, last) of every pixel
     double work;                  // relative cost, for the progress fraction
+    bool centres = false;         // one sample at each pixel's centre (kPixelCentre)
 };
 
 // Centre-out order: the middle of the image, where people look, arrives first.
@@ -153,8 +154,9 @@ class TileRenderer {
             image_ = Image(s_.width, s_.height);
     }
 
-    // The preview, two samples everywhere, then passes that double the
-    // samples of the tiles tilesToRefine() picks, until it picks none.
+    // The preview, two samples everywhere (or first the centres), then passes
+    // that double the samples of the tiles tilesToRefine() picks, until it
+    // picks none.
     RenderResult runAdaptive() {
         const AdaptiveSampling& limits = *options_.adaptive;
         sums_ = Sums(size_t(s_.width) * s_.height);
@@ -173,6 +175,15 @@ class TileRenderer {
             index = 1;
         }
         int samplesPasses = 0;
+        if (limits.centresFirst) {
+            const double pixels = pixelsRendered(settings_, options_);
+            const Pass centres{PassKind::Samples, 0, 1, pixels, true};
+            totalWork_ = centres.work * (1.0 + remainingPassesGuess(limits));
+            startImage(PassKind::Samples);
+            runPass(centres, index, index + 1, refine);
+            ++index, ++samplesPasses;
+            refine = stopped_ ? std::vector<int>() : tilesToRefine(tileStates_, limits);
+        }
         RenderResult result;
         while (!refine.empty() && !stopped_) {
             // One pass for each sample count among the chosen tiles, fewest first.
@@ -180,10 +191,13 @@ class TileRenderer {
             for (int t : refine) bySamples[tileStates_[t].samples].push_back(t);
             for (const auto& [done, ids] : bySamples) {
                 if (stopped_) break;
-                const int next = std::min(limits.maxSamples, done == 0 ? 2 : 2 * done);
+                // After the centres a tile starts the sequence over: a
+                // centre is not one of its stratified samples.
+                const int first = done == 1 ? 0 : done;
+                const int next = std::min(limits.maxSamples, done <= 1 ? 2 : 2 * done);
                 double pixels = 0.0;
                 for (int t : ids) pixels += tileStates_[t].pixels;
-                const Pass pass{PassKind::Samples, done, next, pixels * (next - done)};
+                const Pass pass{PassKind::Samples, first, next, pixels * (next - first)};
                 totalWork_ = workDone_ + pass.work * remainingPassesGuess(limits);
                 startImage(PassKind::Samples);
                 runPass(pass, index, index + 1, ids);
@@ -294,16 +308,20 @@ class TileRenderer {
         if (pass.kind == PassKind::Preview) return renderPreviewTile(tile, counts);
         row.radiance.resize(tile.w);
         row.sums.resize(tile.w);
-        const bool oneSample = pass.firstSample == 0 && pass.lastSample == 1 && sums_.empty();
+        const bool oneSample =
+            pass.centres || (pass.firstSample == 0 && pass.lastSample == 1 && sums_.empty());
         for (int y = tile.y; y < tile.y + tile.h; ++y) {
             if (stopRequested()) return false;
             if (oneSample) {
-                traceCameraRow(s_, y, tile.x, tile.w, 0, row.radiance.data(), counts);
+                traceCameraRow(s_, y, tile.x, tile.w, pass.centres ? kPixelCentre : 0,
+                               row.radiance.data(), counts);
                 storeSamples(row.radiance.data(), tile.x, y, tile.w);
             } else {
                 renderRow(pass, tile, y, row, counts, estimate);
             }
         }
+        if (pass.centres && estimate)
+            *estimate = centreSampleEstimate(image_, {tile.x, tile.y, tile.w, tile.h});
         return true;
     }
 

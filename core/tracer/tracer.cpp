@@ -224,7 +224,7 @@ Vec<T> tracePixelSample(const PreparedScene<T>& s, int i, int j, T u, T v, RayCo
 
 template <typename T>
 CameraSample<T> pixelSample(const PreparedScene<T>& s, int i, int j, int n) {
-    if (s.samplesPerPixel == 1) return {i, j, T(0.5), T(0.5)};
+    if (s.samplesPerPixel == 1 || n == kPixelCentre) return {i, j, T(0.5), T(0.5)};
     const SubPixel sp = s.openEndedSamples ? progressiveSample(n, pixelSeed(i, j))
                                            : subPixelSample(n, s.samplesPerPixel, pixelSeed(i, j));
     return {i, j, T(sp.u), T(sp.v)};

@@ -156,6 +156,11 @@ void traceCameraRow(const PreparedScene<T>& s, int y, int x0, int count, int n, 
 template <typename T>
 Vec<T> tracePixelSample(const PreparedScene<T>& s, int i, int j, T u, T v, RayCounts& counts);
 
+// The sample index that means the pixel's centre whatever the scene's samples
+// a pixel: an adaptive render's first pass where one sample may do
+// (AdaptiveSampling::centresFirst).
+inline constexpr int kPixelCentre = -1;
+
 // Sub-pixel offset of sample n of pixel (i, j) for the scene's samples_per_pixel (SPEC §4).
 template <typename T>
 CameraSample<T> pixelSample(const PreparedScene<T>& s, int i, int j, int n);

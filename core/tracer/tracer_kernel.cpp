@@ -244,7 +244,7 @@ void kernelCameraRow(const PreparedScene<T>& s, int y, int x0, int count, int n,
     V laneIndex{};
     for (int l = 0; l < RayPacket<T>::kWidth; ++l) laneIndex[l] = T(l);
     traceCameraPackets(s, count, radiance, counts, [&](int first, int m, V& px, V& py) {
-        if (s.samplesPerPixel == 1) {  // pixel centres, as pixelSample() gives them
+        if (s.samplesPerPixel == 1 || n == kPixelCentre) {  // as pixelSample() gives them
             px = (laneIndex + T(x0 + first)) + T(0.5);
             py = V{} + (T(y) + T(0.5));
             return;

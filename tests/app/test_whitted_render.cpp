@@ -362,6 +362,40 @@ TEST(WhittedRender, QualityFinal_MeetsItsTargetAgainstAConvergedRenderAndSaysWhy
     EXPECT_EQ(q["tiles_at_sample_limit"], 0);
 }
 
+// Draft is loose enough that one sample at each pixel's centre may do: where
+// the picture's estimate says it does, the render is the one-sample render at
+// the chosen depth, pixel for pixel, and still meets 20 dB.
+TEST(WhittedRender, QualityDraft_TracesThePixelCentresAndStopsThereWhereThatMeetsIt) {
+    TempDir dir;
+    const fs::path out = dir / "draft.exr", one = dir / "one.exr", ref = dir / "ref.exr",
+                   stats = dir / "stats.json";
+    const std::vector<std::string> size = {"--width", "320", "--height", "240"};
+    auto args = [&](std::vector<std::string> list) {
+        list.insert(list.begin() + 1, size.begin(), size.end());
+        return list;
+    };
+    const ProgramRun r = runRender(args({test::kSeedScenePath, "-o", out.string(), "--quality",
+                                         "draft", "--stats", stats.string()}));
+    ASSERT_EQ(r.exitCode, 0) << describe(r);
+    EXPECT_NE(r.err.find("samples: one at each pixel's centre, its error estimated from "
+                         "neighbouring pixels"),
+              std::string::npos)
+        << r.err;
+    const nlohmann::json j = nlohmann::json::parse(test::readFile(stats));
+    EXPECT_EQ(j["quality"]["samples_per_pixel_most"], 1) << j.dump(2);
+    const std::string depth = std::to_string(j["max_depth"].get<int>());
+    const ProgramRun fixed = runRender(args(
+        {test::kSeedScenePath, "-o", one.string(), "--spp", "1", "--depth", depth, "--quiet"}));
+    ASSERT_EQ(fixed.exitCode, 0) << describe(fixed);
+    const Image draft = readImage(out);
+    EXPECT_EQ(draft.rgb, readImage(one).rgb) << "not the one-sample render at depth " << depth;
+    const ProgramRun converged =
+        runRender(args({test::kSeedScenePath, "-o", ref.string(), "--spp", "256", "--depth", "12",
+                        "--precision", "double", "--quiet"}));
+    ASSERT_EQ(converged.exitCode, 0) << describe(converged);
+    EXPECT_GE(measureError(draft, readImage(ref)).psnrSrgb8, 20.0);
+}
+
 TEST(WhittedRender, TargetPsnr_IsMetAndAGivenDepthIsKept) {
     TempDir dir;
     const fs::path out = dir / "t.exr", ref = dir / "ref.exr", stats = dir / "stats.json";

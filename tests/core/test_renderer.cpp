@@ -411,6 +411,66 @@ TEST(Renderer, AdaptiveRender_EstimatedErrorIsNoLowerThanTheErrorMeasured) {
     }
 }
 
+// ---- adaptive renders that start with the pixels' centres -------------------
+
+RenderOptions centresFirstOptions(int threads, bool progressive, double allowedMse) {
+    RenderOptions o = adaptiveOptions(threads, progressive, allowedMse, 1024);
+    o.adaptive->centresFirst = true;
+    return o;
+}
+
+TEST(Renderer, AdaptiveRender_CentresFirst_GenerousTargetIsTheOneSampleRender) {
+    const Scene scene = smallSeed(1, Precision::Float);
+    const RenderResult fixed = render(scene, options(2, 16, false));
+    const RenderResult r = render(scene, centresFirstOptions(2, false, 255.0 * 255.0));
+    ASSERT_TRUE(r.adaptive);
+    EXPECT_EQ(r.adaptive->mostSamples, 1);
+    EXPECT_EQ(r.adaptive->passes, 1);
+    EXPECT_EQ(r.rays.camera, 97u * 61u);
+    EXPECT_EQ(r.rays.total(), fixed.rays.total());
+    EXPECT_EQ(
+        std::memcmp(r.image.rgb.data(), fixed.image.rgb.data(), r.image.rgb.size() * sizeof(float)),
+        0)
+        << "not the pixels a one-sample render gives";
+    EXPECT_GT(r.adaptive->estimatedMse, 0.0);
+}
+
+TEST(Renderer, AdaptiveRender_CentresFirst_SameImageWithAnyThreadsAndWithOrWithoutPreview) {
+    const Scene scene = smallSeed(1, Precision::Float);
+    const RenderResult one = render(scene, centresFirstOptions(1, false, 150.0));
+    ASSERT_EQ(one.adaptive->fewestSamples, 1);  // some tiles stopped at their centres
+    ASSERT_GT(one.adaptive->mostSamples, 1);    // and some went on
+    const RenderResult two = render(scene, centresFirstOptions(2, true, 150.0));
+    EXPECT_EQ(std::memcmp(one.image.rgb.data(), two.image.rgb.data(),
+                          one.image.rgb.size() * sizeof(float)),
+              0);
+    EXPECT_EQ(two.adaptive->meanSamples, one.adaptive->meanSamples);
+}
+
+// The centres' error, estimated from neighbouring pixels, is no lower than
+// the error a converged render shows: the test of its share (a half).
+TEST(Renderer, AdaptiveRender_CentresFirst_EstimatedErrorIsNoLowerThanTheErrorMeasured) {
+    const Scene scene = smallSeed(1, Precision::Float);
+    Scene converged = scene;
+    converged.render.samplesPerPixel = 1024;
+    converged.render.precision = Precision::Double;
+    const Image reference = render(converged, options(2, 32, false)).image;
+    const RenderResult centres = render(scene, centresFirstOptions(2, false, 255.0 * 255.0));
+    const ErrorStats centresError = measureError(centres.image, reference);
+    EXPECT_GE(centres.adaptive->estimatedMse, centresError.rmseSrgb8 * centresError.rmseSrgb8);
+    for (const double allowed : {400.0, 150.0, 20.0}) {
+        const RenderResult r = render(scene, centresFirstOptions(2, false, allowed));
+        const ErrorStats e = measureError(r.image, reference);
+        EXPECT_LE(e.rmseSrgb8 * e.rmseSrgb8, allowed) << "allowed " << allowed;
+        EXPECT_LE(r.adaptive->estimatedMse, allowed) << "allowed " << allowed;
+        std::printf("allowed %5.0f: measured %6.1f, estimated %6.1f codes^2, %.2f samples\n",
+                    allowed, e.rmseSrgb8 * e.rmseSrgb8, r.adaptive->estimatedMse,
+                    r.adaptive->meanSamples);
+    }
+    std::printf("centres only: measured %6.1f, estimated %6.1f codes^2\n",
+                centresError.rmseSrgb8 * centresError.rmseSrgb8, centres.adaptive->estimatedMse);
+}
+
 TEST(Renderer, AdaptiveRender_RefusesARegion) {
     RenderOptions o = adaptiveOptions(1, false, 1.0, 8);
     o.region = PixelRect{0, 0, 8, 8};

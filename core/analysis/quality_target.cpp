@@ -55,10 +55,49 @@ Scene probeScene(const Scene& scene, double psnrDb) {
     return withSettings(scene, s);
 }
 
-RenderResult probeAt(Scene probe, int depth) {
-    probe.render.maxDepth = depth;
-    return render(probe, oneShotOptions());
-}
+// The probe renders of one plan, by depth. The scene is copied and checked
+// once and the tree of its spheres built once and refit for each (a build per
+// probe was most of planning a field of 2500 balls; copying and checking
+// 100,000 balls for each, a third of planning them), and the precision is
+// compared at the chosen depth's render in the scene's own precision,
+// already made for the depth.
+class ProbeRenders {
+  public:
+    ProbeRenders(const Scene& scene, double psnrDb) : probe_(probeScene(scene, psnrDb)) {}
+
+    const Scene& scene() const { return probe_; }
+
+    const Image& at(int depth, QualityPlan& plan) {
+        auto found = byDepth_.find(depth);
+        if (found != byDepth_.end()) return found->second;
+        return byDepth_.emplace(depth, render(depth, plan)).first->second;
+    }
+
+    Image inDouble(int depth, QualityPlan& plan) {
+        const Precision own = probe_.render.precision;
+        probe_.render.precision = Precision::Double;
+        Image image = render(depth, plan);
+        probe_.render.precision = own;
+        return image;
+    }
+
+  private:
+    Image render(int depth, QualityPlan& plan) {
+        probe_.render.maxDepth = depth;
+        RenderOptions options = oneShotOptions();
+        options.bvhCache = &cache_;
+        options.sceneValidated = validated_;  // the first render throws if it is not valid
+        RenderResult r = whitted::render(probe_, options);
+        validated_ = true;
+        plan.probeRays += r.rays.total();
+        return std::move(r.image);
+    }
+
+    Scene probe_;
+    bool validated_ = false;
+    BvhCache cache_;
+    std::map<int, Image> byDepth_;  // a map, so references stay valid
+};
 
 struct DepthError {
     double mse = 0.0, largest = 0.0;
@@ -81,22 +120,14 @@ bool depthFits(const DepthError& e, const QualityTarget& t) {
 // the look-ahead is smaller still, unless rays bounce without losing weight
 // (depthWithinTolerance() follows those much further, but at a cost of
 // minutes on a field of glass balls, too much for planning a render).
-void planDepth(const Scene& scene, std::optional<int> given, QualityPlan& plan) {
-    const Scene probe = probeScene(scene, plan.target.psnrDb);
-    plan.probeWidth = probe.render.width;
-    plan.probeHeight = probe.render.height;
-    std::map<int, Image> probes;  // by depth; a map, so references stay valid
-    auto at = [&](int depth) -> const Image& {
-        auto found = probes.find(depth);
-        if (found != probes.end()) return found->second;
-        RenderResult r = probeAt(probe, depth);
-        plan.probeRays += r.rays.total();
-        return probes.emplace(depth, std::move(r.image)).first->second;
-    };
+void planDepth(ProbeRenders& probes, std::optional<int> given, QualityPlan& plan) {
+    plan.probeWidth = probes.scene().render.width;
+    plan.probeHeight = probes.scene().render.height;
     auto measure = [&](int depth) {
         plan.maxDepth = depth;
         plan.referenceDepth = std::min(kMaxDepth, depth + kLookAhead);
-        const DepthError e = depthError(at(depth), at(plan.referenceDepth));
+        const DepthError e =
+            depthError(probes.at(depth, plan), probes.at(plan.referenceDepth, plan));
         plan.depthMse = e.mse;
         plan.depthLargest = e.largest;
         return e;
@@ -125,15 +156,10 @@ void planDepth(const Scene& scene, std::optional<int> given, QualityPlan& plan) 
 
 // What float arithmetic changes against double at the chosen depth, in the
 // same probe: the reference a user compares with is converged, in double.
-void planPrecision(const Scene& scene, QualityPlan& plan) {
-    if (scene.render.precision == Precision::Double) return;
-    Scene probe = probeScene(scene, plan.target.psnrDb);
-    const RenderResult inFloat = probeAt(probe, plan.maxDepth);
-    probe.render.precision = Precision::Double;
-    const RenderResult inDouble = probeAt(probe, plan.maxDepth);
-    plan.probeRays += inFloat.rays.total() + inDouble.rays.total();
-    const DepthError e = depthError(inFloat.image, inDouble.image);
-    plan.precisionMse = e.mse;
+void planPrecision(ProbeRenders& probes, QualityPlan& plan) {
+    if (probes.scene().render.precision == Precision::Double) return;
+    const Image inDouble = probes.inDouble(plan.maxDepth, plan);
+    plan.precisionMse = depthError(probes.at(plan.maxDepth, plan), inDouble).mse;
 }
 
 std::string depthWhy(const QualityPlan& p) {
@@ -204,8 +230,9 @@ QualityPlan planQuality(const Scene& scene, const QualityTarget& target, int max
                         std::optional<int> depth) {
     QualityPlan plan;
     plan.target = target;
-    planDepth(scene, depth, plan);
-    planPrecision(scene, plan);
+    ProbeRenders probes(scene, target.psnrDb);
+    planDepth(probes, depth, plan);
+    planPrecision(probes, plan);
     const double total = allowedMse(target.psnrDb);
     const double bias = plan.depthMse + plan.precisionMse;
     // A given depth may cut off more than the whole budget: the samples still

@@ -1,22 +1,40 @@
 #include "tracer/adaptive_sampling.h"
 
+#include <cstdlib>
+
 namespace whitted {
 
 TileErrorEstimate centreSampleEstimate(const Image& image, const PixelRect& tile) {
+    // The 8-bit codes the user sees, each looked up once, and what each
+    // difference of codes adds, from a table: srgbCode()'s std::pow and a
+    // codeSquaredError() per pair would cost more than tracing the centres of
+    // a simple scene.
+    static const std::vector<double> squaredOfDifference = [] {
+        std::vector<double> table(256);
+        for (int d = 0; d < 256; ++d) table[d] = codeSquaredError(std::sqrt(kNeighbourShare) * d);
+        return table;
+    }();
+    const int w = tile.width, h = tile.height;
+    std::vector<int> codes(std::size_t(w) * h * 3);
+    for (int y = 0; y < h; ++y) {
+        const float* row = image.pixel(tile.x, tile.y + y);
+        for (int k = 0; k < 3 * w; ++k) codes[std::size_t(y) * 3 * w + k] = srgbEncode8(row[k]);
+    }
     TileErrorEstimate estimate;
-    const double scale = std::sqrt(kNeighbourShare);
-    // The 8-bit codes the user sees: a table lookup, where srgbCode()'s
-    // std::pow would cost more than tracing the centres of a simple scene.
-    auto code = [&](int x, int y, int c) { return int(srgbEncode8(image.pixel(x, y)[c])); };
-    for (int y = tile.y; y < tile.y + tile.height; ++y)
-        for (int x = tile.x; x < tile.x + tile.width; ++x) {
-            const bool right = x + 1 < tile.x + tile.width, below = y + 1 < tile.y + tile.height;
-            for (int c = 0; c < 3; ++c) {
-                const int here = code(x, y, c);
-                if (right) estimate.add(scale * (here - code(x + 1, y, c)));
-                if (below) estimate.add(scale * (here - code(x, y + 1, c)));
-            }
+    int largest = 0;
+    auto pair = [&](int a, int b) {
+        const int d = std::abs(a - b);
+        estimate.squaredSum += squaredOfDifference[d];
+        largest = std::max(largest, d);
+        ++estimate.values;
+    };
+    for (int y = 0; y < h; ++y)
+        for (int k = 0; k < 3 * w; ++k) {
+            const std::size_t at = std::size_t(y) * 3 * w + k;
+            if (k + 3 < 3 * w) pair(codes[at], codes[at + 3]);
+            if (y + 1 < h) pair(codes[at], codes[at + 3 * w]);
         }
+    estimate.largest = std::sqrt(kNeighbourShare) * largest;
     if (estimate.values == 0) estimate.add(255.0);
     return estimate;
 }

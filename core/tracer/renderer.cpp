@@ -159,7 +159,6 @@ class TileRenderer {
     // picks none.
     RenderResult runAdaptive() {
         const AdaptiveSampling& limits = *options_.adaptive;
-        sums_ = Sums(size_t(s_.width) * s_.height);
         tileStates_.resize(tiles_.size());
         for (size_t t = 0; t < tiles_.size(); ++t)
             tileStates_[t].pixels = tiles_[t].w * tiles_[t].h;
@@ -200,6 +199,8 @@ class TileRenderer {
                 const Pass pass{PassKind::Samples, first, next, pixels * (next - first)};
                 totalWork_ = workDone_ + pass.work * remainingPassesGuess(limits);
                 startImage(PassKind::Samples);
+                // Not before: a render whose centres do needs no sums.
+                if (sums_.empty()) sums_ = Sums(size_t(s_.width) * s_.height);
                 runPass(pass, index, index + 1, ids);
                 ++index, ++samplesPasses;
             }

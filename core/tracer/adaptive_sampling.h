@@ -22,14 +22,14 @@
 // contents are finer than the pixel (values independent from pixel to pixel,
 // of spread s^2, differ by 2 s^2 on average and a centre errs by s^2). For
 // one straight edge it would be a twelfth, so where edges dominate the
-// estimate is several times too large. Against 256-sample references it was
-// 2.8 to 4.3 times the error on the shipped scenes and on generated fields
-// at 320 and 640 pixels across (6 on coloured-shadows, whose soft shadows
-// change smoothly from pixel to pixel), 1.6 to 2.0 times on the generated
-// fields of test_quality_target at 128x96. A thin line between two centres shows in neither, so a
-// target with a limit on the largest error never starts with centres. A tile
-// chosen after the centres starts over with two samples of the sequence: a
-// centre is not one of its stratified samples.
+// estimate is too large. Against 256-sample references at the same depth it
+// was 1.4 to 2.1 times the error on the shipped scenes and on the generated
+// fields of test_quality_target, at 128x96, 320x240 and 640x480 (3 on
+// coloured-shadows, whose soft shadows change smoothly from pixel to pixel;
+// docs/quality.md has the table). A thin line between two centres shows in
+// neither, so a target with a limit on the largest error never starts with
+// centres. A tile chosen after the centres starts over with two samples of
+// the sequence: a centre is not one of its stratified samples.
 //
 // Rounding to 8-bit codes adds to the error: a value off by e < 1 code rounds
 // to a different code with probability |e|, so a pixel's squared 8-bit error

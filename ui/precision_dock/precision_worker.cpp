@@ -3,33 +3,12 @@
 #include <chrono>
 #include <utility>
 
-#ifdef __linux__
-#include <sys/resource.h>
-#include <sys/syscall.h>
-#include <unistd.h>
-#endif
-
+#include "base/thread_priority.h"
 #include "viewport/image_convert.h"
 
 namespace whitted::ui {
 
-namespace {
-
-// The comparison is a side view: when it shares the cores with the main render
-// or the GUI, they should win. Nice 10 gives it about a tenth of a core's share
-// against them; 19 would starve it whenever anything else runs (a build). On
-// Linux a nice value belongs to a thread, and the threads it creates (render()'s
-// pool) inherit it.
-constexpr int kNice = 10;
-
-void lowerThisThreadsPriority() {
-#ifdef __linux__
-    setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), kNice);
-#endif
-}
-
-}  // namespace
-
+// The comparison is a side view: the main render and the GUI should win.
 PrecisionWorker::PrecisionWorker(QObject* parent)
     : QObject(parent),
       requests_(

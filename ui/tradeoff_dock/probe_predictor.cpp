@@ -2,12 +2,16 @@
 
 #include <utility>
 
+#include "base/thread_priority.h"
+
 namespace whitted::ui {
 
 ProbePredictor::ProbePredictor(QObject* parent)
     : QObject(parent),
-      requests_(RequestThread<Scene>::Policy::LatestWins,
-                [this](Scene&& scene, quint64 ticket) { predict(std::move(scene), ticket); }) {
+      requests_(
+          RequestThread<Scene>::Policy::LatestWins,
+          [this](Scene&& scene, quint64 ticket) { predict(std::move(scene), ticket); },
+          lowerThisThreadsPriority) {
     qRegisterMetaType<std::shared_ptr<const whitted::ui::ProbePrediction>>();
     quiet_.setSingleShot(true);
     quiet_.setInterval(kQuietMs);

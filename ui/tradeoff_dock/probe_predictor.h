@@ -2,6 +2,9 @@
 // core's predictRender() on a thread of its own, a moment after the last
 // edit (it renders small probes of the scene, a few tenths of a second on a
 // glass field, and would only compete with the view's render during a drag).
+// Its thread runs at a lower priority (base/thread_priority.h): the probes
+// then wait while the view renders instead of slowing it, and their figures,
+// CPU time (analysis/speed_probe.h), do not mind the wait.
 // The newest scene wins (core/base/request_thread.h); a result comes back
 // with the scene it was made for, through an outbox under a mutex of our own
 // (as RenderWorker's frames do: ThreadSanitizer cannot see Qt's event queue

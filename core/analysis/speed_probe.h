@@ -8,7 +8,9 @@
 // visit. The probe times pixel centres and jittered samples at two sizes, a
 // side and half of it, and carries the cost a ray down to the picture's size
 // along the power of size they show (0.05 per doubling on three balls, 0.3
-// to 0.6 on fields of hundreds; docs/quality.md).
+// to 0.6 on fields of hundreds; docs/quality.md), each doubling past the
+// side gaining half what the one before did: the rays of a row cannot grow
+// more alike than alike.
 //
 // The probes count CPU time, not wall time: the editor probes while its view
 // renders on the same cores, where a probe's wall time would count the time

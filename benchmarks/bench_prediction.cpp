@@ -8,6 +8,13 @@
 // predictRender()'s own, from its timed probes (speed_probe.h), which the
 // editor shows. The last column also gives the render's measured seconds.
 // Usage: bench_prediction [WIDTH HEIGHT] (default 320 240). Prints a Markdown table.
+// bench_prediction --speed: the speed model alone (speed_probe.h), at 320
+// and 640 pixels across, depth 5, 1, 8 and 32 samples: the seconds its
+// probes predict for the rays each render traced, over the render's (the
+// faster of two), with the cost carried past the probe's size at the full
+// power measured between its two sizes and with each doubling gaining half
+// the one before (what predictSeconds() does).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -16,8 +23,10 @@
 
 #include "analysis/quality_check.h"
 #include "analysis/render_prediction.h"
+#include "analysis/speed_probe.h"
 #include "scene/scene_io.h"
 #include "sphere_field.h"
+#include "tracer/renderer.h"
 
 using namespace whitted;
 
@@ -53,9 +62,56 @@ std::vector<Named> scenes(int width, int height) {
     return list;
 }
 
+RenderResult fasterOfTwo(const Scene& scene) {
+    RenderResult best = render(scene, oneShotOptions());
+    RenderResult again = render(scene, oneShotOptions());
+    return again.seconds < best.seconds ? again : best;
+}
+
+// The probe with its power changed so that predictSeconds() carries the cost
+// along the full power p over all d doublings past its side, p d, instead
+// of p (1 - 2^-d).
+SpeedProbe atFullPower(SpeedProbe probe, const Scene& scene) {
+    const int longest = std::max(scene.render.width, scene.render.height);
+    const double d = std::log2(double(longest) / probe.side);
+    if (d > 0.0) probe.sizePower *= d / (1.0 - std::pow(0.5, d));
+    return probe;
+}
+
+void speedTable() {
+    std::printf(
+        "| scene | width | power measured | 1 spp: s, full, halving | 8 spp | 32 spp |\n"
+        "|---|---|---|---|---|---|\n");
+    int full = 0, halving = 0, total = 0;
+    auto within = [](double ratio) { return std::fabs(ratio - 1.0) <= 0.25; };
+    for (const int width : {320, 640})
+        for (Named& n : scenes(width, width * 3 / 4)) {
+            n.scene.render.maxDepth = 5;
+            const SpeedProbe probe = probeSpeed(n.scene, 160);
+            std::printf("| %s | %d | %.2f |", n.name.c_str(), width, probe.sizePower);
+            for (const int spp : {1, 8, 32}) {
+                n.scene.render.samplesPerPixel = spp;
+                const RenderResult r = fasterOfTwo(n.scene);
+                const double rays = double(r.rays.total());
+                const double atFull =
+                    predictSeconds(atFullPower(probe, n.scene), n.scene, rays) / r.seconds;
+                const double halved = predictSeconds(probe, n.scene, rays) / r.seconds;
+                full += within(atFull), halving += within(halved), ++total;
+                std::printf(" %.3f s, %.2f, %.2f |", r.seconds, atFull, halved);
+            }
+            std::printf("\n");
+            std::fflush(stdout);
+        }
+    std::printf("\nwithin 25%%: full power %d, halving %d, of %d\n", full, halving, total);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+    if (argc > 1 && std::string(argv[1]) == "--speed") {
+        speedTable();
+        return 0;
+    }
     const int width = argc > 2 ? std::atoi(argv[1]) : 320;
     const int height = argc > 2 ? std::atoi(argv[2]) : 240;
     std::printf(

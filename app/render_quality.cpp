@@ -40,8 +40,13 @@ void sayQualityPlan(const QualityPlan& plan) {
 }
 
 void sayQualityReached(const QualityPlan& plan, const AdaptiveOutcome& a) {
-    std::fprintf(stderr, "  reached: %d to %d samples a pixel (%.1f on average), estimated %.1f dB",
-                 a.fewestSamples, a.mostSamples, a.meanSamples, estimatedPsnr(plan, a));
+    if (a.fewestSamples == a.mostSamples)
+        std::fprintf(stderr, "  reached: %d sample%s a pixel everywhere, estimated %.1f dB",
+                     a.mostSamples, a.mostSamples == 1 ? "" : "s", estimatedPsnr(plan, a));
+    else
+        std::fprintf(stderr,
+                     "  reached: %d to %d samples a pixel (%.1f on average), estimated %.1f dB",
+                     a.fewestSamples, a.mostSamples, a.meanSamples, estimatedPsnr(plan, a));
     if (plan.target.largestCodes)
         std::fprintf(stderr, ", largest error about %.1f codes",
                      std::max(plan.depthLargest, a.estimatedLargest));

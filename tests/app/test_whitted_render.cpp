@@ -381,6 +381,7 @@ TEST(WhittedRender, QualityDraft_TracesThePixelCentresAndStopsThereWhereThatMeet
                          "neighbouring pixels"),
               std::string::npos)
         << r.err;
+    EXPECT_NE(r.err.find("reached: 1 sample a pixel everywhere"), std::string::npos) << r.err;
     const nlohmann::json j = nlohmann::json::parse(test::readFile(stats));
     EXPECT_EQ(j["quality"]["samples_per_pixel_most"], 1) << j.dump(2);
     const std::string depth = std::to_string(j["max_depth"].get<int>());

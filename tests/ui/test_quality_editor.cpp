@@ -11,6 +11,7 @@
 #include <QTest>
 
 #include "analysis/quality_check.h"
+#include "document/quality_choice.h"
 #include "editor/main_window.h"
 #include "image/image_error.h"
 #include "image/image_io.h"
@@ -68,6 +69,17 @@ TEST_F(QualityEditorTest, FinalShortcut_RendersToFinalsTarget_MeasuredAgainstACo
     EXPECT_FALSE(child<QWidget>("renderSamples")->isEnabled());
     // The predictions are for settings: with a target the Render tab says so.
     EXPECT_TRUE(child<QLabel>("predictedTime")->text().startsWith(QStringLiteral("not predicted")));
+}
+
+// The status bar and the export message: a range where tiles stopped at
+// different counts, one count where all stopped at it (Draft's centres).
+TEST(QualityChoiceText, SamplesTaken_ARangeOrOneCount) {
+    AdaptiveOutcome reached;
+    reached.fewestSamples = 2;
+    reached.mostSamples = 64;
+    EXPECT_EQ(QualityChoice::samplesTaken(reached), QStringLiteral("2 to 64 samples per pixel"));
+    reached.fewestSamples = reached.mostSamples = 1;
+    EXPECT_EQ(QualityChoice::samplesTaken(reached), QStringLiteral("1 sample(s) per pixel"));
 }
 
 TEST_F(QualityEditorTest, RenderToTheSettings_AfterATarget_RendersTheScenesSamplesAgain) {

@@ -52,4 +52,10 @@ QString QualityChoice::describe(const std::optional<QualityTarget>& target) {
     return QString::fromStdString(describeTarget(*target));
 }
 
+QString QualityChoice::samplesTaken(const AdaptiveOutcome& reached) {
+    if (reached.fewestSamples == reached.mostSamples)
+        return tr("%1 sample(s) per pixel").arg(reached.mostSamples);
+    return tr("%1 to %2 samples per pixel").arg(reached.fewestSamples).arg(reached.mostSamples);
+}
+
 }  // namespace whitted::ui

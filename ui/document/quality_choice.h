@@ -29,6 +29,9 @@ class QualityChoice : public QObject {
 
     // "Final: 50 dB, no pixel off by more than 16 codes", or what no target means.
     static QString describe(const std::optional<QualityTarget>& target);
+    // "2 to 64 samples per pixel", or "1 sample(s) per pixel" where every
+    // tile stopped at one count (a Draft render that its centres met).
+    static QString samplesTaken(const AdaptiveOutcome& reached);
     // The targets the editor offers (Draft, Preview, Final), in the order of
     // its combo boxes, after "the settings".
     static std::vector<QualityTarget> offered();

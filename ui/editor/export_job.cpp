@@ -214,11 +214,10 @@ bool ExportJob::exportFrame(int frame, const Camera& camera, double& seconds) {
 }
 
 QString ExportJob::qualityReached(const QualityPlan& plan, const AdaptiveOutcome& reached) const {
-    QString text = tr(" %1: depth %2, %3 to %4 samples per pixel, about %5 dB")
+    QString text = tr(" %1: depth %2, %3, about %4 dB")
                        .arg(QualityChoice::describe(plan.target))
                        .arg(plan.maxDepth)
-                       .arg(reached.fewestSamples)
-                       .arg(reached.mostSamples)
+                       .arg(QualityChoice::samplesTaken(reached))
                        .arg(estimatedPsnr(plan, reached), 0, 'f', 1);
     if (plan.target.largestCodes)
         text += tr(", largest error about %1 codes")

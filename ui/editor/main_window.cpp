@@ -139,8 +139,7 @@ void MainWindow::showQualityReached(const RenderFrame& frame) {
     passLabel_->setToolTip(QString::fromStdString(describeTarget(plan.target) + "\n" + plan.why));
     if (!frame.renderComplete || !frame.qualityReached) return;
     const AdaptiveOutcome& reached = *frame.qualityReached;
-    samplesLabel_->setText(
-        tr("%1 to %2 samples per pixel").arg(reached.fewestSamples).arg(reached.mostSamples));
+    samplesLabel_->setText(QualityChoice::samplesTaken(reached));
     QString estimate = tr("%1, depth %2: about %3 dB")
                            .arg(target)
                            .arg(plan.maxDepth)

@@ -63,7 +63,8 @@ Scene probeScene(const Scene& scene, double psnrDb) {
 // already made for the depth.
 class ProbeRenders {
   public:
-    ProbeRenders(const Scene& scene, double psnrDb) : probe_(probeScene(scene, psnrDb)) {}
+    ProbeRenders(const Scene& scene, double psnrDb, const StopPredicate& stop)
+        : probe_(probeScene(scene, psnrDb)), stop_(stop) {}
 
     const Scene& scene() const { return probe_; }
 
@@ -87,13 +88,14 @@ class ProbeRenders {
         RenderOptions options = oneShotOptions();
         options.bvhCache = &cache_;
         options.sceneValidated = validated_;  // the first render throws if it is not valid
-        RenderResult r = whitted::render(probe_, options);
+        RenderResult r = whitted::render(probe_, options, {}, stop_);
         validated_ = true;
         plan.probeRays += r.rays.total();
         return std::move(r.image);
     }
 
     Scene probe_;
+    const StopPredicate& stop_;
     bool validated_ = false;
     BvhCache cache_;
     std::map<int, Image> byDepth_;  // a map, so references stay valid
@@ -227,12 +229,15 @@ double estimatedPsnr(const QualityPlan& plan, const AdaptiveOutcome& outcome) {
 }
 
 QualityPlan planQuality(const Scene& scene, const QualityTarget& target, int maxSamples,
-                        std::optional<int> depth) {
+                        std::optional<int> depth, const StopPredicate& stop) {
     QualityPlan plan;
     plan.target = target;
-    ProbeRenders probes(scene, target.psnrDb);
+    // A stopped probe is an empty picture: the depth search then ends at
+    // once, and the plan is marked as stopped below.
+    ProbeRenders probes(scene, target.psnrDb, stop);
     planDepth(probes, depth, plan);
     planPrecision(probes, plan);
+    plan.stopped = stop && stop();
     const double total = allowedMse(target.psnrDb);
     const double bias = plan.depthMse + plan.precisionMse;
     // A given depth may cut off more than the whole budget: the samples still

@@ -22,6 +22,7 @@
 
 #include "scene/scene.h"
 #include "tracer/adaptive_sampling.h"
+#include "tracer/renderer.h"
 
 namespace whitted {
 
@@ -69,7 +70,8 @@ struct QualityPlan {
     int probeWidth = 0, probeHeight = 0;
     std::uint64_t probeRays = 0;  // traced to choose the depth: part of the render's cost
     AdaptiveSampling sampling;
-    std::string why;  // the choices in a user's words, one line each
+    std::string why;       // the choices in a user's words, one line each
+    bool stopped = false;  // `stop` said so while planning: the plan means nothing
 };
 
 // The PSNR that the plan's measured biases and the render's estimate add up
@@ -78,8 +80,10 @@ double estimatedPsnr(const QualityPlan& plan, const AdaptiveOutcome& outcome);
 
 // The plan for rendering `scene` (its size and precision) to `target`, with
 // at most maxSamples a pixel; `depth` fixes the depth instead of choosing it.
+// `stop` is asked by the probe renders as a render asks it, and a plan it
+// stopped says so.
 QualityPlan planQuality(const Scene& scene, const QualityTarget& target,
                         int maxSamples = kDefaultMaxSamples,
-                        std::optional<int> depth = std::nullopt);
+                        std::optional<int> depth = std::nullopt, const StopPredicate& stop = {});
 
 }  // namespace whitted

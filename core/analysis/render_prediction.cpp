@@ -38,7 +38,7 @@ struct NoiseProbe {
 
 // The probe at 2, 4, ... kNoiseProbeSamples samples, each render sampling
 // every tile with content to its count (no error is small enough to stop).
-NoiseProbe probeNoise(const Scene& scene) {
+NoiseProbe probeNoise(const Scene& scene, const StopPredicate& stop) {
     const int longest = std::max(scene.render.width, scene.render.height);
     TradeoffSettings s{1, scene.render.maxDepth, scene.render.precision,
                        std::min(1.0, double(kNoiseProbeSide) / longest)};
@@ -49,7 +49,7 @@ NoiseProbe probeNoise(const Scene& scene) {
     for (int n = 2; n <= kNoiseProbeSamples; n *= 2) {
         RenderOptions options = oneShotOptions();
         options.adaptive = AdaptiveSampling{0.0, 255.0, n};
-        const RenderResult r = render(probe, options);
+        const RenderResult r = render(probe, options, {}, stop);
         noise.mseAt[n] = r.adaptive ? r.adaptive->estimatedMse : 0.0;
         noise.rays += r.rays.total();
         if (n == 2) noise.raysPerSample = r.rays.total() / (2.0 * pixels);
@@ -87,7 +87,7 @@ double probeNoiseAt(const NoiseProbe& noise, int samples, double& slope) {
 
 }  // namespace
 
-RenderPrediction predictRender(const Scene& scene) {
+RenderPrediction predictRender(const Scene& scene, const StopPredicate& stop) {
     RenderPrediction p;
     const double pixels = double(scene.render.width) * scene.render.height;
     if (std::max(scene.render.width, scene.render.height) < kNoiseProbeSide / 2) {
@@ -95,10 +95,18 @@ RenderPrediction predictRender(const Scene& scene) {
         return p;
     }
     const auto start = std::chrono::steady_clock::now();
+    // A stopped probe is an empty picture: what follows it means nothing.
+    auto stopped = [&] {
+        if (!stop || !stop()) return false;
+        p.cannot = "stopped";
+        return true;
+    };
     // A 40 dB target only sets the probe's size (a quarter of the side).
     const QualityPlan plan =
-        planQuality(scene, QualityTarget{"", 40.0, std::nullopt}, 1, scene.render.maxDepth);
-    const NoiseProbe noise = probeNoise(scene);
+        planQuality(scene, QualityTarget{"", 40.0, std::nullopt}, 1, scene.render.maxDepth, stop);
+    if (stopped()) return p;
+    const NoiseProbe noise = probeNoise(scene, stop);
+    if (stopped()) return p;
     p.depthMse = plan.depthMse;
     p.precisionMse = plan.precisionMse;
     p.samplingMse = kNoiseCalibration *
@@ -107,7 +115,8 @@ RenderPrediction predictRender(const Scene& scene) {
     p.mseCodes2 = p.depthMse + p.precisionMse + p.samplingMse;
     p.psnrDb = psnrOf(p.mseCodes2);
     p.rays = noise.raysPerSample * pixels * scene.render.samplesPerPixel;
-    p.seconds = predictSeconds(probeSpeed(scene, kNoiseProbeSide), scene, p.rays);
+    p.seconds = predictSeconds(probeSpeed(scene, kNoiseProbeSide, stop), scene, p.rays);
+    if (stopped()) return p;
     p.probeRays = plan.probeRays + noise.rays;
     p.probeSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -25,6 +25,7 @@
 #include <string>
 
 #include "scene/scene.h"
+#include "tracer/renderer.h"
 
 namespace whitted {
 
@@ -44,6 +45,8 @@ struct RenderPrediction {
     double probeSeconds = 0.0;    // how long predicting took
 };
 
-RenderPrediction predictRender(const Scene& scene);
+// Every probe render asks `stop` as a render asks it; once it says so,
+// nothing is predicted (`cannot` says it was stopped).
+RenderPrediction predictRender(const Scene& scene, const StopPredicate& stop = {});
 
 }  // namespace whitted

@@ -24,10 +24,10 @@ struct Timed {
 // The cheaper of two renders, in the CPU time of the threads that traced
 // it: a render the machine's other work slowed costs no more CPU time, but
 // the caches it shares still vary.
-Timed timedRender(const Scene& scene) {
+Timed timedRender(const Scene& scene, const StopPredicate& stop) {
     Timed best;
     for (int attempt = 0; attempt < 2; ++attempt) {
-        const RenderResult r = render(scene, oneShotOptions());
+        const RenderResult r = render(scene, oneShotOptions(), {}, stop);
         if (attempt == 0 || r.tilesCpuSeconds < best.cpuSeconds)
             best = {double(r.rays.total()), r.tilesCpuSeconds};
     }
@@ -36,14 +36,14 @@ Timed timedRender(const Scene& scene) {
 
 // The centres' cost; the jittered samples' cost from the difference of the
 // two renders, which leaves the centres out.
-RayCost rayCostAt(const Scene& scene, int side) {
+RayCost rayCostAt(const Scene& scene, int side, const StopPredicate& stop) {
     const int longest = std::max(scene.render.width, scene.render.height);
     TradeoffSettings s{1, scene.render.maxDepth, scene.render.precision,
                        std::min(1.0, double(side) / longest)};
     Scene probe = withSettings(scene, s);
-    const Timed centres = timedRender(probe);
+    const Timed centres = timedRender(probe, stop);
     probe.render.samplesPerPixel = kJitteredSamples;
-    const Timed jittered = timedRender(probe);
+    const Timed jittered = timedRender(probe, stop);
     RayCost cost;
     cost.centre = centres.cpuSeconds / std::max(1.0, centres.rays);
     cost.jittered = std::max(0.0, jittered.cpuSeconds - centres.cpuSeconds) /
@@ -54,11 +54,11 @@ RayCost rayCostAt(const Scene& scene, int side) {
 
 // The render of one pixel, in the CPU time of this thread, which prepares
 // the scene: the overhead, as any other render would pay it.
-double overheadOf(const Scene& scene) {
+double overheadOf(const Scene& scene, const StopPredicate& stop) {
     RenderOptions options = oneShotOptions();
     options.region = PixelRect{0, 0, 1, 1};
     const double start = threadCpuSeconds();
-    render(scene, options);
+    render(scene, options, {}, stop);
     return threadCpuSeconds() - start;
 }
 
@@ -73,12 +73,12 @@ int threadsFor(const Scene& scene) {
 
 }  // namespace
 
-SpeedProbe probeSpeed(const Scene& scene, int side) {
+SpeedProbe probeSpeed(const Scene& scene, int side, const StopPredicate& stop) {
     SpeedProbe probe;
-    probe.overheadSeconds = std::min(overheadOf(scene), overheadOf(scene));
+    probe.overheadSeconds = std::min(overheadOf(scene, stop), overheadOf(scene, stop));
     probe.side = std::min(side, std::max(scene.render.width, scene.render.height));
-    probe.atSide = rayCostAt(scene, probe.side);
-    probe.atHalfSide = rayCostAt(scene, probe.side / 2);
+    probe.atSide = rayCostAt(scene, probe.side, stop);
+    probe.atHalfSide = rayCostAt(scene, probe.side / 2, stop);
     const double all = probe.atSide.centre + probe.atSide.jittered;
     const double allAtHalf = probe.atHalfSide.centre + probe.atHalfSide.jittered;
     if (all > 0.0 && allAtHalf > 0.0)

@@ -19,6 +19,7 @@
 #pragma once
 
 #include "scene/scene.h"
+#include "tracer/renderer.h"
 
 namespace whitted {
 
@@ -34,8 +35,9 @@ struct SpeedProbe {
 };
 
 // Times the scene, at its depth and precision, at `side` and side / 2 pixels
-// along its longest side (or its own size, when smaller).
-SpeedProbe probeSpeed(const Scene& scene, int side);
+// along its longest side (or its own size, when smaller). Its renders ask
+// `stop`; once it says so, the figures mean nothing.
+SpeedProbe probeSpeed(const Scene& scene, int side, const StopPredicate& stop = {});
 
 // The seconds of a render of the scene with its own settings that traces `rays`.
 double predictSeconds(const SpeedProbe& probe, const Scene& scene, double rays);

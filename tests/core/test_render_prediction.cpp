@@ -67,5 +67,28 @@ TEST(RenderPrediction, PictureSmallerThanAProbe_SaysItCannotRatherThanGuess) {
     EXPECT_NE(p.cannot.find("smaller than a probe"), std::string::npos) << p.cannot;
 }
 
+// The editor stops a prediction whose scene has changed: its probes stop
+// as renders do, and nothing is predicted from their empty pictures. Asked
+// `stops` times before saying stop: at once, inside the plan, and later.
+TEST(RenderPrediction, Stopped_PredictsNothingAndSaysSo) {
+    FieldOptions o;
+    o.count = 200;
+    Scene scene = sphereField(o);
+    scene.render.width = 320;
+    scene.render.height = 240;
+    scene.render.samplesPerPixel = 16;
+    for (const int stops : {0, 40, 400}) {
+        int asked = 0;
+        const RenderPrediction p = predictRender(scene, [&] { return ++asked > stops; });
+        EXPECT_FALSE(p.predicted) << stops;
+        EXPECT_EQ(p.cannot, "stopped") << stops;
+        EXPECT_GT(asked, stops);
+    }
+    const QualityPlan plan =
+        planQuality(scene, draftQuality(), 1024, std::nullopt, [] { return true; });
+    EXPECT_TRUE(plan.stopped);
+    EXPECT_FALSE(planQuality(scene, draftQuality()).stopped);
+}
+
 }  // namespace
 }  // namespace whitted

@@ -26,7 +26,7 @@ void ProbePredictor::sceneChanged(const Scene& scene) {
 
 void ProbePredictor::predict(Scene&& scene, quint64 ticket) {
     auto result = std::make_shared<ProbePrediction>();
-    result->prediction = predictRender(scene);
+    result->prediction = predictRender(scene, [&] { return requests_.stale(ticket); });
     result->scene = std::move(scene);
     if (requests_.stale(ticket)) return;
     {

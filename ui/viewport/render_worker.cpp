@@ -191,7 +191,8 @@ void RenderWorker::renderOne(RenderRequest requested, quint64 generation) {
     std::shared_ptr<const QualityPlan> plan;
     if (requested.quality) {
         // Chosen for the picture the view shows: its size, the scene's precision.
-        plan = std::make_shared<const QualityPlan>(planQuality(scene, *requested.quality));
+        plan = std::make_shared<const QualityPlan>(
+            planQuality(scene, *requested.quality, kDefaultMaxSamples, std::nullopt, shouldStop));
         if (shouldStop()) return;
         scene.render.maxDepth = plan->maxDepth;
         options.adaptive = plan->sampling;

@@ -5,13 +5,15 @@
 namespace whitted {
 
 TileErrorEstimate centreSampleEstimate(const Image& image, const PixelRect& tile) {
+    // A centre's error, in codes, per code of difference to a neighbour.
+    static const double errorPerDifference = std::sqrt(kNeighbourShare);
     // The 8-bit codes the user sees, each looked up once, and what each
     // difference of codes adds, from a table: srgbCode()'s std::pow and a
     // codeSquaredError() per pair would cost more than tracing the centres of
     // a simple scene.
     static const std::vector<double> squaredOfDifference = [] {
         std::vector<double> table(256);
-        for (int d = 0; d < 256; ++d) table[d] = codeSquaredError(std::sqrt(kNeighbourShare) * d);
+        for (int d = 0; d < 256; ++d) table[d] = codeSquaredError(errorPerDifference * d);
         return table;
     }();
     const int w = tile.width, h = tile.height;
@@ -34,7 +36,7 @@ TileErrorEstimate centreSampleEstimate(const Image& image, const PixelRect& tile
             if (k + 3 < 3 * w) pair(codes[at], codes[at + 3]);
             if (y + 1 < h) pair(codes[at], codes[at + 3 * w]);
         }
-    estimate.largest = std::sqrt(kNeighbourShare) * largest;
+    estimate.largest = errorPerDifference * largest;
     if (estimate.values == 0) estimate.add(255.0);
     return estimate;
 }

@@ -354,6 +354,22 @@ RenderOptions adaptiveOptions(int threads, bool progressive, double allowedMse, 
     return o;
 }
 
+// The small seed converged (double, 1024 samples): what adaptive renders of
+// smallSeed(1, Float) are measured against.
+Image convergedSmallSeed() {
+    return render(smallSeed(1024, Precision::Double), options(2, 32, false)).image;
+}
+
+// An adaptive render's measured and estimated squared errors are both within
+// what it allowed; returns the measured one.
+double expectWithinAllowed(const RenderResult& r, const Image& reference, double allowed) {
+    const ErrorStats e = measureError(r.image, reference);
+    const double measuredMse = e.rmseSrgb8 * e.rmseSrgb8;
+    EXPECT_LE(measuredMse, allowed) << "allowed " << allowed;
+    EXPECT_LE(r.adaptive->estimatedMse, allowed) << "allowed " << allowed;
+    return measuredMse;
+}
+
 TEST(Renderer, AdaptiveRender_SameImageWithAnyThreadsAndWithOrWithoutPreview) {
     const Scene scene = smallSeed(1, Precision::Float);
     const RenderResult one = render(scene, adaptiveOptions(1, false, 2.0, 64));
@@ -399,16 +415,10 @@ TEST(Renderer, AdaptiveRender_GenerousTargetStopsAtTheFirstPass) {
 
 TEST(Renderer, AdaptiveRender_EstimatedErrorIsNoLowerThanTheErrorMeasured) {
     const Scene scene = smallSeed(1, Precision::Float);
-    Scene converged = scene;
-    converged.render.samplesPerPixel = 1024;
-    converged.render.precision = Precision::Double;
-    const Image reference = render(converged, options(2, 32, false)).image;
-    for (const double allowed : {20.0, 2.0, 0.5}) {
-        const RenderResult r = render(scene, adaptiveOptions(2, false, allowed, 1024));
-        const ErrorStats e = measureError(r.image, reference);
-        EXPECT_LE(e.rmseSrgb8 * e.rmseSrgb8, allowed) << "allowed " << allowed;
-        EXPECT_LE(r.adaptive->estimatedMse, allowed) << "allowed " << allowed;
-    }
+    const Image reference = convergedSmallSeed();
+    for (const double allowed : {20.0, 2.0, 0.5})
+        expectWithinAllowed(render(scene, adaptiveOptions(2, false, allowed, 1024)), reference,
+                            allowed);
 }
 
 // ---- adaptive renders that start with the pixels' centres -------------------
@@ -451,21 +461,15 @@ TEST(Renderer, AdaptiveRender_CentresFirst_SameImageWithAnyThreadsAndWithOrWitho
 // the error a converged render shows: the test of its share (a half).
 TEST(Renderer, AdaptiveRender_CentresFirst_EstimatedErrorIsNoLowerThanTheErrorMeasured) {
     const Scene scene = smallSeed(1, Precision::Float);
-    Scene converged = scene;
-    converged.render.samplesPerPixel = 1024;
-    converged.render.precision = Precision::Double;
-    const Image reference = render(converged, options(2, 32, false)).image;
+    const Image reference = convergedSmallSeed();
     const RenderResult centres = render(scene, centresFirstOptions(2, false, 255.0 * 255.0));
     const ErrorStats centresError = measureError(centres.image, reference);
     EXPECT_GE(centres.adaptive->estimatedMse, centresError.rmseSrgb8 * centresError.rmseSrgb8);
     for (const double allowed : {400.0, 150.0, 20.0}) {
         const RenderResult r = render(scene, centresFirstOptions(2, false, allowed));
-        const ErrorStats e = measureError(r.image, reference);
-        EXPECT_LE(e.rmseSrgb8 * e.rmseSrgb8, allowed) << "allowed " << allowed;
-        EXPECT_LE(r.adaptive->estimatedMse, allowed) << "allowed " << allowed;
+        const double measuredMse = expectWithinAllowed(r, reference, allowed);
         std::printf("allowed %5.0f: measured %6.1f, estimated %6.1f codes^2, %.2f samples\n",
-                    allowed, e.rmseSrgb8 * e.rmseSrgb8, r.adaptive->estimatedMse,
-                    r.adaptive->meanSamples);
+                    allowed, measuredMse, r.adaptive->estimatedMse, r.adaptive->meanSamples);
     }
     std::printf("centres only: measured %6.1f, estimated %6.1f codes^2\n",
                 centresError.rmseSrgb8 * centresError.rmseSrgb8, centres.adaptive->estimatedMse);

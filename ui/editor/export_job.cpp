@@ -182,9 +182,10 @@ bool ExportJob::exportFrame(int frame, const Camera& camera, double& seconds) {
     if (frame > 0) scene_.camera = turntableCamera(camera, frame, frames);
     RenderOptions options = oneShotOptions();
     Scene scene = scene_;
+    const StopPredicate cancelled = [this] { return cancelled_.load(); };
     std::optional<QualityPlan> plan;
     if (settings_.quality) {
-        plan = planQuality(scene, *settings_.quality);
+        plan = planQuality(scene, *settings_.quality, kDefaultMaxSamples, std::nullopt, cancelled);
         scene.render.maxDepth = plan->maxDepth;
         options.adaptive = plan->sampling;
     }
@@ -196,7 +197,7 @@ bool ExportJob::exportFrame(int frame, const Camera& camera, double& seconds) {
             const int percent = static_cast<int>(done * 100);
             if (lastPercent.exchange(percent) != percent) emit progress(percent);
         },
-        [this] { return cancelled_.load(); });
+        cancelled);
     if (!result.completed) {
         emit finished(false, tr("Export cancelled."));
         return false;

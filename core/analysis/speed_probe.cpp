@@ -11,8 +11,8 @@ namespace whitted {
 
 namespace {
 
-// A jittered probe's samples a pixel: enough that its first sample, a
-// pixel's centre, is an eighth of its rays.
+// A jittered probe's samples a pixel. A render of more than one sample a
+// pixel traces no centres (pixelSample()): each of its samples is jittered.
 constexpr int kJitteredSamples = 8;
 // Past this, a few pixels' timing says nothing about the power of size.
 constexpr double kLargestSizePower = 1.0;
@@ -34,8 +34,8 @@ Timed timedRender(const Scene& scene, const StopPredicate& stop) {
     return best;
 }
 
-// The centres' cost; the jittered samples' cost from the difference of the
-// two renders, which leaves the centres out.
+// The cost a ray of a one-sample render (pixel centres, in coherent rows)
+// and of a render of several jittered samples a pixel.
 RayCost rayCostAt(const Scene& scene, int side, const StopPredicate& stop) {
     const int longest = std::max(scene.render.width, scene.render.height);
     TradeoffSettings s{1, scene.render.maxDepth, scene.render.precision,
@@ -46,9 +46,7 @@ RayCost rayCostAt(const Scene& scene, int side, const StopPredicate& stop) {
     const Timed jittered = timedRender(probe, stop);
     RayCost cost;
     cost.centre = centres.cpuSeconds / std::max(1.0, centres.rays);
-    cost.jittered = std::max(0.0, jittered.cpuSeconds - centres.cpuSeconds) /
-                    std::max(1.0, jittered.rays - centres.rays);
-    if (cost.jittered <= 0.0) cost.jittered = cost.centre;
+    cost.jittered = jittered.cpuSeconds / std::max(1.0, jittered.rays);
     return cost;
 }
 
@@ -96,10 +94,9 @@ double predictSeconds(const SpeedProbe& probe, const Scene& scene, double rays) 
     const double exponent = doublings > 0.0 ? probe.sizePower * (1.0 - std::pow(0.5, doublings))
                                             : probe.sizePower * doublings;
     const double finer = std::pow(2.0, -exponent);
-    const int samples = std::max(1, scene.render.samplesPerPixel);
-    const double centres = rays / samples;
-    const double cpuSeconds =
-        finer * (centres * probe.atSide.centre + (rays - centres) * probe.atSide.jittered);
+    const RayCost& cost = probe.atSide;
+    const double costARay = scene.render.samplesPerPixel > 1 ? cost.jittered : cost.centre;
+    const double cpuSeconds = finer * rays * costARay;
     return probe.overheadSeconds + cpuSeconds / threadsFor(scene);
 }
 

@@ -24,7 +24,9 @@
 namespace whitted {
 
 struct RayCost {
-    double centre = 0.0, jittered = 0.0;  // CPU seconds a ray
+    // CPU seconds a ray: of a one-sample render (pixel centres only) and of a
+    // render of more samples a pixel (jittered only).
+    double centre = 0.0, jittered = 0.0;
 };
 
 struct SpeedProbe {

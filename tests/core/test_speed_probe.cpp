@@ -30,11 +30,11 @@ TEST(SpeedProbe, PredictSeconds_CentresAndJitteredRaysAtTheirCostsScaledToThePic
     probe.sizePower = 0.8;
     // 640 pixels across is two doublings past the probe's side: the first
     // gains 2^-(0.8/2), the second 2^-(0.8/4), each ray costing 2^-0.6 of the probe's.
-    // 8 samples over 8 million rays: 1 million centres, 7 million jittered;
+    // 8 samples a pixel over 8 million rays: all jittered, none a centre;
     // their CPU time shared among the threads (300 tiles: as many as the cores).
     const double threads = resolveThreadCount(0);
     const double seconds = predictSeconds(probe, seedAt(640, 480, 8), 8e6);
-    EXPECT_NEAR(seconds, 0.01 + std::pow(2.0, -0.6) * (1e6 * 2e-8 + 7e6 * 5e-8) / threads, 1e-12);
+    EXPECT_NEAR(seconds, 0.01 + std::pow(2.0, -0.6) * 8e6 * 5e-8 / threads, 1e-12);
     // One sample a pixel: all centres. At the probe's own size: no scaling.
     EXPECT_NEAR(predictSeconds(probe, seedAt(160, 120, 1), 1e6),
                 0.01 + 1e6 * 2e-8 / std::min(threads, 20.0), 1e-12);

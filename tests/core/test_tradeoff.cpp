@@ -6,6 +6,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 #include "analysis/depth_truncation.h"
 #include "analysis/tradeoff.h"
@@ -53,6 +55,34 @@ TEST(ImageError, SmallerImage_ComparedStretchedOverTheReference) {
     std::fill_n(ref.pixel(1, 1), 3, 0.5f);
     const ErrorStats e = measureError(uniform(1, 1, 0.5f), ref);
     EXPECT_DOUBLE_EQ(e.rmseLinear, std::sqrt(3.0 * 0.0625 / 4.0));
+}
+
+// The largest error is the largest displayDifference() of any pixel, exactly,
+// though measureError() skips pixels whose codes say they cannot beat it:
+// pairs a hair apart across code boundaries, near black (the linear part of
+// the curve), and a pixel that is infinite.
+TEST(ImageError, Largest_IsTheLargestDisplayDifferenceOfAnyPixel) {
+    std::uint32_t state = 12345;
+    auto next = [&] {
+        state = state * 1664525u + 1013904223u;
+        return float(state >> 8) / float(1u << 24);
+    };
+    // Differences of up to a few codes, up to one or two, and mostly under one.
+    for (const float spread : {0.02f, 0.004f, 0.0008f}) {
+        Image a(64, 48), b(64, 48);
+        for (std::size_t i = 0; i < a.rgb.size(); ++i) {
+            const float v = i % 7 == 0 ? 0.004f * next() : next();
+            a.rgb[i] = v;
+            b.rgb[i] = v + (next() - 0.5f) * spread;
+        }
+        float expected = 0.0f;
+        for (int y = 0; y < 48; ++y)
+            for (int x = 0; x < 64; ++x)
+                expected = std::max(expected, displayDifference(a.pixel(x, y), b.pixel(x, y)));
+        EXPECT_DOUBLE_EQ(measureError(a, b).largest, double(expected) * 255.0) << spread;
+        a.pixel(40, 30)[1] = std::numeric_limits<float>::infinity();
+        EXPECT_DOUBLE_EQ(measureError(a, b).largest, 255.0) << spread;
+    }
 }
 
 TEST(Tradeoff, WithSettings_ScalesTheSizeAndSetsTheRest) {

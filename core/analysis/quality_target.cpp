@@ -23,6 +23,12 @@ constexpr double kLargestMargin = 0.8;
 // renders of a small picture.
 constexpr int kProbeSide = 320;
 constexpr int kSmallestProbeSide = 40;
+// A probe that traces for less than this runs on one thread: a second
+// thread's start and join cost about as much as tracing a 40x30 probe of a
+// few balls (0.06 ms), and planning a Draft renders five to seven of those.
+// The probes grow dearer with depth; once one is over this, the rest use
+// every core.
+constexpr double kOneThreadProbeSeconds = 0.5e-3;
 // How much deeper the render a depth is measured against goes.
 constexpr int kLookAhead = 3;
 // The deepest depth a plan chooses. In a field of glass balls light trapped
@@ -88,8 +94,10 @@ class ProbeRenders {
         RenderOptions options = oneShotOptions();
         options.bvhCache = &cache_;
         options.sceneValidated = validated_;  // the first render throws if it is not valid
+        options.threads = oneThread_ ? 1 : 0;
         RenderResult r = whitted::render(probe_, options, {}, stop_);
         validated_ = true;
+        oneThread_ = oneThread_ && r.tilesCpuSeconds < kOneThreadProbeSeconds;
         plan.probeRays += r.rays.total();
         return std::move(r.image);
     }
@@ -97,6 +105,7 @@ class ProbeRenders {
     Scene probe_;
     const StopPredicate& stop_;
     bool validated_ = false;
+    bool oneThread_ = true;
     BvhCache cache_;
     std::map<int, Image> byDepth_;  // a map, so references stay valid
 };

@@ -40,17 +40,7 @@ void sayQualityPlan(const QualityPlan& plan) {
 }
 
 void sayQualityReached(const QualityPlan& plan, const AdaptiveOutcome& a) {
-    if (a.fewestSamples == a.mostSamples)
-        std::fprintf(stderr, "  reached: %d sample%s a pixel everywhere, estimated %.1f dB",
-                     a.mostSamples, a.mostSamples == 1 ? "" : "s", estimatedPsnr(plan, a));
-    else
-        std::fprintf(stderr,
-                     "  reached: %d to %d samples a pixel (%.1f on average), estimated %.1f dB",
-                     a.fewestSamples, a.mostSamples, a.meanSamples, estimatedPsnr(plan, a));
-    if (plan.target.largestCodes)
-        std::fprintf(stderr, ", largest error about %.1f codes",
-                     std::max(plan.depthLargest, a.estimatedLargest));
-    std::fprintf(stderr, "\n");
+    std::fprintf(stderr, "  reached: %s\n", describeReached(plan, a).c_str());
     if (a.tilesAtCap > 0)
         std::fprintf(stderr,
                      "  %d of %d tiles stopped at %d samples a pixel before reaching the target "

@@ -181,21 +181,24 @@ std::optional<QualityTarget> targetOf(const Options& o) {
     return std::nullopt;
 }
 
-// One image: the scene as given, rendered (only its region, if any) and
-// written with its stats. Returns the exit code.
-int renderFrame(const Scene& scene, const Options& o, const std::optional<PixelRect>& region,
-                int frame, const std::optional<QualityPlan>& plan) {
+// One image: the scene as given (at the plan's depth, if there is a plan),
+// rendered (only its region, if any) and written with its stats. Returns the
+// exit code.
+int renderFrame(Scene& scene, const Options& o, const std::optional<PixelRect>& region, int frame,
+                const std::optional<QualityPlan>& plan) {
     const fs::path output = frameFile(o.output, frame);
     ProgressBar bar(!o.quiet);
     RenderOptions options = oneShotOptions();
     options.threads = o.threads;
     options.region = region;
-    if (plan) options.adaptive = plan->sampling;
+    if (plan) applyPlan(*plan, scene, options);
     const RenderResult result =
         render(scene, options, [&](const TileUpdate& t) { bar.update(t.progress.fraction); });
     bar.finish();
     const ImageMetadata metadata =
-        makeImageMetadata(scene.render, result.seconds, "whitted-render");
+        plan && result.adaptive
+            ? qualityMetadata(scene, *plan, *result.adaptive, result.seconds, "whitted-render")
+            : makeImageMetadata(scene.render, result.seconds, "whitted-render");
     try {
         if (region)
             writeImagePart({cropImage(result.image, *region), *region, scene.render.width,
@@ -276,7 +279,6 @@ int run(const Options& o) {
                                o.render.depth);
             if (!o.quiet) sayQualityPlan(*plan);
         }
-        if (plan) scene.render.maxDepth = plan->maxDepth;
         if (const int code = renderFrame(scene, o, region, frame, plan); code != kExitOk)
             return code;
     }

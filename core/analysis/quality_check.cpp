@@ -30,9 +30,8 @@ QualityCheck checkQuality(const Scene& scene, const QualityTarget& target, const
     const auto start = std::chrono::steady_clock::now();
     c.plan = planQuality(scene, target);
     Scene planned = scene;
-    planned.render.maxDepth = c.plan.maxDepth;
     RenderOptions options = oneShotOptions();
-    options.adaptive = c.plan.sampling;
+    applyPlan(c.plan, planned, options);
     const RenderResult r = render(planned, options);
     c.seconds = secondsSince(start);
     c.error = measureError(r.image, reference);

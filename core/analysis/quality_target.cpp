@@ -23,6 +23,12 @@ constexpr double kLargestMargin = 0.8;
 // renders of a small picture.
 constexpr int kProbeSide = 320;
 constexpr int kSmallestProbeSide = 40;
+// Float's difference from double, at the probes' centres, that is measured
+// again with more samples a pixel (planPrecision()): a share of the budget
+// like the depth's, below which the extra probes would cost more than the
+// samples they might save.
+constexpr double kPrecisionShareOfMse = 0.1;
+constexpr int kPrecisionSamples = 8;
 // A probe that traces for less than this runs on one thread: a second
 // thread's start and join cost about as much as tracing a 40x30 probe of a
 // few balls (0.06 ms), and planning a Draft renders five to seven of those.
@@ -74,22 +80,25 @@ class ProbeRenders {
 
     const Scene& scene() const { return probe_; }
 
+    // The probe's centres at `depth`, in the scene's precision.
     const Image& at(int depth, QualityPlan& plan) {
         auto found = byDepth_.find(depth);
         if (found != byDepth_.end()) return found->second;
-        return byDepth_.emplace(depth, render(depth, plan)).first->second;
+        return byDepth_.emplace(depth, trace(depth, plan)).first->second;
     }
 
-    Image inDouble(int depth, QualityPlan& plan) {
-        const Precision own = probe_.render.precision;
-        probe_.render.precision = Precision::Double;
-        Image image = render(depth, plan);
-        probe_.render.precision = own;
+    // The probe at `depth` with `samples` a pixel (1: its centres), in `precision`.
+    Image render(int depth, QualityPlan& plan, Precision precision, int samples = 1) {
+        const RenderSettings own = probe_.render;
+        probe_.render.precision = precision;
+        probe_.render.samplesPerPixel = samples;
+        Image image = trace(depth, plan);
+        probe_.render = own;
         return image;
     }
 
   private:
-    Image render(int depth, QualityPlan& plan) {
+    Image trace(int depth, QualityPlan& plan) {
         probe_.render.maxDepth = depth;
         RenderOptions options = oneShotOptions();
         options.bvhCache = &cache_;
@@ -167,10 +176,24 @@ void planDepth(ProbeRenders& probes, std::optional<int> given, QualityPlan& plan
 
 // What float arithmetic changes against double at the chosen depth, in the
 // same probe: the reference a user compares with is converged, in double.
+// Where float and double part in a sliver of a pixel (a ray grazing a glass
+// ball), the centre shows the whole difference or none, while a render of
+// many samples averages it over the pixel: the error it keeps is the square
+// of the sliver's share, not the share. So where the centres' difference
+// would take a real part of the budget, it is measured again with
+// kPrecisionSamples a pixel, in both precisions at the same sample positions,
+// and that is taken: a difference the samples share out is then counted as
+// the sampling counts it, and what is left is float's bias.
 void planPrecision(ProbeRenders& probes, QualityPlan& plan) {
     if (probes.scene().render.precision == Precision::Double) return;
-    const Image inDouble = probes.inDouble(plan.maxDepth, plan);
-    plan.precisionMse = depthError(probes.at(plan.maxDepth, plan), inDouble).mse;
+    const int depth = plan.maxDepth;
+    const Image inDouble = probes.render(depth, plan, Precision::Double);
+    plan.precisionMse = depthError(probes.at(depth, plan), inDouble).mse;
+    if (plan.precisionMse <= kPrecisionShareOfMse * allowedMse(plan.target.psnrDb)) return;
+    plan.precisionSamples = kPrecisionSamples;
+    plan.precisionMse = depthError(probes.render(depth, plan, Precision::Float, kPrecisionSamples),
+                                   probes.render(depth, plan, Precision::Double, kPrecisionSamples))
+                            .mse;
 }
 
 std::string depthWhy(const QualityPlan& p) {
@@ -232,6 +255,37 @@ double allowedMse(double psnrDb) {
     return 255.0 * 255.0 / std::pow(10.0, psnrDb / 10.0);
 }
 
+std::string describeReached(const QualityPlan& plan, const AdaptiveOutcome& a) {
+    std::string text = a.fewestSamples == a.mostSamples
+                           ? format(a.mostSamples == 1 ? "%.0f sample a pixel everywhere"
+                                                       : "%.0f samples a pixel everywhere",
+                                    a.mostSamples)
+                           : format("%.0f to %.0f samples a pixel (%.1f on average)",
+                                    a.fewestSamples, a.mostSamples, a.meanSamples);
+    text += format(", estimated %.1f dB", estimatedPsnr(plan, a));
+    if (plan.target.largestCodes)
+        text += format(", largest error about %.1f codes",
+                       std::max(plan.depthLargest, a.estimatedLargest));
+    return text;
+}
+
+ImageMetadata qualityMetadata(const Scene& scene, const QualityPlan& plan,
+                              const AdaptiveOutcome& reached, double seconds,
+                              std::string software) {
+    RenderSettings settings = scene.render;
+    settings.maxDepth = plan.maxDepth;
+    settings.samplesPerPixel = reached.mostSamples;
+    return makeImageMetadata(settings, seconds, std::move(software),
+                             describeTarget(plan.target) + "; depth " +
+                                 std::to_string(plan.maxDepth) + ", " +
+                                 describeReached(plan, reached));
+}
+
+void applyPlan(const QualityPlan& plan, Scene& scene, RenderOptions& options) {
+    scene.render.maxDepth = plan.maxDepth;
+    options.adaptive = plan.sampling;
+}
+
 double estimatedPsnr(const QualityPlan& plan, const AdaptiveOutcome& outcome) {
     const double mse = plan.depthMse + plan.precisionMse + outcome.estimatedMse;
     return mse > 0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : 999.0;
@@ -260,7 +314,10 @@ QualityPlan planQuality(const Scene& scene, const QualityTarget& target, int max
     plan.why = depthWhy(plan) + "\n";
     if (scene.render.precision == Precision::Float)
         plan.why +=
-            format("float against double: %.3g codes^2 in the same probe\n", plan.precisionMse);
+            format("float against double: %.3g codes^2 in the same probe", plan.precisionMse) +
+            (plan.precisionSamples > 1 ? format(", at %.0f samples a pixel", plan.precisionSamples)
+                                       : std::string()) +
+            "\n";
     plan.why += samplingWhy(plan);
     if (plan.depthMse > total)
         plan.why +=

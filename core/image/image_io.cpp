@@ -41,16 +41,20 @@ std::optional<ImageFormatInfo> imageFormatFor(const fs::path& file) {
     return std::nullopt;
 }
 
-ImageMetadata makeImageMetadata(const RenderSettings& s, double renderSeconds,
-                                std::string software) {
+ImageMetadata makeImageMetadata(const RenderSettings& s, double renderSeconds, std::string software,
+                                std::string quality) {
     ImageMetadata m;
     m.software = std::move(software);
     m.settings = s;
     m.renderSeconds = renderSeconds;
+    m.quality = std::move(quality);
     std::ostringstream d;
-    d << "Whitted ray tracer: " << s.width << "x" << s.height << ", " << s.samplesPerPixel
-      << " samples per pixel, max depth " << s.maxDepth << ", " << precisionName(s.precision)
-      << " precision, rendered in " << renderSeconds << " s";
+    d << "Whitted ray tracer: " << s.width << "x" << s.height << ", ";
+    if (m.quality.empty())
+        d << s.samplesPerPixel << " samples per pixel, max depth " << s.maxDepth;
+    else
+        d << "to a quality, " << m.quality;
+    d << ", " << precisionName(s.precision) << " precision, rendered in " << renderSeconds << " s";
     m.description = d.str();
     return m;
 }
@@ -80,6 +84,7 @@ OIIO::ImageSpec imageSpec(const Image& image, const fs::path& file, const ImageF
     spec.attribute("whitted:max_depth", metadata.settings.maxDepth);
     spec.attribute("whitted:precision", std::string(precisionName(metadata.settings.precision)));
     spec.attribute("whitted:render_seconds", float(metadata.renderSeconds));
+    if (!metadata.quality.empty()) spec.attribute("whitted:quality", metadata.quality);
     spec.attribute("oiio:ColorSpace", format.isFloat ? "Linear" : "sRGB");
     if (format.format == ImageFormat::Jpeg) spec.attribute("CompressionQuality", 95);
     return spec;
@@ -163,6 +168,7 @@ ImagePart readImagePart(const fs::path& file) {
     r.precision =
         parsePrecision(spec.get_string_attribute("whitted:precision")).value_or(r.precision);
     m.renderSeconds = spec.get_float_attribute("whitted:render_seconds", 0.0f);
+    m.quality = spec.get_string_attribute("whitted:quality");
     const bool eightBit = spec.format == OIIO::TypeDesc::UINT8;
     std::vector<float> all(size_t(spec.width) * spec.height * spec.nchannels);
     std::vector<std::uint8_t> codes(eightBit ? all.size() : 0);

@@ -360,6 +360,20 @@ TEST(WhittedRender, QualityFinal_MeetsItsTargetAgainstAConvergedRenderAndSaysWhy
     EXPECT_LT(q["samples_per_pixel_fewest"].get<int>(), q["samples_per_pixel_most"].get<int>());
     EXPECT_GE(q["estimated_psnr_db"].get<double>(), 50.0);
     EXPECT_EQ(q["tiles_at_sample_limit"], 0);
+
+    // The file says what the render did, not the scene's samples_per_pixel.
+    const ImageMetadata m = readImagePart(out).metadata;
+    EXPECT_EQ(m.settings.maxDepth, j["max_depth"].get<int>());
+    EXPECT_EQ(m.settings.samplesPerPixel, q["samples_per_pixel_most"].get<int>());
+    const std::string samples = std::to_string(q["samples_per_pixel_fewest"].get<int>()) + " to " +
+                                std::to_string(q["samples_per_pixel_most"].get<int>()) +
+                                " samples a pixel";
+    EXPECT_EQ(m.quality.rfind("Final: 50 dB, no pixel off by more than 16 codes; depth " +
+                                  std::to_string(j["max_depth"].get<int>()) + ", " + samples,
+                              0),
+              0u)
+        << m.quality;
+    EXPECT_NE(m.description.find("to a quality, Final: 50 dB"), std::string::npos) << m.description;
 }
 
 // Draft is loose enough that one sample at each pixel's centre may do: where

@@ -186,8 +186,7 @@ bool ExportJob::exportFrame(int frame, const Camera& camera, double& seconds) {
     std::optional<QualityPlan> plan;
     if (settings_.quality) {
         plan = planQuality(scene, *settings_.quality, kDefaultMaxSamples, std::nullopt, cancelled);
-        scene.render.maxDepth = plan->maxDepth;
-        options.adaptive = plan->sampling;
+        applyPlan(*plan, scene, options);
     }
     std::atomic<int> lastPercent{-1};  // tiles report from several threads
     const RenderResult result = render(
@@ -204,7 +203,9 @@ bool ExportJob::exportFrame(int frame, const Camera& camera, double& seconds) {
     }
     try {
         writeImage(result.image, frameFile(settings_.path.toStdString(), frame),
-                   makeImageMetadata(scene.render, result.seconds, "whitted"));
+                   plan && result.adaptive
+                       ? qualityMetadata(scene, *plan, *result.adaptive, result.seconds, "whitted")
+                       : makeImageMetadata(scene.render, result.seconds, "whitted"));
     } catch (const std::exception& e) {
         emit finished(false, QString::fromStdString(e.what()));
         return false;

@@ -194,8 +194,7 @@ void RenderWorker::renderOne(RenderRequest requested, quint64 generation) {
         plan = std::make_shared<const QualityPlan>(
             planQuality(scene, *requested.quality, kDefaultMaxSamples, std::nullopt, shouldStop));
         if (shouldStop()) return;
-        scene.render.maxDepth = plan->maxDepth;
-        options.adaptive = plan->sampling;
+        applyPlan(*plan, scene, options);
     }
     FrameAssembler frames(scene, plan, generation, shouldStop,
                           [this](RenderFrame frame) { post(std::move(frame)); });

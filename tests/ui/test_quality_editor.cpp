@@ -7,6 +7,7 @@
 // scene (double, 512 samples a pixel, depth 14).
 #include <QComboBox>
 #include <QLabel>
+#include <QRegularExpression>
 #include <QStatusBar>
 #include <QTest>
 
@@ -41,6 +42,12 @@ class QualityEditorTest : public MainWindowTest {
 };
 
 TEST_F(QualityEditorTest, FinalShortcut_RendersToFinalsTarget_MeasuredAgainstAConvergedRender) {
+    QStringList duringTheRender;  // the status bar at each pass before the last
+    QObject::connect(window.get(), &MainWindow::frameShown, window.get(),
+                     [&](const RenderFrame& f) {
+                         if (f.qualityPlan && !f.renderComplete && !f.preview)
+                             duringTheRender << statusText();
+                     });
     ASSERT_TRUE(pressAndWait("Ctrl+3"));
     ASSERT_TRUE(window->qualityChoice()->target().has_value());
     EXPECT_EQ(window->qualityChoice()->target()->name, "Final");
@@ -64,6 +71,16 @@ TEST_F(QualityEditorTest, FinalShortcut_RendersToFinalsTarget_MeasuredAgainstACo
                                     .arg(frame.qualityReached->fewestSamples)
                                     .arg(frame.qualityReached->mostSamples)))
         << status.toStdString();
+    // Its passes are counted, but no total is promised: each pass decides
+    // whether another follows.
+    ASSERT_FALSE(duringTheRender.isEmpty());
+    for (const QString& text : duringTheRender) {
+        EXPECT_TRUE(text.contains(
+            QStringLiteral("Final, depth %1: Pass ").arg(frame.qualityPlan->maxDepth)))
+            << text.toStdString();
+        EXPECT_FALSE(text.contains(QRegularExpression(QStringLiteral("Pass \\d+ of"))))
+            << text.toStdString();
+    }
     // Depth and samples are the target's to choose: their fields rest.
     EXPECT_FALSE(child<QWidget>("renderMaxDepth")->isEnabled());
     EXPECT_FALSE(child<QWidget>("renderSamples")->isEnabled());

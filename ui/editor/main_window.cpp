@@ -113,8 +113,11 @@ void MainWindow::onFrame(const RenderFrame& frame) {
     if (frame.generation != worker_.latestGeneration()) return;
     view_->setFrame(frame.image, QSizeF(frame.settings.width / double(frame.block),
                                         frame.settings.height / double(frame.block)));
-    passLabel_->setText(frame.preview
-                            ? tr("Preview")
+    // A render to a quality decides after each pass whether another follows:
+    // it has no count of passes to give.
+    passLabel_->setText(frame.preview ? tr("Preview")
+                        : frame.qualityPlan
+                            ? tr("Pass %1").arg(frame.pass + 1)
                             : tr("Pass %1 of %2").arg(frame.pass + 1).arg(frame.passCount));
     samplesLabel_->setText(tr("%n sample(s) per pixel", nullptr, frame.samples));
     timeLabel_->setText(tr("%1 s").arg(frame.seconds, 0, 'f', 2));

@@ -48,6 +48,15 @@ TEST_F(QualityEditorTest, FinalShortcut_RendersToFinalsTarget_MeasuredAgainstACo
                          if (f.qualityPlan && !f.renderComplete && !f.preview)
                              duringTheRender << statusText();
                      });
+    // The preset's tooltip, where a user hovers before choosing Final.
+    auto finalTip = [&] {
+        return child<QComboBox>("renderPreset")->itemData(3, Qt::ToolTipRole).toString();
+    };
+    EXPECT_TRUE(finalTip().startsWith(
+        QStringLiteral("Renders to Final: 50 dB, no pixel off by more than 16 codes")))
+        << finalTip().toStdString();
+    EXPECT_TRUE(finalTip().contains(QStringLiteral("Not yet rendered to it on this scene")))
+        << finalTip().toStdString();
     ASSERT_TRUE(pressAndWait("Ctrl+3"));
     ASSERT_TRUE(window->qualityChoice()->target().has_value());
     EXPECT_EQ(window->qualityChoice()->target()->name, "Final");
@@ -71,6 +80,15 @@ TEST_F(QualityEditorTest, FinalShortcut_RendersToFinalsTarget_MeasuredAgainstACo
                                     .arg(frame.qualityReached->fewestSamples)
                                     .arg(frame.qualityReached->mostSamples)))
         << status.toStdString();
+    // The tooltip now says what that render took.
+    EXPECT_TRUE(finalTip().contains(
+        QStringLiteral(
+            "The last render to it here: %1 s, depth %2, %3 to %4 samples per pixel, about ")
+            .arg(frame.seconds, 0, 'f', 2)
+            .arg(frame.qualityPlan->maxDepth)
+            .arg(frame.qualityReached->fewestSamples)
+            .arg(frame.qualityReached->mostSamples)))
+        << finalTip().toStdString();
     // Its passes are counted, but no total is promised: each pass decides
     // whether another follows.
     ASSERT_FALSE(duringTheRender.isEmpty());

@@ -20,6 +20,21 @@ void QualityChoice::setTarget(std::optional<QualityTarget> target) {
     emit changed();
 }
 
+void QualityChoice::noteReached(const std::string& targetName, const QString& text) {
+    reached_[targetName] = text;
+    emit reachedNoted();
+}
+
+QString QualityChoice::lastReached(const std::string& targetName) const {
+    const auto found = reached_.find(targetName);
+    return found == reached_.end() ? QString() : found->second;
+}
+
+void QualityChoice::forgetReached() {
+    reached_.clear();
+    emit reachedNoted();
+}
+
 std::vector<QualityTarget> QualityChoice::offered() {
     return {draftQuality(), previewQuality(), finalQuality()};
 }

@@ -9,7 +9,9 @@
 #include <QObject>
 #include <QString>
 
+#include <map>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "analysis/quality_target.h"
@@ -43,11 +45,21 @@ class QualityChoice : public QObject {
     // Its index for `target` (0: the settings).
     static int indexOf(const std::optional<QualityTarget>& target);
 
+    // What the view's last render to a named target reached on this scene
+    // ("1.41 s, depth 6, 2 to 256 samples per pixel, about 51.1 dB"), for
+    // the presets' tooltips; empty where none was rendered. Forgotten when
+    // the scene is replaced.
+    void noteReached(const std::string& targetName, const QString& text);
+    QString lastReached(const std::string& targetName) const;
+    void forgetReached();
+
   signals:
-    void changed();
+    void changed();       // the target: the view renders again
+    void reachedNoted();  // only what a render reached: nothing to render
 
   private:
     std::optional<QualityTarget> target_;
+    std::map<std::string, QString> reached_;
 };
 
 }  // namespace whitted::ui

@@ -106,6 +106,7 @@ void MainWindow::sceneReplaced() {
     view_->setHomeCamera(doc_.scene().camera);
     // Times, errors and the pinned image belong to the scene that was open.
     tradeoffView_->sceneReplaced();
+    quality_.forgetReached();
 }
 
 void MainWindow::onFrame(const RenderFrame& frame) {
@@ -147,6 +148,12 @@ void MainWindow::showQualityReached(const RenderFrame& frame) {
                            .arg(target)
                            .arg(plan.maxDepth)
                            .arg(estimatedPsnr(plan, reached), 0, 'f', 1);
+    if (!plan.target.name.empty())
+        quality_.noteReached(plan.target.name, tr("%1 s, depth %2, %3, about %4 dB")
+                                                   .arg(frame.seconds, 0, 'f', 2)
+                                                   .arg(plan.maxDepth)
+                                                   .arg(QualityChoice::samplesTaken(reached))
+                                                   .arg(estimatedPsnr(plan, reached), 0, 'f', 1));
     if (reached.tilesAtCap > 0)
         estimate += tr(" (%1 of %2 tiles stopped at %3 samples short of the target)")
                         .arg(reached.tilesAtCap)

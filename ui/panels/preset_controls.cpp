@@ -82,6 +82,7 @@ PresetControls::PresetControls(SceneDocument* doc, TradeoffRecord* record, Quali
 
     connect(doc_, &SceneDocument::sceneChanged, this, &PresetControls::refresh);
     connect(quality_, &QualityChoice::changed, this, &PresetControls::refresh);
+    connect(quality_, &QualityChoice::reachedNoted, this, &PresetControls::refresh);
     connect(record_, &TradeoffRecord::changed, this, &PresetControls::refresh);
     refresh();
 }
@@ -155,13 +156,27 @@ void PresetControls::refresh() {
         time_->setText(timeText(now));
         error_->setText(errorText(now));
     }
-    // Each preset's own prediction where the user hovers before choosing.
+    // Where the user hovers before choosing: the target the view will render
+    // to, what the last render to it here took, and the prediction for the
+    // preset's own settings (what "Render to: the settings" renders).
     for (std::size_t i = 0; i < kRenderPresets.size(); ++i) {
+        const RenderPreset& preset = kRenderPresets[i];
         RenderSettings with = scene.render;
-        applyPreset(kRenderPresets[i], with);
+        applyPreset(preset, with);
         const Prediction p = record_->predict(scene, &with);
-        combo_->setItemData(int(i) + 1, tr("Time: %1\nError: %2").arg(timeText(p), errorText(p)),
-                            Qt::ToolTipRole);
+        const std::optional<QualityTarget> itsTarget = qualityPreset(preset.name);
+        const QString reached = quality_->lastReached(std::string(preset.name));
+        const QString tip =
+            tr("Renders to %1, choosing the depth and samples for this scene.\n%2\n"
+               "Its settings, when rendering to the samples per pixel and max depth set "
+               "here:\nTime: %3\nError: %4")
+                .arg(QualityChoice::describe(itsTarget),
+                     reached.isEmpty()
+                         ? tr("Not yet rendered to it on this scene: the status bar will "
+                              "show what it takes.")
+                         : tr("The last render to it here: %1.").arg(reached),
+                     timeText(p), errorText(p));
+        combo_->setItemData(int(i) + 1, tip, Qt::ToolTipRole);
     }
 }
 

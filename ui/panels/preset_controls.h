@@ -8,6 +8,9 @@
 // the preset the scene's settings match, else Custom. The predictions are for
 // the settings; they follow every edit, every finished render and every
 // Measure result, and say where they come from, or that a target has none.
+// Each preset's tooltip names the target it renders to, what the view's last
+// render to it on this scene took (QualityChoice::lastReached()), and the
+// prediction for its settings.
 #pragma once
 
 #include <QObject>

@@ -183,13 +183,18 @@ void planDepth(ProbeRenders& probes, std::optional<int> given, QualityPlan& plan
 // would take a real part of the budget, it is measured again with
 // kPrecisionSamples a pixel, in both precisions at the same sample positions,
 // and that is taken: a difference the samples share out is then counted as
-// the sampling counts it, and what is left is float's bias.
+// the sampling counts it, and what is left is float's bias. Not where the
+// render may stop at the centres (one sample a pixel at most, or
+// centresFirst): there the centres' difference is the one it shows.
 void planPrecision(ProbeRenders& probes, QualityPlan& plan) {
     if (probes.scene().render.precision == Precision::Double) return;
     const int depth = plan.maxDepth;
     const Image inDouble = probes.render(depth, plan, Precision::Double);
     plan.precisionMse = depthError(probes.at(depth, plan), inDouble).mse;
-    if (plan.precisionMse <= kPrecisionShareOfMse * allowedMse(plan.target.psnrDb)) return;
+    const bool severalSamples = plan.sampling.maxSamples > 1 && !plan.sampling.centresFirst;
+    if (!severalSamples ||
+        plan.precisionMse <= kPrecisionShareOfMse * allowedMse(plan.target.psnrDb))
+        return;
     plan.precisionSamples = kPrecisionSamples;
     plan.precisionMse = depthError(probes.render(depth, plan, Precision::Float, kPrecisionSamples),
                                    probes.render(depth, plan, Precision::Double, kPrecisionSamples))
@@ -299,6 +304,8 @@ QualityPlan planQuality(const Scene& scene, const QualityTarget& target, int max
     // once, and the plan is marked as stopped below.
     ProbeRenders probes(scene, target.psnrDb, stop);
     planDepth(probes, depth, plan);
+    plan.sampling.maxSamples = std::max(1, maxSamples);
+    plan.sampling.centresFirst = !target.largestCodes && target.psnrDb <= kCentresFirstUpToDb;
     planPrecision(probes, plan);
     plan.stopped = stop && stop();
     const double total = allowedMse(target.psnrDb);
@@ -309,8 +316,6 @@ QualityPlan planQuality(const Scene& scene, const QualityTarget& target, int max
     // The largest errors of the depth and of the sampling are seldom in the
     // same pixel (light trapped in glass; edges), so each gets the whole limit.
     if (target.largestCodes) plan.sampling.allowedLargest = kLargestMargin * *target.largestCodes;
-    plan.sampling.maxSamples = std::max(1, maxSamples);
-    plan.sampling.centresFirst = !target.largestCodes && target.psnrDb <= kCentresFirstUpToDb;
     plan.why = depthWhy(plan) + "\n";
     if (scene.render.precision == Precision::Float)
         plan.why +=

@@ -106,6 +106,11 @@ TEST(QualityTarget, FloatAgainstDouble_MeasuredWithSamplesWhereTheCentresDifferM
                 atCentres, plan.precisionMse, atMany);
     EXPECT_LT(plan.precisionMse, atCentres / 4.0);
     EXPECT_GE(plan.precisionMse, atMany);
+    // A render of one sample a pixel at most shows the centres' difference:
+    // that is what its plan counts.
+    const QualityPlan oneSample = planQuality(glass, finalQuality(), 1);
+    EXPECT_EQ(oneSample.precisionSamples, 1);
+    EXPECT_NEAR(oneSample.precisionMse, atCentres, 1e-9);
     // Where the centres' difference is small, it is what the plan counts.
     Scene seed = loadScene(WHITTED_SCENES_DIR "/seed.json");
     seed.render.precision = Precision::Float;

@@ -24,42 +24,16 @@
 #include "analysis/quality_check.h"
 #include "analysis/render_prediction.h"
 #include "analysis/speed_probe.h"
-#include "scene/scene_io.h"
-#include "sphere_field.h"
+#include "bench_scenes.h"
 #include "tracer/renderer.h"
 
 using namespace whitted;
 
 namespace {
 
-struct Named {
-    std::string name;
-    Scene scene;
-};
-
-Named field(int count, std::uint32_t seed) {
-    FieldOptions o;
-    o.count = count;
-    o.seed = seed;
-    o.halfWidth = 4.0;
-    o.depth = 10.0;
-    return {"generated: " + std::to_string(count) + " balls, seed " + std::to_string(seed),
-            sphereField(o)};
-}
-
-std::vector<Named> scenes(int width, int height) {
-    std::vector<Named> list;
-    for (const char* name :
-         {"seed", "glass", "mirrors", "coloured-shadows", "whitted-1980", "field"})
-        list.push_back({name, loadScene(std::string(WHITTED_SCENES_DIR "/") + name + ".json")});
-    list.push_back(field(150, 31));
-    list.push_back(field(400, 57));
-    for (Named& n : list) {
-        n.scene.render.width = width;
-        n.scene.render.height = height;
-        n.scene.render.precision = Precision::Float;
-    }
-    return list;
+std::vector<NamedScene> scenes(int width, int height) {
+    return benchScenes(width, height,
+                       {generatedField(150, 31, 4.0, 10.0), generatedField(400, 57, 4.0, 10.0)});
 }
 
 RenderResult fasterOfTwo(const Scene& scene) {
@@ -85,7 +59,7 @@ void speedTable() {
     int full = 0, halving = 0, total = 0;
     auto within = [](double ratio) { return std::fabs(ratio - 1.0) <= 0.25; };
     for (const int width : {320, 640})
-        for (Named& n : scenes(width, width * 3 / 4)) {
+        for (NamedScene& n : scenes(width, width * 3 / 4)) {
             n.scene.render.maxDepth = 5;
             const SpeedProbe probe = probeSpeed(n.scene, 160);
             std::printf("| %s | %d | %.2f |", n.name.c_str(), width, probe.sizePower);
@@ -120,7 +94,7 @@ int main(int argc, char** argv) {
         "|---|---|---|---|---|---|---|---|---|\n");
     int within = 0, total = 0, raysWithin = 0, secondsWithin = 0, sameDepthWithin = 0,
         probedWithin = 0;
-    for (const Named& n : scenes(width, height)) {
+    for (const NamedScene& n : scenes(width, height)) {
         const Image reference = convergedReference(n.scene);
         double secondsPerRay = 0.0;  // of the render before: none yet
         for (const auto& [spp, depth] : {std::pair{1, 2}, {4, 3}, {16, 5}, {128, 8}}) {

@@ -11,35 +11,14 @@
 
 #include "analysis/quality_check.h"
 #include "analysis/render_presets.h"
-#include "scene/scene_io.h"
-#include "sphere_field.h"
+#include "bench_scenes.h"
 
 using namespace whitted;
 
 namespace {
 
-struct Named {
-    std::string name;
-    Scene scene;
-};
-
-std::vector<Named> scenes(int width, int height) {
-    std::vector<Named> list;
-    for (const char* name :
-         {"seed", "glass", "mirrors", "coloured-shadows", "whitted-1980", "field"})
-        list.push_back({name, loadScene(std::string(WHITTED_SCENES_DIR "/") + name + ".json")});
-    FieldOptions o;
-    o.count = 300;
-    o.seed = 7;
-    o.halfWidth = 5.0;
-    o.depth = 12.0;
-    list.push_back({"generated: 300 balls, seed 7", sphereField(o)});
-    for (Named& n : list) {
-        n.scene.render.width = width;
-        n.scene.render.height = height;
-        n.scene.render.precision = Precision::Float;
-    }
-    return list;
+std::vector<NamedScene> scenes(int width, int height) {
+    return benchScenes(width, height, {generatedField(300, 7, 5.0, 12.0)});
 }
 
 std::string measured(const ErrorStats& e) {
@@ -48,7 +27,7 @@ std::string measured(const ErrorStats& e) {
     return text;
 }
 
-void row(const Named& n, const QualityTarget& target, const RenderPreset& preset,
+void row(const NamedScene& n, const QualityTarget& target, const RenderPreset& preset,
          const Image& reference) {
     const QualityCheck c = checkQuality(n.scene, target, reference);
     Scene fixedScene = n.scene;
@@ -85,7 +64,7 @@ int main(int argc, char** argv) {
         "| scene | target | depth | mean spp | measured (estimated dB) | met | ours: "
         "rays, time | fixed preset: measured, met | its rays, time | fewest fixed "
         "samples meeting it at our depth |\n|---|---|---|---|---|---|---|---|---|---|\n");
-    for (const Named& n : scenes(width, height)) {
+    for (const NamedScene& n : scenes(width, height)) {
         const Image reference = convergedReference(n.scene);
         for (int i = 0; i < 3; ++i) row(n, targets[i], kRenderPresets[i], reference);
     }

@@ -1,0 +1,45 @@
+// The scenes the quality and prediction benches run on: every shipped scene,
+// then generated fields that no choice was fitted on; all at one size, in float.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "scene/scene_io.h"
+#include "sphere_field.h"
+
+namespace whitted {
+
+struct NamedScene {
+    std::string name;
+    Scene scene;
+};
+
+// `count` balls of app/field within `halfWidth` of the axis and `depth` deep.
+inline NamedScene generatedField(int count, std::uint32_t seed, double halfWidth, double depth) {
+    FieldOptions o;
+    o.count = count;
+    o.seed = seed;
+    o.halfWidth = halfWidth;
+    o.depth = depth;
+    return {"generated: " + std::to_string(count) + " balls, seed " + std::to_string(seed),
+            sphereField(o)};
+}
+
+inline std::vector<NamedScene> benchScenes(int width, int height,
+                                           std::vector<NamedScene> generated) {
+    std::vector<NamedScene> list;
+    for (const char* name :
+         {"seed", "glass", "mirrors", "coloured-shadows", "whitted-1980", "field"})
+        list.push_back({name, loadScene(std::string(WHITTED_SCENES_DIR "/") + name + ".json")});
+    for (NamedScene& g : generated) list.push_back(std::move(g));
+    for (NamedScene& n : list) {
+        n.scene.render.width = width;
+        n.scene.render.height = height;
+        n.scene.render.precision = Precision::Float;
+    }
+    return list;
+}
+
+}  // namespace whitted

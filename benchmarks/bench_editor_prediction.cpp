@@ -1,0 +1,114 @@
+// The Render tab's predicted time against the editor's own render (issue 15,
+// item 3), in the editor itself: a MainWindow (offscreen unless
+// QT_QPA_PLATFORM says otherwise) on each shipped scene and two generated
+// fields, at 640x480, depth 5, float, and 8 and 32 samples a pixel. Each case
+// is one edit, as a user makes it; the view renders it at once, in passes,
+// while ProbePredictor's probes start 0.4 s later at a lower priority. The
+// bench waits for both and prints the view's seconds (the status bar's)
+// over the seconds the Render tab showed from the probes.
+// Usage: bench_editor_prediction [WIDTH HEIGHT] (default 640 480). Prints a Markdown table.
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QThread>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <optional>
+
+#include "bench_scenes.h"
+#include "document/scene_document.h"
+#include "editor/main_window.h"
+#include "tradeoff_dock/probe_predictor.h"
+#include "tradeoff_dock/tradeoff_record.h"
+
+using namespace whitted;
+using namespace whitted::ui;
+
+namespace {
+
+constexpr int kTimeoutMs = 120000;
+
+// Runs the event loop until `done` or the timeout; false on the timeout.
+template <typename Done>
+bool waitFor(const Done& done) {
+    QElapsedTimer clock;
+    clock.start();
+    while (!done()) {
+        if (clock.elapsed() > kTimeoutMs) return false;
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
+        QThread::msleep(2);
+    }
+    return true;
+}
+
+struct Case {
+    double predicted = 0.0, rendered = 0.0;
+};
+
+// Sets the scene (as one edit) with `samples` a pixel and waits for the
+// view's complete render of it and for the probes' prediction of it.
+std::optional<Case> measure(MainWindow& window, Scene scene, int samples) {
+    scene.render.samplesPerPixel = samples;
+    scene.render.maxDepth = 5;
+    std::optional<double> rendered;
+    const QMetaObject::Connection seen =
+        QObject::connect(&window, &MainWindow::frameShown, &window, [&](const RenderFrame& f) {
+            if (f.renderComplete && f.settings == scene.render) rendered = f.seconds;
+        });
+    const bool edited =
+        window.document()->edit(QStringLiteral("bench"), [&](Scene& s) { s = scene; });
+    const auto predicted = [&]() -> const ProbePrediction* {
+        const ProbePrediction* p = window.tradeoffRecord()->probePrediction();
+        return p && p->scene.render == scene.render ? p : nullptr;
+    };
+    const bool done = edited && waitFor([&] { return rendered && predicted(); });
+    QObject::disconnect(seen);
+    if (!done || !predicted()->prediction.predicted) return std::nullopt;
+    return Case{predicted()->prediction.seconds, *rendered};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    QStandardPaths::setTestModeEnabled(true);  // no autosave or settings of the user's
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName("WhittedBench");
+    QApplication::setApplicationName("bench_editor_prediction");
+    QSettings().clear();
+    const int width = argc > 2 ? std::atoi(argv[1]) : 640;
+    const int height = argc > 2 ? std::atoi(argv[2]) : 480;
+
+    MainWindow window;
+    window.resize(1200, 800);
+    window.show();
+    std::printf(
+        "%dx%d, depth 5, float; the view's render (in passes, as the status bar times "
+        "it) over the Render tab's prediction from the probes\n\n",
+        width, height);
+    std::printf("| scene | 8 spp: predicted, rendered, ratio | 32 spp |\n|---|---|---|\n");
+    int within = 0, cases = 0;
+    for (const NamedScene& n :
+         benchScenes(width, height,
+                     {generatedField(150, 31, 4.0, 10.0), generatedField(400, 57, 4.0, 10.0)})) {
+        std::printf("| %s |", n.name.c_str());
+        for (int samples : {8, 32}) {
+            const std::optional<Case> c = measure(window, n.scene, samples);
+            if (!c) {
+                std::printf(" no prediction or render |");
+                continue;
+            }
+            const double ratio = c->rendered / c->predicted;
+            ++cases;
+            within += std::fabs(ratio - 1.0) <= 0.25;
+            std::printf(" %.3f s, %.3f s, %.2f |", c->predicted, c->rendered, ratio);
+        }
+        std::printf("\n");
+        std::fflush(stdout);
+    }
+    std::printf("\nwithin 25%%: %d of %d\n", within, cases);
+    return 0;
+}

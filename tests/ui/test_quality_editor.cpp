@@ -103,7 +103,12 @@ TEST_F(QualityEditorTest, FinalShortcut_RendersToFinalsTarget_MeasuredAgainstACo
     EXPECT_FALSE(child<QWidget>("renderMaxDepth")->isEnabled());
     EXPECT_FALSE(child<QWidget>("renderSamples")->isEnabled());
     // The predictions are for settings: with a target the Render tab says so.
-    EXPECT_TRUE(child<QLabel>("predictedTime")->text().startsWith(QStringLiteral("not predicted")));
+    const QString predicted = child<QLabel>("predictedTime")->text();
+    EXPECT_TRUE(predicted.startsWith(QStringLiteral("not predicted"))) << predicted.toStdString();
+    EXPECT_TRUE(predicted.contains(QStringLiteral("the last one here took %1 s, depth %2")
+                                       .arg(frame.seconds, 0, 'f', 2)
+                                       .arg(frame.qualityPlan->maxDepth)))
+        << predicted.toStdString();
 }
 
 // The status bar and the export message: a range where tiles stopped at

@@ -147,9 +147,13 @@ void PresetControls::refresh() {
     const Prediction now = record_->predict(scene);
     if (target) {
         // Depth and samples are chosen at the render: nothing measured yet says what they cost.
-        time_->setText(
-            tr("not predicted: each render to a target chooses its own depth and "
-               "samples (the status bar shows what it took)"));
+        const QString reached = quality_->lastReached(target->name);
+        time_->setText(reached.isEmpty()
+                           ? tr("not predicted: each render to a target chooses its own depth "
+                                "and samples (the status bar shows what it took)")
+                           : tr("not predicted: each render to a target chooses its own depth "
+                                "and samples; the last one here took %1")
+                                 .arg(reached));
         error_->setText(tr("the target, %1; the status bar shows the render's estimate")
                             .arg(QualityChoice::describe(target)));
     } else {

@@ -84,9 +84,9 @@ double floatAgainstDouble(Scene scene, int samples) {
 }
 
 // On glass.json float and double part at pixels' centres in slivers of the
-// balls' rims: 0.4 codes^2 against Final's 0.65 at one sample a pixel, a
-// fiftieth of that at 256. The plan measures it again with 8 samples a pixel
-// and counts what it finds there, no less than what 256 samples show.
+// balls' rims: 0.4 codes^2 against Final's 0.65 at one sample a pixel, under
+// a hundredth of that at 256. The plan measures it again with 8 samples a
+// pixel and counts what it finds there, no less than what 256 samples show.
 TEST(QualityTarget, FloatAgainstDouble_MeasuredWithSamplesWhereTheCentresDifferMuch) {
     Scene glass = loadScene(WHITTED_SCENES_DIR "/glass.json");
     glass.render.width = 320;

@@ -37,8 +37,9 @@ ErrorStats measureError(const Image& image, const Image& reference) {
             bool finite = true;
             for (int c = 0; c < 3; ++c) {
                 const double d = double(a[c]) - double(b[c]);
-                finite = finite && std::isfinite(d);
-                sumLinear += std::isfinite(d) ? d * d : 1.0;
+                const bool channelFinite = std::isfinite(d);
+                finite = finite && channelFinite;
+                sumLinear += channelFinite ? d * d : 1.0;
                 const int d8 = int(srgbEncode8(a[c])) - int(srgbEncode8(b[c]));
                 sumSrgb += double(d8) * d8;
                 largestCodes = std::max(largestCodes, std::abs(d8));

@@ -73,4 +73,11 @@ QString QualityChoice::samplesTaken(const AdaptiveOutcome& reached) {
     return tr("%1 to %2 samples per pixel").arg(reached.fewestSamples).arg(reached.mostSamples);
 }
 
+QString QualityChoice::reachedText(const QualityPlan& plan, const AdaptiveOutcome& reached) {
+    return tr("depth %1, %2, about %3 dB")
+        .arg(plan.maxDepth)
+        .arg(samplesTaken(reached))
+        .arg(estimatedPsnr(plan, reached), 0, 'f', 1);
+}
+
 }  // namespace whitted::ui

@@ -34,6 +34,9 @@ class QualityChoice : public QObject {
     // "2 to 64 samples per pixel", or "1 sample(s) per pixel" where every
     // tile stopped at one count (a Draft render that its centres met).
     static QString samplesTaken(const AdaptiveOutcome& reached);
+    // "depth 6, 2 to 64 samples per pixel, about 51.2 dB": what a render to
+    // the plan reached, as the export message and the presets' tooltips say it.
+    static QString reachedText(const QualityPlan& plan, const AdaptiveOutcome& reached);
     // The targets the editor offers (Draft, Preview, Final), in the order of
     // its combo boxes, after "the settings".
     static std::vector<QualityTarget> offered();

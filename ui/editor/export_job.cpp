@@ -216,11 +216,8 @@ bool ExportJob::exportFrame(int frame, const Camera& camera, double& seconds) {
 }
 
 QString ExportJob::qualityReached(const QualityPlan& plan, const AdaptiveOutcome& reached) const {
-    QString text = tr(" %1: depth %2, %3, about %4 dB")
-                       .arg(QualityChoice::describe(plan.target))
-                       .arg(plan.maxDepth)
-                       .arg(QualityChoice::samplesTaken(reached))
-                       .arg(estimatedPsnr(plan, reached), 0, 'f', 1);
+    QString text = tr(" %1: %2").arg(QualityChoice::describe(plan.target),
+                                     QualityChoice::reachedText(plan, reached));
     if (plan.target.largestCodes)
         text += tr(", largest error about %1 codes")
                     .arg(std::max(plan.depthLargest, reached.estimatedLargest), 0, 'f', 1);

@@ -149,11 +149,9 @@ void MainWindow::showQualityReached(const RenderFrame& frame) {
                            .arg(plan.maxDepth)
                            .arg(estimatedPsnr(plan, reached), 0, 'f', 1);
     if (!plan.target.name.empty())
-        quality_.noteReached(plan.target.name, tr("%1 s, depth %2, %3, about %4 dB")
+        quality_.noteReached(plan.target.name, tr("%1 s, %2")
                                                    .arg(frame.seconds, 0, 'f', 2)
-                                                   .arg(plan.maxDepth)
-                                                   .arg(QualityChoice::samplesTaken(reached))
-                                                   .arg(estimatedPsnr(plan, reached), 0, 'f', 1));
+                                                   .arg(QualityChoice::reachedText(plan, reached)));
     if (reached.tilesAtCap > 0)
         estimate += tr(" (%1 of %2 tiles stopped at %3 samples short of the target)")
                         .arg(reached.tilesAtCap)

@@ -10,6 +10,8 @@ packages=(
   cmake ninja-build g++ pkg-config
   libopenimageio-dev libglm-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  # division by a render's sample count without a division instruction
+  libdivide-dev
   # the Qt6 editor, and running it headless in tests
   qt6-base-dev xvfb xauth x11-utils imagemagick
   # scripts/screenshot.sh --precision-view opens the dock with a key press

@@ -7,11 +7,29 @@
 
 #include <cstdint>
 
+#include <libdivide.h>
+
 namespace whitted {
 
 struct SubPixel {
     double u, v;  // in [0,1)^2
 };
+
+// A divisor of the sample pattern, with what divides by it without a
+// division instruction (libdivide) and the mask of the bits below its power
+// of two.
+struct SampleDivisor {
+    std::uint32_t value = 1, bitMask = 0;
+    libdivide::libdivide_u32_t by{};
+};
+
+// Kensler's pattern of `count` samples: count = columns * rows or a little
+// less, the strata of the pixel. Made once a render (PreparedScene::pattern).
+struct SamplePattern {
+    SampleDivisor count, columns, rows;
+};
+
+SamplePattern samplePattern(int count);
 
 // The per-pixel seed: a hash of the pixel's coordinates.
 std::uint32_t pixelSeed(int i, int j);

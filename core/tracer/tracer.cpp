@@ -13,6 +13,7 @@
 #include "scene/scene_io.h"
 #include "tracer/kernel_dispatch.h"
 #include "tracer/renderer.h"
+#include "tracer/sample_lanes.h"
 #include "tracer/sampling.h"
 #include "tracer/tracer_kernel.h"
 
@@ -169,6 +170,7 @@ PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache) {
     s.height = r.height;
     s.maxDepth = r.maxDepth;
     s.samplesPerPixel = r.samplesPerPixel;
+    s.pattern = samplePattern(r.samplesPerPixel);
     s.background = boundedInput<T>(scene.background);
     s.ambient = boundedInput<T>(scene.ambient);
     for (const Material& m : scene.materials)
@@ -225,9 +227,10 @@ Vec<T> tracePixelSample(const PreparedScene<T>& s, int i, int j, T u, T v, RayCo
 template <typename T>
 CameraSample<T> pixelSample(const PreparedScene<T>& s, int i, int j, int n) {
     if (s.samplesPerPixel == 1 || n == kPixelCentre) return {i, j, T(0.5), T(0.5)};
-    const SubPixel sp = s.openEndedSamples ? progressiveSample(n, pixelSeed(i, j))
-                                           : subPixelSample(n, s.samplesPerPixel, pixelSeed(i, j));
-    return {i, j, T(sp.u), T(sp.v)};
+    const std::uint32_t seed = pixelSeed(i, j);
+    const OffsetLanes<std::uint32_t> offset =
+        s.openEndedSamples ? sequenceOffsets(n, seed) : patternOffsets(n, s.pattern, seed);
+    return {i, j, T(offset.u[0]), T(offset.v[0])};
 }
 
 #define WHITTED_INSTANTIATE(T)                                                                \

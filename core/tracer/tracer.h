@@ -20,6 +20,7 @@
 #include "scene/scene.h"
 #include "tracer/bvh.h"
 #include "tracer/camera.h"
+#include "tracer/sampling.h"
 #include "tracer/sphere_intersect.h"
 #include "tracer/sphere_set.h"
 
@@ -92,6 +93,7 @@ struct PreparedScene {
     Vec<T> background, ambient;
     int maxDepth = 0;
     int samplesPerPixel = 1;
+    SamplePattern pattern = samplePattern(1);  // samplePattern(samplesPerPixel)
     // Samples from progressiveSample(), whose every power-of-two prefix is
     // stratified, rather than from subPixelSample()'s pattern for exactly
     // samplesPerPixel: for renders whose tiles stop at counts of their own.

@@ -10,6 +10,7 @@
 #include "tracer/isa_namespace.h"
 #include "tracer/lane_shading.h"
 #include "tracer/ray_packet.h"
+#include "tracer/sample_lanes.h"
 #include "tracer/tracer_kernel.h"
 
 // The per-ISA objects get WHITTED_ISA, _MARCH and _TUNE from CMake; built
@@ -241,18 +242,26 @@ template <typename T>
 void kernelCameraRow(const PreparedScene<T>& s, int y, int x0, int count, int n, Vec<T>* radiance,
                      RayCounts& counts) {
     using V = typename Simd<T>::type;
+    using U = typename LaneWords<T>::type;
     V laneIndex{};
-    for (int l = 0; l < RayPacket<T>::kWidth; ++l) laneIndex[l] = T(l);
+    U laneWord{};
+    for (int l = 0; l < RayPacket<T>::kWidth; ++l) {
+        laneIndex[l] = T(l);
+        laneWord[l] = std::uint32_t(l);
+    }
     traceCameraPackets(s, count, radiance, counts, [&](int first, int m, V& px, V& py) {
         if (s.samplesPerPixel == 1 || n == kPixelCentre) {  // as pixelSample() gives them
             px = (laneIndex + T(x0 + first)) + T(0.5);
             py = V{} + (T(y) + T(0.5));
             return;
         }
+        // As pixelSample() gives them, for the packet's pixels at once.
+        const U seeds = pixelSeeds(U(laneWord + std::uint32_t(x0 + first)), std::uint32_t(y));
+        const OffsetLanes<U> offset =
+            s.openEndedSamples ? sequenceOffsets(n, seeds) : patternOffsets(n, s.pattern, seeds);
         for (int l = 0; l < m; ++l) {
-            const CameraSample<T> cs = pixelSample(s, x0 + first + l, y, n);
-            px[l] = T(cs.i) + cs.u;
-            py[l] = T(cs.j) + cs.v;
+            px[l] = T(x0 + first + l) + T(offset.u[l]);
+            py[l] = T(y) + T(offset.v[l]);
         }
     });
 }

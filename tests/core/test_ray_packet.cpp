@@ -125,10 +125,12 @@ TEST(RayPacket, CameraRayAloneEqualsCameraRayInPacket) {
 namespace whitted {
 namespace {
 
-// The renderer's row path (traceCameraRow) and the list path
-// (traceCameraSamples with pixelSample) agree bit for bit, one sample and many.
+// The renderer's row path (traceCameraRow, its samples made for the packet's
+// pixels at once) and the list path (traceCameraSamples with pixelSample, one
+// pixel at a time) agree bit for bit: one sample, Kensler's pattern of many,
+// and the open-ended sequence adaptive renders use.
 template <typename T>
-void checkRowMatchesList(int samplesPerPixel) {
+void checkRowMatchesList(int samplesPerPixel, bool openEnded = false) {
     Scene scene;
     scene.camera = Camera{{0, 0.35, -1}, {0, 0.25, 0}, {0, 1, 0}, 73.74};
     scene.render.width = 37;  // not a multiple of any packet width
@@ -138,7 +140,8 @@ void checkRowMatchesList(int samplesPerPixel) {
     scene.lights = {Light{"key", {5, 5, -10}, {1, 1, 1}, 1}};
     scene.spheres = {Sphere{"ball", {0, 0.2, 2}, 0.6, "m"},
                      Sphere{"floor", {0, -99999.5, 0}, 99999, "m"}};
-    const PreparedScene<T> s = prepareScene<T>(scene);
+    PreparedScene<T> s = prepareScene<T>(scene);
+    s.openEndedSamples = openEnded;
     for (int y = 0; y < scene.render.height; ++y)
         for (int n = 0; n < samplesPerPixel; ++n) {
             std::vector<Vec<T>> row(scene.render.width), list(scene.render.width);
@@ -158,6 +161,8 @@ TEST(RayPacket, CameraRowEqualsSampleList) {
     checkRowMatchesList<float>(5);
     checkRowMatchesList<double>(1);
     checkRowMatchesList<double>(5);
+    checkRowMatchesList<float>(33, true);
+    checkRowMatchesList<double>(33, true);
 }
 
 // The seed floor's centre relative to its camera, -99999.85, is 0.0015625 off

@@ -26,6 +26,34 @@ std::vector<std::uint32_t> seedsToTry() {
     return seeds;
 }
 
+// The positions themselves, as the first version of the sampler gave them
+// (before the renderer made them for a packet's pixels at once): a render of
+// a scene is the same picture in every version, and a farm's regions rendered
+// by two versions still fit together.
+TEST(Sampling, Positions_AreThoseOfTheFirstVersion) {
+    struct Expected {
+        int s, count;
+        std::uint32_t seed;
+        double u, v;
+    };
+    for (const Expected& e :
+         {Expected{3, 8, 0x1234u, 0x1.16458456p-4, 0x1.7537fac0cp-1},
+          Expected{17, 32, 0xaee25ab0u, 0x1.844447d249249p-4, 0x1.02879e401p-1},
+          Expected{5, 1000, 0xffffffffu, 0x1.beb0c00745d18p-1, 0x1.f00670f3a3d71p-1}}) {
+        const SubPixel p = subPixelSample(e.s, e.count, e.seed);
+        EXPECT_EQ(p.u, e.u) << "sample " << e.s << " of " << e.count;
+        EXPECT_EQ(p.v, e.v) << "sample " << e.s << " of " << e.count;
+    }
+    EXPECT_EQ(pixelSeed(100, 50), 0xaee25ab0u);
+    for (const Expected& e : {Expected{0, 0, 0x1234u, 0x1.f2d26cp-2, 0x1.e787ecp-1},
+                              Expected{37, 0, 0xaee25ab0u, 0x1.31f06p-3, 0x1.d7a324p-1},
+                              Expected{4095, 0, 0xffffffffu, 0x1.0e2096p-1, 0x1.62f678p-1}}) {
+        const SubPixel p = progressiveSample(e.s, e.seed);
+        EXPECT_EQ(p.u, e.u) << "sequence sample " << e.s;
+        EXPECT_EQ(p.v, e.v) << "sequence sample " << e.s;
+    }
+}
+
 TEST(Sampling, OneSample_IsPixelCentre) {
     for (std::uint32_t seed : {0u, 7u, pixelSeed(3, 4), 0xffffffffu}) {
         const SubPixel p = subPixelSample(0, 1, seed);

@@ -2,8 +2,9 @@
 // once. Each hash is written once for a lane type U: std::uint32_t (one pixel)
 // or a GCC vector of them (kernelCameraRow's packet). A lane's values are the
 // same whatever U is, bit for bit; a vector only computes several at once.
-// Generating samples one pixel at a time, with a hardware division in each of
-// Kensler's permutations, was a third of a 32-sample render of the seed.
+// Made one pixel at a time, with a hardware division in each of Kensler's
+// permutations, the positions took nearly a third of the CPU time of renders
+// of 8 and 32 samples a pixel (bench_editor_prediction; docs/performance.md).
 #pragma once
 
 #include <cstdint>

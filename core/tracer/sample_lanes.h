@@ -236,5 +236,15 @@ inline OffsetLanes<U> sequenceOffsets(int s, const U& seeds) {
     return out;
 }
 
+// Sample `n` of the pixels of the given seeds, as a render draws it: from the
+// open-ended sequence (renders whose tiles stop at counts of their own) or
+// from the pattern of pattern.count samples. The packet's and the single
+// pixel's paths both ask here, so they cannot choose differently.
+template <typename U>
+inline OffsetLanes<U> sampleOffsets(int n, bool openEnded, const SamplePattern& pattern,
+                                    const U& seeds) {
+    return openEnded ? sequenceOffsets(n, seeds) : patternOffsets(n, pattern, seeds);
+}
+
 }  // namespace WHITTED_ISA_NAMESPACE
 }  // namespace whitted

@@ -228,8 +228,7 @@ template <typename T>
 CameraSample<T> pixelSample(const PreparedScene<T>& s, int i, int j, int n) {
     if (s.samplesPerPixel == 1 || n == kPixelCentre) return {i, j, T(0.5), T(0.5)};
     const std::uint32_t seed = pixelSeed(i, j);
-    const OffsetLanes<std::uint32_t> offset =
-        s.openEndedSamples ? sequenceOffsets(n, seed) : patternOffsets(n, s.pattern, seed);
+    const OffsetLanes<std::uint32_t> offset = sampleOffsets(n, s.openEndedSamples, s.pattern, seed);
     return {i, j, T(offset.u[0]), T(offset.v[0])};
 }
 

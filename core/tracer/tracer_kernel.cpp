@@ -257,8 +257,7 @@ void kernelCameraRow(const PreparedScene<T>& s, int y, int x0, int count, int n,
         }
         // As pixelSample() gives them, for the packet's pixels at once.
         const U seeds = pixelSeeds(U(laneWord + std::uint32_t(x0 + first)), std::uint32_t(y));
-        const OffsetLanes<U> offset =
-            s.openEndedSamples ? sequenceOffsets(n, seeds) : patternOffsets(n, s.pattern, seeds);
+        const OffsetLanes<U> offset = sampleOffsets(n, s.openEndedSamples, s.pattern, seeds);
         for (int l = 0; l < m; ++l) {
             px[l] = T(x0 + first + l) + T(offset.u[l]);
             py[l] = T(y) + T(offset.v[l]);

@@ -190,7 +190,7 @@ int renderFrame(Scene& scene, const Options& o, const std::optional<PixelRect>& 
     ProgressBar bar(!o.quiet);
     RenderOptions options = oneShotOptions();
     options.threads = o.threads;
-    options.region = region;
+    if (region) options.regions = {*region};
     if (plan) applyPlan(*plan, scene, options);
     const RenderResult result =
         render(scene, options, [&](const TileUpdate& t) { bar.update(t.progress.fraction); });

@@ -10,10 +10,8 @@
 // Usage: bench_prediction [WIDTH HEIGHT] (default 320 240). Prints a Markdown table.
 // bench_prediction --speed: the speed model alone (speed_probe.h), at 320
 // and 640 pixels across, depth 5, 1, 8 and 32 samples: the seconds its
-// probes predict for the rays each render traced, over the render's (the
-// faster of two), with the cost carried past the probe's size at the full
-// power measured between its two sizes and with each doubling gaining half
-// the one before (what predictSeconds() does).
+// probes of the picture's tiles predict for the rays each render traced,
+// over the render's (the faster of two).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -42,41 +40,28 @@ RenderResult fasterOfTwo(const Scene& scene) {
     return again.seconds < best.seconds ? again : best;
 }
 
-// The probe with its power changed so that predictSeconds() carries the cost
-// along the full power p over all d doublings past its side, p d, instead
-// of p (1 - 2^-d).
-SpeedProbe atFullPower(SpeedProbe probe, const Scene& scene) {
-    const int longest = std::max(scene.render.width, scene.render.height);
-    const double d = std::log2(double(longest) / probe.side);
-    if (d > 0.0) probe.sizePower *= d / (1.0 - std::pow(0.5, d));
-    return probe;
-}
-
 void speedTable() {
     std::printf(
-        "| scene | width | power measured | 1 spp: s, full, halving | 8 spp | 32 spp |\n"
-        "|---|---|---|---|---|---|\n");
-    int full = 0, halving = 0, total = 0;
-    auto within = [](double ratio) { return std::fabs(ratio - 1.0) <= 0.25; };
+        "| scene | width | tiles timed, pixels | 1 spp: s, predicted / measured | 8 spp | 32 spp "
+        "|\n|---|---|---|---|---|---|\n");
+    int within = 0, total = 0;
     for (const int width : {320, 640})
         for (NamedScene& n : scenes(width, width * 3 / 4)) {
             n.scene.render.maxDepth = 5;
-            const SpeedProbe probe = probeSpeed(n.scene, 160);
-            std::printf("| %s | %d | %.2f |", n.name.c_str(), width, probe.sizePower);
+            const SpeedProbe probe = probeSpeed(n.scene);
+            std::printf("| %s | %d | %d |", n.name.c_str(), width, probe.pixels);
             for (const int spp : {1, 8, 32}) {
                 n.scene.render.samplesPerPixel = spp;
                 const RenderResult r = fasterOfTwo(n.scene);
-                const double rays = double(r.rays.total());
-                const double atFull =
-                    predictSeconds(atFullPower(probe, n.scene), n.scene, rays) / r.seconds;
-                const double halved = predictSeconds(probe, n.scene, rays) / r.seconds;
-                full += within(atFull), halving += within(halved), ++total;
-                std::printf(" %.3f s, %.2f, %.2f |", r.seconds, atFull, halved);
+                const double ratio =
+                    predictSeconds(probe, n.scene, double(r.rays.total())) / r.seconds;
+                within += std::fabs(ratio - 1.0) <= 0.25, ++total;
+                std::printf(" %.3f s, %.2f |", r.seconds, ratio);
             }
             std::printf("\n");
             std::fflush(stdout);
         }
-    std::printf("\nwithin 25%%: full power %d, halving %d, of %d\n", full, halving, total);
+    std::printf("\nwithin 25%%: %d of %d\n", within, total);
 }
 
 }  // namespace

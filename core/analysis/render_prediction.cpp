@@ -115,7 +115,7 @@ RenderPrediction predictRender(const Scene& scene, const StopPredicate& stop) {
     p.mseCodes2 = p.depthMse + p.precisionMse + p.samplingMse;
     p.psnrDb = psnrOf(p.mseCodes2);
     p.rays = noise.raysPerSample * pixels * scene.render.samplesPerPixel;
-    p.seconds = predictSeconds(probeSpeed(scene, kNoiseProbeSide, stop), scene, p.rays);
+    p.seconds = predictSeconds(probeSpeed(scene, kSpeedProbePixels, stop), scene, p.rays);
     if (stopped()) return p;
     p.probeRays = plan.probeRays + noise.rays;
     p.probeSeconds =

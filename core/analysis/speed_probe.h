@@ -1,16 +1,16 @@
-// How long a render of a scene will take on this machine, from small timed
-// renders of it (issue 15, item 3: the Render tab's predicted time).
+// How long a render of a scene will take on this machine, from timed renders
+// of a few of its own tiles (issue 15, item 3: the Render tab's predicted time).
 //
 // A ray's cost depends on the scene (how many spheres a ray passes near),
 // on the sample (a pixel's centre, traced in coherent rows, costs a half to a
-// third of a jittered sample on a few balls), and on the picture's size: the finer the
-// pixels, the more alike the rays of a row, the fewer nodes of the tree they
-// visit. The probe times pixel centres and jittered samples at two sizes, a
-// side and half of it, and carries the cost a ray down to the picture's size
-// along the power of size they show (0.05 per doubling on three balls, 0.3
-// to 0.6 on fields of hundreds; docs/quality.md), each doubling past the
-// side gaining half what the one before did: the rays of a row cannot grow
-// more alike than alike.
+// third of a jittered sample on a few balls), and on the picture's size: the
+// finer the pixels, the more alike the rays of a row, the fewer nodes of the
+// tree they visit. A shrunken picture cannot show that last part: carried
+// from 160 pixels to 640 along the power of size between 80 and 160, the
+// cost missed renders by 0.6 to 1.6 times (docs/quality.md). So the probe
+// renders tiles of the picture itself, at its own size, spread over it (each
+// pixel's samples are the picture's, bit for bit: RenderOptions::regions), at
+// most kSpeedProbePixels of them, and times pixel centres and jittered samples.
 //
 // The probes count CPU time, not wall time: the editor probes while its view
 // renders on the same cores, where a probe's wall time would count the time
@@ -18,10 +18,17 @@
 // CPU time shared among the threads it will run on.
 #pragma once
 
+#include <vector>
+
+#include "image/image.h"
 #include "scene/scene.h"
 #include "tracer/renderer.h"
 
 namespace whitted {
+
+// The pixels the probe times: as many as a 160x120 picture's.
+inline constexpr int kSpeedProbePixels = 160 * 120;
+inline constexpr int kSpeedProbeTileSide = 16;
 
 struct RayCost {
     // CPU seconds a ray: of a one-sample render (pixel centres only) and of a
@@ -31,15 +38,22 @@ struct RayCost {
 
 struct SpeedProbe {
     double overheadSeconds = 0.0;  // before the first tile: the tree built, the image set up
-    int side = 0;                  // the larger probe's longest side, pixels
-    RayCost atSide, atHalfSide;
-    double sizePower = 0.0;  // cost a ray ~ side^-sizePower, from the two probes
+    RayCost cost;                  // a ray of the picture's tiles
+    int pixels = 0;                // timed to find it
 };
 
-// Times the scene, at its depth and precision, at `side` and side / 2 pixels
-// along its longest side (or its own size, when smaller). Its renders ask
-// `stop`; once it says so, the figures mean nothing.
-SpeedProbe probeSpeed(const Scene& scene, int side, const StopPredicate& stop = {});
+// The pixels the probe renders: the whole of a picture of at most `pixels`,
+// else about `pixels`' worth in tiles of kSpeedProbeTileSide spread over
+// the picture, one in each band of columns, its height following the
+// golden ratio, so that sky, balls and floor all take part. Small tiles in
+// many places: the balls of a field are not spread evenly, and 19 tiles of
+// the render's 32 pixels missed a field's time by a third.
+std::vector<PixelRect> probeTiles(int width, int height, int pixels);
+
+// Times the scene, at its size, depth and precision, on probeTiles(). Its
+// renders ask `stop`; once it says so, the figures mean nothing.
+SpeedProbe probeSpeed(const Scene& scene, int pixels = kSpeedProbePixels,
+                      const StopPredicate& stop = {});
 
 // The seconds of a render of the scene with its own settings that traces `rays`.
 double predictSeconds(const SpeedProbe& probe, const Scene& scene, double rays);

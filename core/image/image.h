@@ -20,6 +20,12 @@ inline bool insidePicture(const PixelRect& r, int width, int height) {
            r.y + r.height <= height;
 }
 
+// Whether the two rectangles share a pixel.
+inline bool overlap(const PixelRect& a, const PixelRect& b) {
+    return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height &&
+           b.y < a.y + a.height;
+}
+
 // "X0,Y0,X1,Y1", as whitted-render's --region takes it.
 inline std::string cornersText(const PixelRect& r) {
     return std::to_string(r.x) + "," + std::to_string(r.y) + "," + std::to_string(r.x + r.width) +

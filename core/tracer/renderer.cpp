@@ -54,27 +54,49 @@ int previewBlockOf(const RenderOptions& o) {
     return block;
 }
 
-// The tiles of the region, clipped to it: the same tiles as the whole image's
-// where they lie inside it.
-std::vector<Tile> regionTiles(std::vector<Tile> tiles, const PixelRect& region) {
+// The tiles of the regions, clipped to each: the same tiles as the whole
+// image's where they lie inside one.
+std::vector<Tile> regionTiles(const std::vector<Tile>& tiles,
+                              const std::vector<PixelRect>& regions) {
     std::vector<Tile> clipped;
-    for (const Tile& t : tiles) {
-        const int x0 = std::max(t.x, region.x), x1 = std::min(t.x + t.w, region.x + region.width);
-        const int y0 = std::max(t.y, region.y), y1 = std::min(t.y + t.h, region.y + region.height);
-        if (x0 < x1 && y0 < y1) clipped.push_back({x0, y0, x1 - x0, y1 - y0});
-    }
+    for (const Tile& t : tiles)
+        for (const PixelRect& r : regions) {
+            const int x0 = std::max(t.x, r.x), x1 = std::min(t.x + t.w, r.x + r.width);
+            const int y0 = std::max(t.y, r.y), y1 = std::min(t.y + t.h, r.y + r.height);
+            if (x0 < x1 && y0 < y1) clipped.push_back({x0, y0, x1 - x0, y1 - y0});
+        }
     return clipped;
 }
 
 double pixelsRendered(const RenderSettings& r, const RenderOptions& o) {
-    return o.region ? double(o.region->width) * o.region->height : double(r.width) * r.height;
+    if (o.regions.empty()) return double(r.width) * r.height;
+    double pixels = 0.0;
+    for (const PixelRect& g : o.regions) pixels += double(g.width) * g.height;
+    return pixels;
+}
+
+// Why the regions cannot be rendered, if they cannot: one outside the
+// picture, or two that overlap (their tiles would be rendered twice, by two
+// threads at once).
+std::optional<std::string> regionsProblem(const std::vector<PixelRect>& regions, int width,
+                                          int height) {
+    for (std::size_t i = 0; i < regions.size(); ++i) {
+        if (!insidePicture(regions[i], width, height))
+            return "the region " + cornersText(regions[i]) + " is not a part of the " +
+                   std::to_string(width) + "x" + std::to_string(height) + " image";
+        for (std::size_t j = 0; j < i; ++j)
+            if (overlap(regions[i], regions[j]))
+                return "the regions " + cornersText(regions[j]) + " and " +
+                       cornersText(regions[i]) + " overlap";
+    }
+    return std::nullopt;
 }
 
 std::vector<Pass> planPasses(const RenderSettings& r, const RenderOptions& o) {
     const double pixels = pixelsRendered(r, o);
     std::vector<Pass> passes;
     const int spp = r.samplesPerPixel;
-    if (!o.progressive || o.region) {
+    if (!o.progressive || !o.regions.empty()) {
         passes.push_back({PassKind::Samples, 0, spp, pixels * spp});
         return passes;
     }
@@ -103,7 +125,7 @@ class TileRenderer {
 
     RenderResult run() {
         tiles_ = spiralTiles(s_.width, s_.height, std::max(1, options_.tileSize));
-        if (options_.region) tiles_ = regionTiles(std::move(tiles_), *options_.region);
+        if (!options_.regions.empty()) tiles_ = regionTiles(tiles_, options_.regions);
         threads_ = std::max(1, std::min<int>(resolveThreadCount(options_.threads), tiles_.size()));
         RenderResult result = options_.adaptive ? runAdaptive() : runFixed();
         if (image_.rgb.empty()) image_ = Image(s_.width, s_.height);  // stopped in the preview
@@ -421,12 +443,9 @@ RenderResult render(const Scene& scene, const RenderOptions& options, const Tile
                     const StopPredicate& shouldStop) {
     if (auto problem = options.sceneValidated ? std::nullopt : validateScene(scene))
         throw std::invalid_argument(problem->jsonPath + ": " + problem->reason);
-    if (const auto& g = options.region;
-        g && !insidePicture(*g, scene.render.width, scene.render.height))
-        throw std::invalid_argument("the region " + cornersText(*g) + " is not a part of the " +
-                                    std::to_string(scene.render.width) + "x" +
-                                    std::to_string(scene.render.height) + " image");
-    if (options.region && options.adaptive)
+    if (auto problem = regionsProblem(options.regions, scene.render.width, scene.render.height))
+        throw std::invalid_argument(*problem);
+    if (!options.regions.empty() && options.adaptive)
         throw std::invalid_argument("an adaptive render covers the whole image, not a region");
     // Here, not in a worker: a WHITTED_KERNEL this CPU cannot run throws to the caller.
     activeKernel();

@@ -14,6 +14,7 @@
 
 #include <functional>
 #include <optional>
+#include <vector>
 
 #include "base/parallel_for.h"  // resolveThreadCount, for RenderOptions::threads
 #include "image/image.h"
@@ -38,17 +39,19 @@ struct RenderOptions {
     // Trees kept from the previous render, refit when only spheres moved
     // (bvh.h). The editor's render worker keeps one; one render at a time.
     BvhCache* bvhCache = nullptr;
-    // Only these pixels, in one pass of all their samples (no preview): each
-    // pixel's samples depend on the pixel alone, so the region equals that
-    // part of the whole render, bit for bit. The image keeps the render's
-    // full size, zero outside the region; its pages cost memory only where
-    // rendered. Unset: the whole image.
-    std::optional<PixelRect> region = std::nullopt;
+    // Only the pixels of these rectangles, which may not overlap, in one pass
+    // of all their samples (no preview): each pixel's samples depend on the
+    // pixel alone, so a region equals that part of the whole render, bit for
+    // bit. The image keeps the render's full size, zero outside the regions;
+    // its pages cost memory only where rendered. Empty: the whole image.
+    // A farm task renders one; the speed probe, its tiles spread over the
+    // picture, in one render (speed_probe.h).
+    std::vector<PixelRect> regions{};
     // Set: each tile is sampled until the picture's estimated error is under
     // these limits (adaptive_sampling.h), at most maxSamples per pixel; the
     // scene's samples_per_pixel is not used. Samples come from
     // progressiveSample(), passes double the samples of the tiles that need
-    // them most, and the image is as deterministic as any other. Not with a region.
+    // them most, and the image is as deterministic as any other. Not with regions.
     std::optional<AdaptiveSampling> adaptive = std::nullopt;
 };
 
@@ -118,8 +121,9 @@ struct RenderResult {
 };
 
 // Renders the scene with its render settings. Throws std::invalid_argument for a
-// scene that validateScene() refuses or a region not inside the image, std::runtime_error when
-// WHITTED_KERNEL names a tracer kernel that is unknown or that this CPU cannot run.
+// scene that validateScene() refuses or regions not inside the image or overlapping,
+// std::runtime_error when WHITTED_KERNEL names a tracer kernel that is unknown or that this CPU
+// cannot run.
 RenderResult render(const Scene& scene, const RenderOptions& options = {},
                     const TileCallback& onTile = {}, const StopPredicate& shouldStop = {});
 

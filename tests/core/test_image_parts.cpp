@@ -35,7 +35,7 @@ Scene smallSeed() {
 RenderResult renderRegion(const Scene& scene, std::optional<PixelRect> region, int threads) {
     RenderOptions o;
     o.threads = threads;
-    o.region = region;
+    if (region) o.regions = {*region};
     return render(scene, o);
 }
 
@@ -74,6 +74,46 @@ TEST(RenderRegion, OutsideTheImageIsRefused) {
         } catch (const std::invalid_argument& e) {
             EXPECT_NE(std::string(e.what()).find("97x61"), std::string::npos) << e.what();
         }
+    }
+}
+
+// Several regions in one render (the speed probe's tiles, speed_probe.h):
+// each equals that part of the whole render, and nothing else is rendered.
+TEST(RenderRegion, SeveralAtOnceEachEqualThatPartAndNothingElseIsRendered) {
+    const Scene scene = smallSeed();
+    const Image whole = renderRegion(scene, std::nullopt, 2).image;
+    const std::vector<PixelRect> regions = {
+        {0, 0, 16, 16}, {40, 20, 16, 16}, {81, 45, 16, 16}, {56, 20, 5, 3}};
+    RenderOptions o;
+    o.threads = 2;
+    o.regions = regions;
+    const RenderResult r = render(scene, o);
+    int pixels = 0;
+    for (const PixelRect& g : regions) {
+        EXPECT_TRUE(test::samePixels(cropImage(r.image, g), cropImage(whole, g)));
+        pixels += g.width * g.height;
+    }
+    // 3 samples of each pixel, each camera ray counted once.
+    EXPECT_EQ(r.rays.camera, std::uint64_t(3 * pixels));
+    int lit = 0;
+    for (int y = 0; y < r.image.height; ++y)
+        for (int x = 0; x < r.image.width; ++x) {
+            bool inside = false;
+            for (const PixelRect& g : regions)
+                inside |= x >= g.x && x < g.x + g.width && y >= g.y && y < g.y + g.height;
+            if (!inside) lit += r.image.pixel(x, y)[0] != 0 || r.image.pixel(x, y)[2] != 0;
+        }
+    EXPECT_EQ(lit, 0) << "pixels rendered outside the regions";
+}
+
+TEST(RenderRegion, OverlappingRegionsAreRefusedNamingBoth) {
+    RenderOptions o;
+    o.regions = {{0, 0, 16, 16}, {20, 0, 4, 4}, {15, 15, 4, 4}};
+    try {
+        render(smallSeed(), o);
+        ADD_FAILURE() << "overlapping regions accepted";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_STREQ(e.what(), "the regions 0,0,16,16 and 15,15,19,19 overlap");
     }
 }
 

@@ -477,7 +477,7 @@ TEST(Renderer, AdaptiveRender_CentresFirst_EstimatedErrorIsNoLowerThanTheErrorMe
 
 TEST(Renderer, AdaptiveRender_RefusesARegion) {
     RenderOptions o = adaptiveOptions(1, false, 1.0, 8);
-    o.region = PixelRect{0, 0, 8, 8};
+    o.regions = {PixelRect{0, 0, 8, 8}};
     EXPECT_THROW(render(smallSeed(1, Precision::Float), o), std::invalid_argument);
 }
 

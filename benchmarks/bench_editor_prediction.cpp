@@ -5,7 +5,10 @@
 // is one edit, as a user makes it; the view renders it at once, in passes,
 // while ProbePredictor's probes start 0.4 s later at a lower priority. The
 // bench waits for both and prints the view's seconds (the status bar's)
-// over the seconds the Render tab showed from the probes. Then, with the
+// over the seconds the Render tab showed: the probes' for one pass, times
+// the view's pace (TradeoffRecord::viewPace()) as it stood before this
+// case, learnt on the cases before it (none before the first: the editor's
+// start scene is its first render, which sets no pace). Then, with the
 // editor idle, it renders the same scene in one pass (the faster of two):
 // the prediction's own error, apart from what the view's passes and display
 // add.
@@ -50,7 +53,10 @@ bool waitFor(const Done& done) {
 }
 
 struct Case {
-    double predicted = 0.0, rendered = 0.0, onePass = 0.0;
+    double probes = 0.0;     // the probes' seconds for one pass
+    double pace = 1.0;       // the view's, before this case
+    double predicted = 0.0;  // the Render tab's: the probes' at that pace
+    double rendered = 0.0, onePass = 0.0;
 };
 
 // The faster of two one-pass renders, in the view's thread count.
@@ -75,6 +81,8 @@ std::optional<Case> measure(MainWindow& window, Scene scene, int samples) {
         });
     const bool edited =
         window.document()->edit(QStringLiteral("bench"), [&](Scene& s) { s = scene; });
+    // Before this render and prediction pair up: the pace of the ones before.
+    const ViewPace pace = window.tradeoffRecord()->viewPace();
     const auto predicted = [&]() -> const ProbePrediction* {
         const ProbePrediction* p = window.tradeoffRecord()->probePrediction();
         return p && p->scene.render == scene.render ? p : nullptr;
@@ -82,7 +90,8 @@ std::optional<Case> measure(MainWindow& window, Scene scene, int samples) {
     const bool done = edited && waitFor([&] { return rendered && predicted(); });
     QObject::disconnect(seen);
     if (!done || !predicted()->prediction.predicted) return std::nullopt;
-    return Case{predicted()->prediction.seconds, *rendered, onePassSeconds(scene)};
+    const double probes = predicted()->prediction.seconds;
+    return Case{probes, pace.factor, probes * pace.factor, *rendered, onePassSeconds(scene)};
 }
 
 }  // namespace
@@ -100,13 +109,23 @@ int main(int argc, char** argv) {
     MainWindow window;
     window.resize(1200, 800);
     window.show();
+    // As a user sees it first: the new scene rendered and predicted (the
+    // view's first render, beside the window's first showing, sets no pace).
+    bool startRendered = false;
+    const QMetaObject::Connection start = QObject::connect(
+        &window, &MainWindow::frameShown, &window,
+        [&](const RenderFrame& f) { startRendered = startRendered || f.renderComplete; });
+    waitFor([&] { return startRendered && window.tradeoffRecord()->probePrediction(); });
+    QObject::disconnect(start);
     std::printf(
         "%dx%d, depth 5, float; the view's render (in passes, as the status bar times "
-        "it) over the Render tab's prediction from the probes; in brackets, one pass "
-        "rendered alone over the prediction\n\n",
+        "it) over the Render tab's prediction (the probes' for one pass, at the view's "
+        "pace on its renders before); in brackets, one pass rendered alone over the "
+        "probes' prediction\n\n",
         width, height);
     std::printf(
-        "| scene | 8 spp: predicted, rendered, ratio (one pass) | 32 spp |\n|---|---|---|\n");
+        "| scene | 8 spp: predicted (pace), rendered, ratio (one pass) | 32 spp "
+        "|\n|---|---|---|\n");
     int within = 0, onePassWithin = 0, cases = 0;
     for (const NamedScene& n :
          benchScenes(width, height,
@@ -119,12 +138,12 @@ int main(int argc, char** argv) {
                 continue;
             }
             const double ratio = c->rendered / c->predicted;
-            const double onePassRatio = c->onePass / c->predicted;
+            const double onePassRatio = c->onePass / c->probes;
             ++cases;
             within += std::fabs(ratio - 1.0) <= 0.25;
             onePassWithin += std::fabs(onePassRatio - 1.0) <= 0.25;
-            std::printf(" %.3f s, %.3f s, %.2f (%.2f) |", c->predicted, c->rendered, ratio,
-                        onePassRatio);
+            std::printf(" %.3f s (%.2f), %.3f s, %.2f (%.2f) |", c->predicted, c->pace, c->rendered,
+                        ratio, onePassRatio);
         }
         std::printf("\n");
         std::fflush(stdout);

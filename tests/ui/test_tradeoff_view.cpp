@@ -39,6 +39,7 @@
 #include "support/main_window_fixture.h"
 #include "support/test_support.h"
 #include "tradeoff_dock/settings_prediction.h"
+#include "tradeoff_dock/tradeoff_record.h"
 #include "tradeoff_dock/tradeoff_view.h"
 
 namespace whitted::ui {
@@ -225,7 +226,8 @@ TEST_F(TradeoffViewTest, Predictions_FromProbes_WithinTwoDecibelsOfTheRender) {
         const Prediction fromProbe = predictSettings(doc->scene(), renders, nullptr, nullptr,
                                                      window->tradeoffRecord()->probePrediction());
         ASSERT_TRUE(fromProbe.seconds.has_value());
-        EXPECT_DOUBLE_EQ(*fromProbe.seconds, p.seconds);
+        // No view's pace given: the shipped scenes' (TradeoffRecord learns its own).
+        EXPECT_DOUBLE_EQ(*fromProbe.seconds, p.seconds * kUnmeasuredViewPace);
         EXPECT_TRUE(fromProbe.timeSource.contains(
             QStringLiteral("predicted from small timed probe renders: %1 Mrays")
                 .arg(p.rays / 1e6, 0, 'f', 1)))
@@ -688,6 +690,62 @@ TEST(SettingsPrediction, ErrorInterpolatedLogLogBetweenSampleCounts) {
     ASSERT_TRUE(p.seconds.has_value());
     EXPECT_NEAR(*p.seconds, 0.4, 1e-12);  // linear in spp
     EXPECT_TRUE(p.errorSource.startsWith(QStringLiteral("interpolated")));
+}
+
+// The view's pace: its renders' seconds over the probes' one-pass
+// prediction of the very same scene, learnt in the editor, its median
+// multiplying the Render tab's probe time.
+TEST(TradeoffRecord, ViewPace_IsTheMedianOfItsRendersOverTheProbesOfTheSameScene) {
+    TradeoffRecord record;
+    Scene scene = test::seedScene(640, 480);
+    scene.render.samplesPerPixel = 8;
+    auto probe = std::make_shared<ProbePrediction>();
+    probe->scene = scene;
+    probe->prediction.predicted = true;
+    probe->prediction.seconds = 0.2;
+    probe->prediction.rays = 4e6;
+    EXPECT_DOUBLE_EQ(record.viewPace().factor, kUnmeasuredViewPace);
+    Prediction p = predictSettings(scene, {}, nullptr, nullptr, probe.get(), record.viewPace());
+    ASSERT_TRUE(p.seconds.has_value());
+    EXPECT_DOUBLE_EQ(*p.seconds, 0.2 * kUnmeasuredViewPace);
+    EXPECT_TRUE(p.timeSource.endsWith(
+        QStringLiteral("and about 1.2 times that for the view's passes and frames (not yet "
+                       "measured here)")))
+        << p.timeSource.toStdString();
+
+    // The first render shares the cores with the window's first showing: no pace.
+    record.addViewRender(scene, 0.9);
+    record.setProbePrediction(probe);
+    EXPECT_EQ(record.viewPace().renders, 0);
+    // Rendered after the prediction, or before it: either pairs them, once.
+    record.addViewRender(scene, 0.3);
+    EXPECT_EQ(record.viewPace().renders, 1);
+    EXPECT_DOUBLE_EQ(record.viewPace().factor, 1.5);
+    record.setProbePrediction(probe);
+    EXPECT_EQ(record.viewPace().renders, 1);
+    // Another scene's render, or other settings: not what the probes predicted.
+    Scene moved = scene;
+    moved.spheres[0].center.x += 0.1;
+    record.addViewRender(moved, 0.9);
+    Scene more = scene;
+    more.render.samplesPerPixel = 16;
+    record.addViewRender(more, 0.9);
+    EXPECT_EQ(record.viewPace().renders, 1);
+
+    p = record.predict(scene);
+    ASSERT_TRUE(p.seconds.has_value());
+    EXPECT_DOUBLE_EQ(*p.seconds, 0.3);
+    EXPECT_TRUE(p.timeSource.endsWith(
+        QStringLiteral("and 1.50 times that for the view's passes and frames (its last render)")))
+        << p.timeSource.toStdString();
+
+    // The median of the last five: 1.5 has gone.
+    for (double pace : {1.0, 2.0, 1.1, 1.3, 1.25}) {
+        record.addViewRender(scene, 0.2 * pace);
+        record.setProbePrediction(probe);
+    }
+    EXPECT_EQ(record.viewPace().renders, 5);
+    EXPECT_NEAR(record.viewPace().factor, 1.25, 1e-12);
 }
 
 }  // namespace

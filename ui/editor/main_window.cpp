@@ -127,8 +127,13 @@ void MainWindow::onFrame(const RenderFrame& frame) {
                              : tr("rendering…"));
     if (frame.qualityPlan)
         showQualityReached(frame);
-    else if (frame.renderComplete)  // the predictions are for settings, not targets
+    else if (frame.renderComplete) {  // the predictions are for settings, not targets
         record_.addRender({frame.settings, frame.seconds, frame.rays});
+        // The newest request's frame: the document holds the scene it rendered.
+        Scene rendered = doc_.scene();
+        rendered.render = frame.settings;
+        record_.addViewRender(rendered, frame.seconds);
+    }
     emit frameShown(frame);
 }
 

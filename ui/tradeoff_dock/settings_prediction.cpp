@@ -49,25 +49,38 @@ void errorFromProbe(const RenderPrediction& r, Prediction& p) {
 }
 
 // The probes' seconds: their rays at the speed their timed renders showed for
-// these samples, depth, precision and picture size (speed_probe.h).
-bool timeFromProbe(const RenderPrediction& r, Prediction& p) {
+// these samples, depth, precision and picture size (speed_probe.h), at the
+// pace of the view's renders.
+bool timeFromProbe(const RenderPrediction& r, ViewPace pace, Prediction& p) {
     if (!r.predicted || r.seconds <= 0) return false;
-    p.seconds = r.seconds;
+    p.seconds = r.seconds * pace.factor;
     p.timeSource = QObject::tr("predicted from small timed probe renders: %1 Mrays at %2 Mrays/s")
                        .arg(r.rays / 1e6, 0, 'f', 1)
                        .arg(r.rays / r.seconds / 1e6, 0, 'f', 1);
+    const QString measuredOn = pace.renders == 1
+                                   ? QObject::tr("its last render")
+                                   : QObject::tr("its last %1 renders").arg(pace.renders);
+    if (pace.renders > 0)
+        p.timeSource += QObject::tr(", and %1 times that for the view's passes and frames (%2)")
+                            .arg(pace.factor, 0, 'f', 2)
+                            .arg(measuredOn);
+    else
+        p.timeSource += QObject::tr(
+                            ", and about %1 times that for the view's passes and frames "
+                            "(not yet measured here)")
+                            .arg(pace.factor, 0, 'f', 1);
     return true;
 }
 
 void timeFromRenders(const RenderSettings& want, const std::vector<EditorRender>& renders,
-                     const RenderPrediction* probe, Prediction& p) {
+                     const RenderPrediction* probe, ViewPace pace, Prediction& p) {
     for (auto r = renders.rbegin(); r != renders.rend(); ++r)
         if (r->settings == want) {
             p.seconds = r->seconds;
             p.timeSource = QObject::tr("measured: the last render at these settings");
             return;
         }
-    if (probe && timeFromProbe(*probe, p)) return;
+    if (probe && timeFromProbe(*probe, pace, p)) return;
     if (renders.empty()) {
         p.timeSource = QObject::tr("no render has finished yet");
         return;
@@ -164,7 +177,7 @@ bool sameSceneContent(const Scene& a, const Scene& b) {
 
 Prediction predictSettings(const Scene& scene, const std::vector<EditorRender>& renders,
                            const MeasureResults* measure, const RenderSettings* settings,
-                           const ProbePrediction* probe) {
+                           const ProbePrediction* probe, ViewPace pace) {
     Prediction p;
     const RenderSettings& want = settings ? *settings : scene.render;
     const RenderPrediction* probed = probeFor(scene, want, probe);
@@ -183,7 +196,7 @@ Prediction predictSettings(const Scene& scene, const std::vector<EditorRender>& 
         p.seconds.reset();
     }
     if (c == Coverage::None && probed) errorFromProbe(*probed, p);
-    timeFromRenders(want, renders, probed, p);
+    timeFromRenders(want, renders, probed, pace, p);
     return p;
 }
 

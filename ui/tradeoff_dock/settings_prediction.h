@@ -43,6 +43,19 @@ struct Prediction {
     QString errorSource;  // where the error comes from, or why there is none
 };
 
+// How much longer the view's renders take than the probes predict for one
+// pass of their rays: its preview and passes (each reads and writes the
+// picture's sums), and the frames the window shows, on the same cores
+// (1.1 to 1.5 times at 640x480; docs/quality.md). Measured in the editor,
+// on its own renders: the median of the last few whose scene the probes
+// predicted (TradeoffRecord::addViewRender()). Until one is, the median of
+// the shipped scenes' at 640x480 (bench_editor_prediction).
+inline constexpr double kUnmeasuredViewPace = 1.2;
+struct ViewPace {
+    double factor = kUnmeasuredViewPace;
+    int renders = 0;  // it was measured on
+};
+
 // Whether two scenes differ at most in their render settings: Measure's errors
 // hold for any settings of the scene it measured, and for nothing else.
 bool sameSceneContent(const Scene& a, const Scene& b);
@@ -59,9 +72,9 @@ bool sameSceneContent(const Scene& a, const Scene& b);
 //  - Where Measure does not cover the settings, the error and the rays from
 //    `probe` (probe_predictor.h) when it was made for this very scene and
 //    these settings; where no render at these settings gives the time, so
-//    do the probes' timed renders. Else no error, with the reason.
+//    do the probes' timed renders, at the view's `pace`. Else no error, with the reason.
 Prediction predictSettings(const Scene& scene, const std::vector<EditorRender>& renders,
                            const MeasureResults* measure, const RenderSettings* settings = nullptr,
-                           const ProbePrediction* probe = nullptr);
+                           const ProbePrediction* probe = nullptr, ViewPace pace = {});
 
 }  // namespace whitted::ui

@@ -1,6 +1,7 @@
 #include "tradeoff_dock/tradeoff_record.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace whitted::ui {
 
@@ -19,13 +20,43 @@ void TradeoffRecord::setMeasure(std::optional<MeasureResults> results) {
 
 void TradeoffRecord::setProbePrediction(std::shared_ptr<const ProbePrediction> probe) {
     probe_ = std::move(probe);
+    pace();
     emit changed();
+}
+
+void TradeoffRecord::addViewRender(const Scene& scene, double seconds) {
+    if (!std::exchange(firstViewRenderSeen_, true)) return;
+    lastView_ = ViewRender{scene, seconds};
+    pace();
+    emit changed();
+}
+
+// Whichever comes second, the render or the prediction, pairs them: a short
+// render ends before the probes start, a long one after they are done.
+void TradeoffRecord::pace() {
+    if (!lastView_ || !probe_ || !probe_->prediction.predicted ||
+        probe_->prediction.seconds <= 0.0 || !(probe_->scene.render == lastView_->scene.render) ||
+        !sameSceneContent(probe_->scene, lastView_->scene))
+        return;
+    paces_.push_back(lastView_->seconds / probe_->prediction.seconds);
+    if (paces_.size() > kPaceRenders) paces_.pop_front();
+    lastView_.reset();
+}
+
+ViewPace TradeoffRecord::viewPace() const {
+    if (paces_.empty()) return {};
+    std::vector<double> sorted(paces_.begin(), paces_.end());
+    std::sort(sorted.begin(), sorted.end());
+    const std::size_t n = sorted.size();
+    const double median = n % 2 ? sorted[n / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2.0;
+    return {median, int(n)};
 }
 
 void TradeoffRecord::clear() {
     renders_.clear();
     measure_.reset();
     probe_.reset();
+    lastView_.reset();
     emit changed();
 }
 

@@ -5,6 +5,7 @@
 
 #include <QObject>
 
+#include <deque>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -31,18 +32,41 @@ class TradeoffRecord : public QObject {
     void setProbePrediction(std::shared_ptr<const ProbePrediction> probe);
     const ProbePrediction* probePrediction() const { return probe_.get(); }
 
-    // Forgets everything: another scene was opened.
+    // The view's pace is the median of this many renders' (settings_prediction.h).
+    static constexpr std::size_t kPaceRenders = 5;
+
+    // The view finished rendering `scene` (its content and the settings it
+    // rendered) in `seconds`. Once the probes have predicted that very scene,
+    // the two give the view's pace. Not the first render: it shares the cores
+    // with the window's first showing (1.4 times the pace of the renders
+    // after it in bench_editor_prediction).
+    void addViewRender(const Scene& scene, double seconds);
+    ViewPace viewPace() const;
+
+    // Forgets everything but the view's pace (a matter of the machine and the
+    // editor, not of the scene): another scene was opened.
     void clear();
 
     Prediction predict(const Scene& scene, const RenderSettings* settings = nullptr) const {
-        return predictSettings(scene, renders_, measure(), settings, probe_.get());
+        return predictSettings(scene, renders_, measure(), settings, probe_.get(), viewPace());
     }
 
   signals:
     void changed();
 
   private:
-    std::vector<EditorRender> renders_;  // newest last
+    struct ViewRender {
+        Scene scene;
+        double seconds = 0.0;
+    };
+    // The view's newest render and the probes' newest prediction, once both
+    // are of the same scene: their ratio joins paces_, once.
+    void pace();
+
+    std::vector<EditorRender> renders_;   // newest last
+    std::optional<ViewRender> lastView_;  // not yet paced
+    bool firstViewRenderSeen_ = false;
+    std::deque<double> paces_;  // view seconds over predicted, newest last
     std::optional<MeasureResults> measure_;
     std::shared_ptr<const ProbePrediction> probe_;
 };

@@ -5,9 +5,9 @@
 // is one edit, as a user makes it; the view renders it at once, in passes,
 // while ProbePredictor's probes start 0.4 s later at a lower priority. The
 // bench waits for both and prints the view's seconds (the status bar's)
-// over the seconds the Render tab showed: the probes' for one pass, times
-// the view's pace (TradeoffRecord::viewPace()) as it stood before this
-// case, learnt on the cases before it (none before the first: the editor's
+// over the seconds the Render tab showed: the probes' for one pass, and
+// the view's passes at its pace (TradeoffRecord::viewPace()) as it stood
+// before this case, learnt on the cases before it (none before the first: the editor's
 // start scene is its first render, which sets no pace). Then, with the
 // editor idle, it renders the same scene in one pass (the faster of two):
 // the prediction's own error, apart from what the view's passes and display
@@ -54,8 +54,8 @@ bool waitFor(const Done& done) {
 
 struct Case {
     double probes = 0.0;     // the probes' seconds for one pass
-    double pace = 1.0;       // the view's, before this case
-    double predicted = 0.0;  // the Render tab's: the probes' at that pace
+    double extra = 0.0;      // for the view's passes, at its pace before this case
+    double predicted = 0.0;  // the Render tab's: the probes' and that
     double rendered = 0.0, onePass = 0.0;
 };
 
@@ -91,7 +91,8 @@ std::optional<Case> measure(MainWindow& window, Scene scene, int samples) {
     QObject::disconnect(seen);
     if (!done || !predicted()->prediction.predicted) return std::nullopt;
     const double probes = predicted()->prediction.seconds;
-    return Case{probes, pace.factor, probes * pace.factor, *rendered, onePassSeconds(scene)};
+    const double extra = viewExtraSeconds(scene.render, pace);
+    return Case{probes, extra, probes + extra, *rendered, onePassSeconds(scene)};
 }
 
 }  // namespace
@@ -119,12 +120,12 @@ int main(int argc, char** argv) {
     QObject::disconnect(start);
     std::printf(
         "%dx%d, depth 5, float; the view's render (in passes, as the status bar times "
-        "it) over the Render tab's prediction (the probes' for one pass, at the view's "
-        "pace on its renders before); in brackets, one pass rendered alone over the "
-        "probes' prediction\n\n",
+        "it) over the Render tab's prediction (the probes' for one pass, and the view's "
+        "passes at its pace on its renders before); in brackets, one pass rendered "
+        "alone over the probes' prediction\n\n",
         width, height);
     std::printf(
-        "| scene | 8 spp: predicted (pace), rendered, ratio (one pass) | 32 spp "
+        "| scene | 8 spp: predicted (passes), rendered, ratio (one pass) | 32 spp "
         "|\n|---|---|---|\n");
     int within = 0, onePassWithin = 0, cases = 0;
     for (const NamedScene& n :
@@ -142,8 +143,8 @@ int main(int argc, char** argv) {
             ++cases;
             within += std::fabs(ratio - 1.0) <= 0.25;
             onePassWithin += std::fabs(onePassRatio - 1.0) <= 0.25;
-            std::printf(" %.3f s (%.2f), %.3f s, %.2f (%.2f) |", c->predicted, c->pace, c->rendered,
-                        ratio, onePassRatio);
+            std::printf(" %.3f s (+%.3f), %.3f s, %.2f (%.2f) |", c->predicted, c->extra,
+                        c->rendered, ratio, onePassRatio);
         }
         std::printf("\n");
         std::fflush(stdout);

@@ -421,6 +421,10 @@ class TileRenderer {
 
 }  // namespace
 
+int passCount(const RenderSettings& settings, const RenderOptions& options) {
+    return int(planPasses(settings, options).size());
+}
+
 PixelRect tileBlocks(const TileUpdate& tile) {
     const int b = tile.block;
     const int x = tile.x / b, y = tile.y / b;

@@ -74,6 +74,10 @@ struct RenderProgress {
     int tilesInPass = 0;    // tiles the pass reports, each exactly once
 };
 
+// The passes a render of these settings makes with these options (a fixed
+// number of samples: not an adaptive render, whose passes depend on the picture).
+int passCount(const RenderSettings& settings, const RenderOptions& options = {});
+
 // A finished tile: the rectangle [x, x+width) x [y, y+height) of the render.
 // `image` is the whole picture being refined, one pixel of it to each block of
 // `block` x `block` render pixels: block 1 in a samples pass; in the preview,

@@ -226,8 +226,9 @@ TEST_F(TradeoffViewTest, Predictions_FromProbes_WithinTwoDecibelsOfTheRender) {
         const Prediction fromProbe = predictSettings(doc->scene(), renders, nullptr, nullptr,
                                                      window->tradeoffRecord()->probePrediction());
         ASSERT_TRUE(fromProbe.seconds.has_value());
-        // No view's pace given: the shipped scenes' (TradeoffRecord learns its own).
-        EXPECT_DOUBLE_EQ(*fromProbe.seconds, p.seconds * kUnmeasuredViewPace);
+        // No view's pace given: the bench scenes' (TradeoffRecord learns its own).
+        EXPECT_DOUBLE_EQ(*fromProbe.seconds,
+                         p.seconds + viewExtraSeconds(doc->scene().render, ViewPace{}));
         EXPECT_TRUE(fromProbe.timeSource.contains(
             QStringLiteral("predicted from small timed probe renders: %1 Mrays")
                 .arg(p.rays / 1e6, 0, 'f', 1)))
@@ -692,25 +693,27 @@ TEST(SettingsPrediction, ErrorInterpolatedLogLogBetweenSampleCounts) {
     EXPECT_TRUE(p.errorSource.startsWith(QStringLiteral("interpolated")));
 }
 
-// The view's pace: its renders' seconds over the probes' one-pass
-// prediction of the very same scene, learnt in the editor, its median
-// multiplying the Render tab's probe time.
-TEST(TradeoffRecord, ViewPace_IsTheMedianOfItsRendersOverTheProbesOfTheSameScene) {
+// The view's pace: what its renders took beyond the probes' one-pass
+// prediction of the very same scene, a pixel and a pass, learnt in the
+// editor; its median prices the passes of the Render tab's probe time.
+TEST(TradeoffRecord, ViewPace_IsTheMedianOfWhatItsRendersTookBeyondTheProbes) {
     TradeoffRecord record;
     Scene scene = test::seedScene(640, 480);
     scene.render.samplesPerPixel = 8;
+    // The preview, then 1, 1, 2 and 4 samples.
+    ASSERT_EQ(passCount(scene.render), 5);
+    const double pixelPasses = 640.0 * 480.0 * 5;
     auto probe = std::make_shared<ProbePrediction>();
     probe->scene = scene;
     probe->prediction.predicted = true;
     probe->prediction.seconds = 0.2;
     probe->prediction.rays = 4e6;
-    EXPECT_DOUBLE_EQ(record.viewPace().factor, kUnmeasuredViewPace);
+    EXPECT_DOUBLE_EQ(record.viewPace().secondsAPixelPass, kUnmeasuredSecondsAPixelPass);
     Prediction p = predictSettings(scene, {}, nullptr, nullptr, probe.get(), record.viewPace());
     ASSERT_TRUE(p.seconds.has_value());
-    EXPECT_DOUBLE_EQ(*p.seconds, 0.2 * kUnmeasuredViewPace);
-    EXPECT_TRUE(p.timeSource.endsWith(
-        QStringLiteral("and about 1.2 times that for the view's passes and frames (not yet "
-                       "measured here)")))
+    EXPECT_DOUBLE_EQ(*p.seconds, 0.2 + kUnmeasuredSecondsAPixelPass * pixelPasses);
+    EXPECT_TRUE(p.timeSource.endsWith(QStringLiteral(
+        "and about 0.034 s for the view's 5 passes and frames (not yet measured here)")))
         << p.timeSource.toStdString();
 
     // The first render shares the cores with the window's first showing: no pace.
@@ -718,9 +721,9 @@ TEST(TradeoffRecord, ViewPace_IsTheMedianOfItsRendersOverTheProbesOfTheSameScene
     record.setProbePrediction(probe);
     EXPECT_EQ(record.viewPace().renders, 0);
     // Rendered after the prediction, or before it: either pairs them, once.
-    record.addViewRender(scene, 0.3);
+    record.addViewRender(scene, 0.25);
     EXPECT_EQ(record.viewPace().renders, 1);
-    EXPECT_DOUBLE_EQ(record.viewPace().factor, 1.5);
+    EXPECT_DOUBLE_EQ(record.viewPace().secondsAPixelPass, 0.05 / pixelPasses);
     record.setProbePrediction(probe);
     EXPECT_EQ(record.viewPace().renders, 1);
     // Another scene's render, or other settings: not what the probes predicted.
@@ -734,18 +737,21 @@ TEST(TradeoffRecord, ViewPace_IsTheMedianOfItsRendersOverTheProbesOfTheSameScene
 
     p = record.predict(scene);
     ASSERT_TRUE(p.seconds.has_value());
-    EXPECT_DOUBLE_EQ(*p.seconds, 0.3);
+    EXPECT_DOUBLE_EQ(*p.seconds, 0.25);
     EXPECT_TRUE(p.timeSource.endsWith(
-        QStringLiteral("and 1.50 times that for the view's passes and frames (its last render)")))
+        QStringLiteral("and 0.05 s for the view's 5 passes and frames (as its last render)")))
         << p.timeSource.toStdString();
+    // 256 samples make 10 passes: twice the time beyond one pass.
+    more.render.samplesPerPixel = 256;
+    EXPECT_DOUBLE_EQ(viewExtraSeconds(more.render, record.viewPace()), 0.1);
 
-    // The median of the last five: 1.5 has gone.
-    for (double pace : {1.0, 2.0, 1.1, 1.3, 1.25}) {
-        record.addViewRender(scene, 0.2 * pace);
+    // The median of the last five: the first (0.05 s) has gone.
+    for (double extra : {0.0, 0.09, 0.01, 0.03, 0.02}) {
+        record.addViewRender(scene, 0.2 + extra);
         record.setProbePrediction(probe);
     }
     EXPECT_EQ(record.viewPace().renders, 5);
-    EXPECT_NEAR(record.viewPace().factor, 1.25, 1e-12);
+    EXPECT_NEAR(record.viewPace().secondsAPixelPass * pixelPasses, 0.02, 1e-12);
 }
 
 }  // namespace

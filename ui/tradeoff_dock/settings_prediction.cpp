@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "tracer/renderer.h"
+
 namespace whitted::ui {
 
 namespace {
@@ -49,26 +51,26 @@ void errorFromProbe(const RenderPrediction& r, Prediction& p) {
 }
 
 // The probes' seconds: their rays at the speed their timed renders showed for
-// these samples, depth, precision and picture size (speed_probe.h), at the
-// pace of the view's renders.
-bool timeFromProbe(const RenderPrediction& r, ViewPace pace, Prediction& p) {
+// these samples, depth, precision and picture size (speed_probe.h), and the
+// view's passes at its pace.
+bool timeFromProbe(const RenderPrediction& r, const RenderSettings& want, ViewPace pace,
+                   Prediction& p) {
     if (!r.predicted || r.seconds <= 0) return false;
-    p.seconds = r.seconds * pace.factor;
+    const double extra = viewExtraSeconds(want, pace);
+    p.seconds = r.seconds + extra;
     p.timeSource = QObject::tr("predicted from small timed probe renders: %1 Mrays at %2 Mrays/s")
                        .arg(r.rays / 1e6, 0, 'f', 1)
                        .arg(r.rays / r.seconds / 1e6, 0, 'f', 1);
-    const QString measuredOn = pace.renders == 1
-                                   ? QObject::tr("its last render")
-                                   : QObject::tr("its last %1 renders").arg(pace.renders);
-    if (pace.renders > 0)
-        p.timeSource += QObject::tr(", and %1 times that for the view's passes and frames (%2)")
-                            .arg(pace.factor, 0, 'f', 2)
-                            .arg(measuredOn);
+    const QString passes = QObject::tr("%1 s for the view's %2 passes and frames")
+                               .arg(extra, 0, 'g', 2)
+                               .arg(passCount(want));
+    if (pace.renders == 0)
+        p.timeSource += QObject::tr(", and about %1 (not yet measured here)").arg(passes);
+    else if (pace.renders == 1)
+        p.timeSource += QObject::tr(", and %1 (as its last render)").arg(passes);
     else
-        p.timeSource += QObject::tr(
-                            ", and about %1 times that for the view's passes and frames "
-                            "(not yet measured here)")
-                            .arg(pace.factor, 0, 'f', 1);
+        p.timeSource +=
+            QObject::tr(", and %1 (as its last %2 renders)").arg(passes).arg(pace.renders);
     return true;
 }
 
@@ -80,7 +82,7 @@ void timeFromRenders(const RenderSettings& want, const std::vector<EditorRender>
             p.timeSource = QObject::tr("measured: the last render at these settings");
             return;
         }
-    if (probe && timeFromProbe(*probe, pace, p)) return;
+    if (probe && timeFromProbe(*probe, want, pace, p)) return;
     if (renders.empty()) {
         p.timeSource = QObject::tr("no render has finished yet");
         return;
@@ -167,6 +169,10 @@ Coverage fromMeasure(const MeasureResults& m, const RenderSettings& want, Predic
 }
 
 }  // namespace
+
+double viewExtraSeconds(const RenderSettings& settings, ViewPace pace) {
+    return pace.secondsAPixelPass * double(settings.width) * settings.height * passCount(settings);
+}
 
 bool sameSceneContent(const Scene& a, const Scene& b) {
     // Field by field rather than comparing a copy with a's settings: the

@@ -43,18 +43,23 @@ struct Prediction {
     QString errorSource;  // where the error comes from, or why there is none
 };
 
-// How much longer the view's renders take than the probes predict for one
-// pass of their rays: its preview and passes (each reads and writes the
-// picture's sums), and the frames the window shows, on the same cores
-// (1.1 to 1.5 times at 640x480; docs/quality.md). Measured in the editor,
-// on its own renders: the median of the last few whose scene the probes
-// predicted (TradeoffRecord::addViewRender()). Until one is, the median of
-// the shipped scenes' at 640x480 (bench_editor_prediction).
-inline constexpr double kUnmeasuredViewPace = 1.2;
+// What the view's renders take beyond the probes' prediction of one pass of
+// their rays: its preview and passes (each reads and writes the picture's
+// sums, each ends with a frame the window shows, on the same cores), priced
+// a pixel and a pass (at most 0.02 to 0.05 s a pass at 640x480; docs/quality.md). A
+// factor would not do: it was 1.1 to 1.5 on renders of a tenth of a second
+// and 1.01 on one of nine. Measured in the editor, on its own renders: the
+// median of the last few whose scene the probes predicted
+// (TradeoffRecord::addViewRender()). Until one is, the median of the
+// shipped and generated scenes' at 640x480 (bench_editor_prediction).
+inline constexpr double kUnmeasuredSecondsAPixelPass = 22e-9;
 struct ViewPace {
-    double factor = kUnmeasuredViewPace;
+    double secondsAPixelPass = kUnmeasuredSecondsAPixelPass;
     int renders = 0;  // it was measured on
 };
+
+// The view's seconds beyond one pass, for a render of these settings.
+double viewExtraSeconds(const RenderSettings& settings, ViewPace pace);
 
 // Whether two scenes differ at most in their render settings: Measure's errors
 // hold for any settings of the scene it measured, and for nothing else.

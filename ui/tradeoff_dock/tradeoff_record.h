@@ -38,8 +38,8 @@ class TradeoffRecord : public QObject {
     // The view finished rendering `scene` (its content and the settings it
     // rendered) in `seconds`. Once the probes have predicted that very scene,
     // the two give the view's pace. Not the first render: it shares the cores
-    // with the window's first showing (1.4 times the pace of the renders
-    // after it in bench_editor_prediction).
+    // with the window's first showing (in bench_editor_prediction it
+    // took 1.4 times the seed's renders after it).
     void addViewRender(const Scene& scene, double seconds);
     ViewPace viewPace() const;
 
@@ -60,13 +60,15 @@ class TradeoffRecord : public QObject {
         double seconds = 0.0;
     };
     // The view's newest render and the probes' newest prediction, once both
-    // are of the same scene: their ratio joins paces_, once.
+    // are of the same scene: what the render took beyond the prediction
+    // joins paces_, once.
     void pace();
 
     std::vector<EditorRender> renders_;   // newest last
     std::optional<ViewRender> lastView_;  // not yet paced
     bool firstViewRenderSeen_ = false;
-    std::deque<double> paces_;  // view seconds over predicted, newest last
+    // The view's seconds beyond the prediction, a pixel and a pass; newest last.
+    std::deque<double> paces_;
     std::optional<MeasureResults> measure_;
     std::shared_ptr<const ProbePrediction> probe_;
 };

@@ -752,6 +752,12 @@ TEST(TradeoffRecord, ViewPace_IsTheMedianOfWhatItsRendersTookBeyondTheProbes) {
     }
     EXPECT_EQ(record.viewPace().renders, 5);
     EXPECT_NEAR(record.viewPace().secondsAPixelPass * pixelPasses, 0.02, 1e-12);
+    // Renders quicker than predicted: the passes priced at nothing, not less.
+    for (int i = 0; i < 3; ++i) {
+        record.addViewRender(scene, 0.15);
+        record.setProbePrediction(probe);
+    }
+    EXPECT_EQ(record.viewPace().secondsAPixelPass, 0.0);
 }
 
 }  // namespace

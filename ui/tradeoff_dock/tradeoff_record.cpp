@@ -53,7 +53,9 @@ ViewPace TradeoffRecord::viewPace() const {
     std::sort(sorted.begin(), sorted.end());
     const std::size_t n = sorted.size();
     const double median = n % 2 ? sorted[n / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2.0;
-    return {median, int(n)};
+    // A render quicker than its prediction says the prediction erred, not
+    // that its passes cost less than nothing.
+    return {std::max(0.0, median), int(n)};
 }
 
 void TradeoffRecord::clear() {

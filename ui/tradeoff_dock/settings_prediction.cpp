@@ -170,8 +170,12 @@ Coverage fromMeasure(const MeasureResults& m, const RenderSettings& want, Predic
 
 }  // namespace
 
+double pixelPasses(const RenderSettings& settings) {
+    return double(settings.width) * settings.height * passCount(settings);
+}
+
 double viewExtraSeconds(const RenderSettings& settings, ViewPace pace) {
-    return pace.secondsAPixelPass * double(settings.width) * settings.height * passCount(settings);
+    return pace.secondsAPixelPass * pixelPasses(settings);
 }
 
 bool sameSceneContent(const Scene& a, const Scene& b) {

@@ -58,6 +58,10 @@ struct ViewPace {
     int renders = 0;  // it was measured on
 };
 
+// Pixels times passes (passCount()) of a view's render of these settings:
+// what its seconds beyond one pass grow with.
+double pixelPasses(const RenderSettings& settings);
+
 // The view's seconds beyond one pass, for a render of these settings.
 double viewExtraSeconds(const RenderSettings& settings, ViewPace pace);
 

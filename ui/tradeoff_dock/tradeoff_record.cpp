@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <utility>
 
-#include "tracer/renderer.h"
-
 namespace whitted::ui {
 
 void TradeoffRecord::addRender(const EditorRender& render) {
@@ -40,9 +38,8 @@ void TradeoffRecord::pace() {
         probe_->prediction.seconds <= 0.0 || !(probe_->scene.render == lastView_->scene.render) ||
         !sameSceneContent(probe_->scene, lastView_->scene))
         return;
-    const RenderSettings& r = lastView_->scene.render;
-    const double pixelPasses = double(r.width) * r.height * passCount(r);
-    paces_.push_back((lastView_->seconds - probe_->prediction.seconds) / pixelPasses);
+    paces_.push_back((lastView_->seconds - probe_->prediction.seconds) /
+                     pixelPasses(lastView_->scene.render));
     if (paces_.size() > kPaceRenders) paces_.pop_front();
     lastView_.reset();
 }

@@ -19,7 +19,6 @@
 #include <QStandardPaths>
 #include <QThread>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -28,7 +27,6 @@
 #include "bench_scenes.h"
 #include "document/scene_document.h"
 #include "editor/main_window.h"
-#include "tracer/renderer.h"
 #include "tradeoff_dock/probe_predictor.h"
 #include "tradeoff_dock/tradeoff_record.h"
 
@@ -59,16 +57,6 @@ struct Case {
     double rendered = 0.0, onePass = 0.0;
 };
 
-// The faster of two one-pass renders, in the view's thread count.
-double onePassSeconds(const Scene& scene) {
-    double fastest = 0.0;
-    for (int attempt = 0; attempt < 2; ++attempt) {
-        const double seconds = render(scene, oneShotOptions()).seconds;
-        fastest = attempt == 0 ? seconds : std::min(fastest, seconds);
-    }
-    return fastest;
-}
-
 // Sets the scene (as one edit) with `samples` a pixel and waits for the
 // view's complete render of it and for the probes' prediction of it.
 std::optional<Case> measure(MainWindow& window, Scene scene, int samples) {
@@ -92,7 +80,7 @@ std::optional<Case> measure(MainWindow& window, Scene scene, int samples) {
     if (!done || !predicted()->prediction.predicted) return std::nullopt;
     const double probes = predicted()->prediction.seconds;
     const double extra = viewExtraSeconds(scene.render, pace);
-    return Case{probes, extra, probes + extra, *rendered, onePassSeconds(scene)};
+    return Case{probes, extra, probes + extra, *rendered, fasterOfTwo(scene).seconds};
 }
 
 }  // namespace

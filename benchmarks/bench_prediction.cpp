@@ -34,12 +34,6 @@ std::vector<NamedScene> scenes(int width, int height) {
                        {generatedField(150, 31, 4.0, 10.0), generatedField(400, 57, 4.0, 10.0)});
 }
 
-RenderResult fasterOfTwo(const Scene& scene) {
-    RenderResult best = render(scene, oneShotOptions());
-    RenderResult again = render(scene, oneShotOptions());
-    return again.seconds < best.seconds ? again : best;
-}
-
 void speedTable() {
     std::printf(
         "| scene | width | tiles timed, pixels | 1 spp: s, predicted / measured | 8 spp | 32 spp "

@@ -56,15 +56,6 @@ double overheadOf(const Scene& scene, const StopPredicate& stop) {
     return threadCpuSeconds() - start;
 }
 
-// The threads a render of the whole picture runs on: no more than its tiles.
-int threadsFor(const Scene& scene) {
-    const RenderOptions options;
-    const int tileSide = std::max(1, options.tileSize);
-    const int tiles = ((scene.render.width + tileSide - 1) / tileSide) *
-                      ((scene.render.height + tileSide - 1) / tileSide);
-    return std::max(1, std::min(resolveThreadCount(options.threads), tiles));
-}
-
 }  // namespace
 
 std::vector<PixelRect> probeTiles(int width, int height, int pixels) {
@@ -102,7 +93,7 @@ SpeedProbe probeSpeed(const Scene& scene, int pixels, const StopPredicate& stop)
 double predictSeconds(const SpeedProbe& probe, const Scene& scene, double rays) {
     const double costARay =
         scene.render.samplesPerPixel > 1 ? probe.cost.jittered : probe.cost.centre;
-    return probe.overheadSeconds + rays * costARay / threadsFor(scene);
+    return probe.overheadSeconds + rays * costARay / renderThreads(scene.render);
 }
 
 }  // namespace whitted

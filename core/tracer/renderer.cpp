@@ -92,6 +92,17 @@ std::optional<std::string> regionsProblem(const std::vector<PixelRect>& regions,
     return std::nullopt;
 }
 
+// The tiles a render works through, in the order it takes them.
+std::vector<Tile> renderTiles(const RenderSettings& r, const RenderOptions& o) {
+    std::vector<Tile> tiles = spiralTiles(r.width, r.height, std::max(1, o.tileSize));
+    return o.regions.empty() ? tiles : regionTiles(tiles, o.regions);
+}
+
+// The threads a render of `tiles` tiles runs on: as asked, no more than its tiles.
+int threadsForTiles(const RenderOptions& o, std::size_t tiles) {
+    return std::max(1, std::min<int>(resolveThreadCount(o.threads), tiles));
+}
+
 std::vector<Pass> planPasses(const RenderSettings& r, const RenderOptions& o) {
     const double pixels = pixelsRendered(r, o);
     std::vector<Pass> passes;
@@ -124,9 +135,8 @@ class TileRenderer {
           block_(previewBlockOf(options)) {}
 
     RenderResult run() {
-        tiles_ = spiralTiles(s_.width, s_.height, std::max(1, options_.tileSize));
-        if (!options_.regions.empty()) tiles_ = regionTiles(tiles_, options_.regions);
-        threads_ = std::max(1, std::min<int>(resolveThreadCount(options_.threads), tiles_.size()));
+        tiles_ = renderTiles(settings_, options_);
+        threads_ = threadsForTiles(options_, tiles_.size());
         RenderResult result = options_.adaptive ? runAdaptive() : runFixed();
         if (image_.rgb.empty()) image_ = Image(s_.width, s_.height);  // stopped in the preview
         result.threads = threads_;
@@ -420,6 +430,10 @@ class TileRenderer {
 };
 
 }  // namespace
+
+int renderThreads(const RenderSettings& settings, const RenderOptions& options) {
+    return threadsForTiles(options, renderTiles(settings, options).size());
+}
 
 int passCount(const RenderSettings& settings, const RenderOptions& options) {
     return int(planPasses(settings, options).size());

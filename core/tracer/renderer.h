@@ -74,6 +74,10 @@ struct RenderProgress {
     int tilesInPass = 0;    // tiles the pass reports, each exactly once
 };
 
+// The worker threads a render of these settings runs on with these options
+// (RenderResult::threads): as many as asked, no more than its tiles.
+int renderThreads(const RenderSettings& settings, const RenderOptions& options = {});
+
 // The passes a render of these settings makes with these options (a fixed
 // number of samples: not an adaptive render, whose passes depend on the picture).
 int passCount(const RenderSettings& settings, const RenderOptions& options = {});

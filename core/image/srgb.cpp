@@ -65,7 +65,33 @@ std::array<std::uint8_t, kBuckets> makeBucketCodes() {
 
 const std::array<std::uint8_t, kBuckets> kBucketCodes = makeBucketCodes();
 
+// srgbEncode() at the smallest float of each bucket, and of the bucket after
+// the last (1.0).
+std::array<float, kBuckets + 1> makeBucketStarts() {
+    std::array<float, kBuckets + 1> starts{};
+    for (int b = 0; b <= kBuckets; ++b) {
+        const std::uint32_t bits = static_cast<std::uint32_t>(b) << kBucketShift;
+        float x;
+        std::memcpy(&x, &bits, sizeof x);
+        starts[b] = srgbEncode(x);
+    }
+    return starts;
+}
+
+const std::array<float, kBuckets + 1> kBucketStarts = makeBucketStarts();
+
 }  // namespace
+
+float srgbEncodeFast(float linear) {
+    if (!(linear > 0.0f)) return 0.0f;
+    if (linear >= 1.0f) return 1.0f;
+    std::uint32_t bits;
+    std::memcpy(&bits, &linear, sizeof bits);
+    const std::uint32_t bucket = bits >> kBucketShift;
+    // Within a bucket the mantissa's low bits step the value evenly.
+    const float t = float(bits & ((1u << kBucketShift) - 1)) * (1.0f / float(1u << kBucketShift));
+    return kBucketStarts[bucket] + t * (kBucketStarts[bucket + 1] - kBucketStarts[bucket]);
+}
 
 std::uint8_t srgbEncode8(float linear) {
     if (!(linear > 0.0f)) return 0;  // NaN too

@@ -4,6 +4,53 @@
 
 namespace whitted {
 
+namespace {
+
+// The largest estimate of tile j's pixels within `area`, carried to `samples`.
+double largestWithin(const PixelLargest& pixels, const PixelRect& area, const PixelRect& tile,
+                     double scale) {
+    const int x0 = std::max(area.x, tile.x),
+              x1 = std::min(area.x + area.width, tile.x + tile.width);
+    const int y0 = std::max(area.y, tile.y),
+              y1 = std::min(area.y + area.height, tile.y + tile.height);
+    float largest = 0.0f;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) largest = std::max(largest, pixels.at(x, y));
+    return largest * scale;
+}
+
+}  // namespace
+
+void estimateNearbyLargest(std::vector<TileSamplingState>& tiles,
+                           const std::vector<PixelRect>& rects, int edge,
+                           const PixelLargest& pixels) {
+    const int columns = (pixels.width + edge - 1) / edge;
+    const int rows = (pixels.height + edge - 1) / edge;
+    std::vector<int> tileOfCell(std::size_t(columns) * rows, -1);
+    for (std::size_t i = 0; i < rects.size(); ++i)
+        tileOfCell[std::size_t(rects[i].y / edge) * columns + rects[i].x / edge] = int(i);
+    const int reach = std::min(kNearbyReach, edge);  // within the next tiles
+    for (std::size_t i = 0; i < tiles.size(); ++i) {
+        const PixelRect& r = rects[i];
+        const PixelRect area{r.x - reach, r.y - reach, r.width + 2 * reach, r.height + 2 * reach};
+        const int column = r.x / edge, row = r.y / edge;
+        // Its own pixels' largest is its estimate's.
+        double largest = tiles[i].estimate.largest;
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                const int c = column + dx, w = row + dy;
+                if ((dx == 0 && dy == 0) || c < 0 || w < 0 || c >= columns || w >= rows) continue;
+                const int j = tileOfCell[std::size_t(w) * columns + c];
+                if (j < 0 || tiles[i].samples <= 0) continue;
+                const double scale = std::sqrt(double(tiles[j].samples) / tiles[i].samples);
+                // Its pixels cannot raise what was found already.
+                if (tiles[j].estimate.largest * scale <= largest) continue;
+                largest = std::max(largest, largestWithin(pixels, area, rects[j], scale));
+            }
+        tiles[i].nearbyLargest = largest;
+    }
+}
+
 TileErrorEstimate centreSampleEstimate(const Image& image, const PixelRect& tile) {
     // A centre's error, in codes, per code of difference to a neighbour.
     static const double errorPerDifference = std::sqrt(kNeighbourShare);
@@ -66,7 +113,7 @@ std::vector<int> tilesToRefine(const std::vector<TileSamplingState>& tiles,
     std::vector<int> open;  // tiles that may still take samples
     for (int i = 0; i < count; ++i) {
         if (tiles[i].samples >= limits.maxSamples) continue;
-        if (tiles[i].estimate.largest > limits.allowedLargest)
+        if (std::max(tiles[i].estimate.largest, tiles[i].nearbyLargest) > limits.allowedLargest)
             choose(i);
         else
             open.push_back(i);

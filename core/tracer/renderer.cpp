@@ -47,8 +47,13 @@ std::vector<Tile> spiralTiles(int width, int height, int size) {
 
 // The preview's block edge: a divisor of the tile edge, so that tiles hold
 // whole blocks and no block is traced twice.
+// The tile edge: an adaptive render's own (adaptive_sampling.h), else as asked.
+int tileEdgeOf(const RenderOptions& o) {
+    return std::max(1, o.adaptive ? kAdaptiveTileEdge : o.tileSize);
+}
+
 int previewBlockOf(const RenderOptions& o) {
-    const int tile = std::max(1, o.tileSize);
+    const int tile = tileEdgeOf(o);
     int block = std::clamp(o.previewBlock, 1, tile);
     while (tile % block != 0) --block;
     return block;
@@ -94,7 +99,7 @@ std::optional<std::string> regionsProblem(const std::vector<PixelRect>& regions,
 
 // The tiles a render works through, in the order it takes them.
 std::vector<Tile> renderTiles(const RenderSettings& r, const RenderOptions& o) {
-    std::vector<Tile> tiles = spiralTiles(r.width, r.height, std::max(1, o.tileSize));
+    std::vector<Tile> tiles = spiralTiles(r.width, r.height, tileEdgeOf(o));
     return o.regions.empty() ? tiles : regionTiles(tiles, o.regions);
 }
 
@@ -196,6 +201,10 @@ class TileRenderer {
             tileStates_[t].pixels = tiles_[t].w * tiles_[t].h;
         std::vector<Pass> passes = planPasses(settings_, options_);  // the preview, if any
         passes.resize(passes.front().kind == PassKind::Preview ? 1 : 0);
+        if (limits.allowedLargest < 255.0) {
+            pixelLargest_.width = s_.width, pixelLargest_.height = s_.height;
+            pixelLargest_.codes.resize(std::size_t(s_.width) * s_.height);
+        }
         std::vector<int> refine(tiles_.size());
         std::iota(refine.begin(), refine.end(), 0);
         int index = 0;
@@ -213,7 +222,7 @@ class TileRenderer {
             startImage(PassKind::Samples);
             runPass(centres, index, index + 1, refine);
             ++index, ++samplesPasses;
-            refine = stopped_ ? std::vector<int>() : tilesToRefine(tileStates_, limits);
+            refine = stopped_ ? std::vector<int>() : nextTiles(limits);
         }
         RenderResult result;
         while (!refine.empty() && !stopped_) {
@@ -236,11 +245,20 @@ class TileRenderer {
                 runPass(pass, index, index + 1, ids);
                 ++index, ++samplesPasses;
             }
-            refine = tilesToRefine(tileStates_, limits);
+            refine = nextTiles(limits);
         }
         result.adaptive = adaptiveOutcome(tileStates_, limits, samplesPasses);
         result.samples = stopped_ ? 0 : result.adaptive->fewestSamples;
         return result;
+    }
+
+    std::vector<int> nextTiles(const AdaptiveSampling& limits) {
+        if (!pixelLargest_.codes.empty()) {
+            std::vector<PixelRect> rects;
+            for (const Tile& t : tiles_) rects.push_back({t.x, t.y, t.w, t.h});
+            estimateNearbyLargest(tileStates_, rects, tileEdgeOf(options_), pixelLargest_);
+        }
+        return tilesToRefine(tileStates_, limits);
     }
 
     // For the progress fraction: the passes left if each halves the error.
@@ -388,7 +406,10 @@ class TileRenderer {
             }
             const float firstHalf[3] = {out[0], out[1], out[2]};
             storeMean(out, sums[i], pass.lastSample);
-            for (int c = 0; c < 3; ++c) estimate->addHalves(firstHalf[c], out[c]);
+            double largest = 0.0;
+            for (int c = 0; c < 3; ++c)
+                largest = std::max(largest, estimate->addHalves(firstHalf[c], out[c]));
+            if (!pixelLargest_.codes.empty()) pixelLargest_.at(tile.x + i, y) = float(largest);
         }
     }
 
@@ -427,6 +448,7 @@ class TileRenderer {
     std::vector<Tile> tiles_;
     int threads_ = 1;
     std::vector<TileSamplingState> tileStates_;  // adaptive renders only
+    PixelLargest pixelLargest_;  // adaptive renders with a limit on the largest error
 };
 
 }  // namespace

@@ -26,7 +26,7 @@ namespace whitted {
 
 struct RenderOptions {
     int threads = 0;          // worker threads including the caller; 0: all cores
-    int tileSize = 32;        // tile edge in pixels
+    int tileSize = 32;        // tile edge in pixels (an adaptive render's: kAdaptiveTileEdge)
     bool progressive = true;  // false: a single pass of all samples, no preview
     // Pixels per preview block edge; 1 disables the preview. A block never
     // straddles two tiles: render() uses the largest divisor of tileSize not

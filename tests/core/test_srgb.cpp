@@ -28,6 +28,24 @@ TEST(Srgb, Encode8EqualsFormulaOnEveryFloatFromZeroToOne) {
     EXPECT_GT(checked, 100000000);
 }
 
+// The adaptive render's estimates take codes from srgbEncodeFast(): a
+// four-hundredth of a code from the formula is far below what they measure.
+TEST(Srgb, FastEncodeIsWithinAFourHundredthOfACodeOfTheFormula) {
+    double worst = 0.0;
+    for (std::uint32_t bits = 0; bits <= 0x3f800000u; bits += 997) {
+        float x;
+        std::memcpy(&x, &bits, sizeof x);
+        worst = std::max(worst, std::fabs(double(srgbEncodeFast(x)) - double(srgbEncode(x))));
+    }
+    EXPECT_LT(worst * 255.0, 0.0025);
+    EXPECT_GT(worst, 0.0);  // it interpolates: not the formula itself
+    EXPECT_EQ(srgbEncodeFast(-1.0f), 0.0f);
+    EXPECT_EQ(srgbEncodeFast(std::nanf("")), 0.0f);
+    EXPECT_EQ(srgbEncodeFast(1.0f), 1.0f);
+    EXPECT_EQ(srgbEncodeFast(INFINITY), 1.0f);
+    EXPECT_NEAR(srgbEncodeFast(0.5f) * 255.0f, 187.52f, 0.01f);
+}
+
 TEST(Srgb, Encode8ClampsAndHandlesOddInputs) {
     EXPECT_EQ(srgbEncode8(-1.0f), 0);
     EXPECT_EQ(srgbEncode8(0.0f), 0);

@@ -1,0 +1,65 @@
+// Which tiles an adaptive render samples again (tracer/adaptive_sampling.h):
+// a pixel's estimate speaks for its own tile and, kNearbyReach pixels deep,
+// for the tiles beside it, carried to their sample counts.
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "tracer/adaptive_sampling.h"
+
+namespace whitted {
+namespace {
+
+// Two tiles of 16x16 side by side, 32x16 pixels, no estimate anywhere yet.
+struct TwoTiles {
+    std::vector<TileSamplingState> states = std::vector<TileSamplingState>(2);
+    std::vector<PixelRect> rects = {{0, 0, 16, 16}, {16, 0, 16, 16}};
+    PixelLargest pixels;
+    TwoTiles(int leftSamples, int rightSamples) {
+        pixels.width = 32, pixels.height = 16;
+        pixels.codes.resize(32 * 16);
+        states[0].samples = leftSamples, states[1].samples = rightSamples;
+        for (TileSamplingState& s : states) s.pixels = 256;
+    }
+    // A pixel's estimate, as its tile's pass leaves it.
+    void estimate(int x, int y, float codes) {
+        pixels.at(x, y) = codes;
+        TileErrorEstimate& e = states[x < 16 ? 0 : 1].estimate;
+        e.largest = std::max(e.largest, double(codes));
+    }
+    void run() { estimateNearbyLargest(states, rects, kAdaptiveTileEdge, pixels); }
+};
+
+TEST(AdaptiveSampling, APixelBesideATileSpeaksForIt_AtThatTilesSamples) {
+    TwoTiles t(8, 2);
+    t.estimate(15 - (kNearbyReach - 1), 7, 40.0f);  // the deepest pixel that still speaks
+    t.run();
+    EXPECT_DOUBLE_EQ(t.states[0].nearbyLargest, 40.0);
+    // At 2 samples, not 8: errors twice as large, sqrt(8 / 2).
+    EXPECT_DOUBLE_EQ(t.states[1].nearbyLargest, 80.0);
+    // Over Preview's sampling limit (51.2 codes): the right tile is sampled
+    // again although its own pixels' estimates are all zero.
+    const AdaptiveSampling limits{1e9, 51.2, 1024};
+    EXPECT_EQ(tilesToRefine(t.states, limits), std::vector<int>{1});
+}
+
+TEST(AdaptiveSampling, APixelFurtherFromTheBorderDoesNot) {
+    TwoTiles t(8, 2);
+    t.estimate(15 - kNearbyReach, 7, 40.0f);
+    t.run();
+    EXPECT_DOUBLE_EQ(t.states[0].nearbyLargest, 40.0);
+    EXPECT_DOUBLE_EQ(t.states[1].nearbyLargest, 0.0);
+    EXPECT_TRUE(tilesToRefine(t.states, AdaptiveSampling{1e9, 51.2, 1024}).empty());
+}
+
+TEST(AdaptiveSampling, ANeighbourWithFewerSamplesSpeaksForLess) {
+    TwoTiles t(2, 32);
+    t.estimate(15, 0, 40.0f);  // in the corner, beside the other tile
+    t.run();
+    EXPECT_DOUBLE_EQ(t.states[1].nearbyLargest, 10.0);  // 40 * sqrt(2 / 32)
+    EXPECT_EQ(tilesToRefine(t.states, AdaptiveSampling{1e9, 20.0, 1024}), std::vector<int>{0});
+}
+
+}  // namespace
+}  // namespace whitted

@@ -37,11 +37,11 @@ void row(const NamedScene& n, const QualityTarget& target, const RenderPreset& p
     const FixedCheck fewest =
         fewestFixedSamplesMeeting(n.scene, target, c.plan.maxDepth, reference);
     std::printf(
-        "| %s | %s | %d%s | %.1f | %s (est. %.1f) | %s | %.2fM, %.3f s | %s %s | "
+        "| %s | %s | %d%s | %.1f | %s (est. %.1f) | %s | %.2fM, %.3f s (plan %.3f) | %s %s | "
         "%.2fM, %.3f s | ",
         n.name.c_str(), target.name.c_str(), c.plan.maxDepth, c.plan.depthShort ? "*" : "",
         c.meanSamples, measured(c.error).c_str(), c.estimatedPsnr, c.met ? "yes" : "**no**",
-        c.rays / 1e6, c.seconds, measured(fixed.error).c_str(),
+        c.rays / 1e6, c.seconds, c.planSeconds, measured(fixed.error).c_str(),
         meetsTarget(fixed.error, target) ? "yes" : "**no**", fixed.rays / 1e6, fixed.seconds);
     if (fewest.samples > 0)
         std::printf("%d spp: %.2fM, %.3f s |\n", fewest.samples, fewest.rays / 1e6, fewest.seconds);

@@ -29,6 +29,7 @@ QualityCheck checkQuality(const Scene& scene, const QualityTarget& target, const
     QualityCheck c;
     const auto start = std::chrono::steady_clock::now();
     c.plan = planQuality(scene, target);
+    c.planSeconds = secondsSince(start);
     Scene planned = scene;
     RenderOptions options = oneShotOptions();
     applyPlan(c.plan, planned, options);

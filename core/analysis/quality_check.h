@@ -24,6 +24,7 @@ struct QualityCheck {
     bool met = false;
     std::uint64_t rays = 0;  // the render's and the plan's probes'
     double seconds = 0.0;    // the same: planning and rendering
+    double planSeconds = 0.0;
     double meanSamples = 0.0;
     double estimatedPsnr = 0.0;  // what the plan and the render expected
 };

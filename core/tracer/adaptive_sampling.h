@@ -107,6 +107,11 @@ struct TileErrorEstimate {
         ++values;
         return std::fabs(e);
     }
+    void add(const TileErrorEstimate& part) {
+        squaredSum += part.squaredSum;
+        largest = std::max(largest, part.largest);
+        values += part.values;
+    }
     double mse() const { return values ? squaredSum / double(values) : 0.0; }
 };
 

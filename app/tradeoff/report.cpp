@@ -239,9 +239,15 @@ std::string sceneSection(const SceneSummary& s) {
         md << "Measured" << (s.date.empty() ? "" : " on " + s.date) << " with `" << s.command
            << "`.\n\n";
     md << "![" << s.name << ": error against time](" << s.directory << "/plot.png)\n\n";
+    const bool settled =
+        s.reference.render.maxDepth >= std::min(kMaxDepth, s.depthWithinTolerance + 2);
     md << "Reference: double, " << s.reference.render.samplesPerPixel << " samples per pixel, max "
-       << "depth " << s.reference.render.maxDepth << " (two past the depth beyond which no pixel "
-       << "can change by more than 1/1024 of the missing rays' radiance), "
+       << "depth " << s.reference.render.maxDepth
+       << (settled ? " (two past the depth beyond which no pixel can change by more than 1/1024 "
+                     "of the missing rays' radiance), "
+                   : " (the deepest a reference goes: deeper, pixels still change by more than "
+                     "1/1024 of the missing rays' radiance, but each level costs more than the "
+                     "last), ")
        << s.reference.render.width << "×" << s.reference.render.height << ", rendered in "
        << fixed(s.referenceSeconds, 1) << " s. Every point is compared with it; smaller images "
        << "are compared stretched, as a viewer shows them.\n\n";

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <map>
 
+#include "analysis/depth_truncation.h"
 #include "analysis/tradeoff.h"
 #include "image/image_error.h"
 #include "tracer/renderer.h"
@@ -37,11 +38,9 @@ constexpr int kPrecisionSamples = 8;
 constexpr double kOneThreadProbeSeconds = 0.5e-3;
 // How much deeper the render a depth is measured against goes.
 constexpr int kLookAhead = 3;
-// The deepest depth a plan chooses. In a field of glass balls light trapped
-// in the balls changes some pixels by 60 codes and more until depth 20 and
-// beyond, and each level costs more than the last (a 1-sample render of
-// scenes/field.json: 0.1 s at depth 8, 0.7 s at 17, 6.9 s at 25).
-constexpr int kDeepestPlanned = 16;
+// The deepest depth a plan chooses: there light trapped in glass balls can
+// still change some pixels by 60 codes.
+constexpr int kDeepestPlanned = kDeepestChosen;
 
 std::string format(const char* pattern, double a, double b = 0, double c = 0, double d = 0) {
     char text[256];

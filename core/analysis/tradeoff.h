@@ -40,7 +40,10 @@ struct TradeoffGrid {
 };
 
 // The reference: the scene in double with `samples` samples per pixel and a
-// max_depth of depthWithinTolerance(scene) + 2, capped at kMaxDepth.
+// max_depth of depthWithinTolerance(scene) + 2, capped at kMaxDepth and at
+// kDeepestChosen or the scene's own max_depth, whichever is deeper: where
+// rays bounce in glass without losing weight the search returns kMaxDepth,
+// and a reference at depth 64 would never end.
 struct ReferenceRender {
     Scene scene;  // the settings it was rendered with
     Image image;

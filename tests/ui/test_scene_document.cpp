@@ -7,6 +7,7 @@
 #include <QSignalSpy>
 #include <QUndoStack>
 
+#include <functional>
 #include <iostream>
 #include <random>
 
@@ -220,6 +221,45 @@ TEST(SceneDocument, EditItem_NoChange_RecordsNoStepAndSaysNothing) {
     EXPECT_EQ(doc.undoStack()->count(), 0);
     EXPECT_EQ(changed.count(), 0);
     EXPECT_FALSE(doc.isModified());
+}
+
+// What a render shows changes with anything but the render settings: the
+// Render tab's measured times hold only while the revision does.
+TEST(SceneDocument, ContentRevision_MovesWithWhatARenderShows_NotWithRenderSettings) {
+    SceneDocument doc;
+    doc.reset(test::seedScene(), QString());
+    std::uint64_t revision = doc.contentRevision();
+    auto moves = [&](const char* what, const std::function<void(Scene&)>& change) {
+        EXPECT_TRUE(doc.edit(what, change)) << what;
+        const bool moved = doc.contentRevision() != revision;
+        revision = doc.contentRevision();
+        return moved;
+    };
+    EXPECT_FALSE(moves("size", [](Scene& s) { s.render.width = 100; }));
+    EXPECT_FALSE(moves("samples", [](Scene& s) { s.render.samplesPerPixel = 64; }));
+    EXPECT_FALSE(moves("depth and precision", [](Scene& s) {
+        s.render.maxDepth = 9;
+        s.render.precision = Precision::Double;
+    }));
+    EXPECT_TRUE(moves("camera", [](Scene& s) { s.camera.position.y += 1; }));
+    EXPECT_TRUE(moves("background", [](Scene& s) { s.background = {0.5, 0.5, 0.5}; }));
+    EXPECT_TRUE(moves("ambient", [](Scene& s) { s.ambient = {0.1, 0.1, 0.1}; }));
+    EXPECT_TRUE(moves("sphere", [](Scene& s) { s.spheres[0].radius *= 2; }));
+    EXPECT_TRUE(doc.editItem<Light>(0, "light", [](Light& l) { l.position.x += 1; }));
+    EXPECT_NE(doc.contentRevision(), revision);
+    revision = doc.contentRevision();
+    doc.undoStack()->undo();  // the light back: a change of what shows
+    EXPECT_NE(doc.contentRevision(), revision);
+    revision = doc.contentRevision();
+    doc.undoStack()->undo();  // the sphere
+    doc.undoStack()->undo();
+    doc.undoStack()->undo();
+    doc.undoStack()->undo();  // the camera
+    const std::uint64_t beforeSettings = doc.contentRevision();
+    doc.undoStack()->undo();  // depth and precision: settings alone
+    EXPECT_EQ(doc.contentRevision(), beforeSettings);
+    doc.reset(test::seedScene(), QString());
+    EXPECT_NE(doc.contentRevision(), beforeSettings);
 }
 
 TEST(SceneDocument, EditItem_InAGesture_IsOneUndoStepThatUndoesExactly) {

@@ -192,6 +192,36 @@ TEST_F(TradeoffViewTest, Predictions_BeforeMeasure_TimeFromTheLastRender_ErrorPo
     EXPECT_EQ(error->text(), QStringLiteral("Measure gives an error prediction"));
 }
 
+// A render's time measures the scene it showed. After a ball is moved, the
+// last render at these settings estimates the time, and says so, until the
+// view has rendered the moved ball; a change of samples alone keeps the
+// renders' times as measurements (checked before any event runs: the new
+// render and the probes start only then).
+TEST_F(TradeoffViewTest, Predictions_AfterAnEditOfTheScene_TheOldRenderNoLongerMeasures) {
+    auto* time = child<QLabel>("predictedTime");
+    ASSERT_TRUE(time->text().contains(QStringLiteral("measured: the last render")))
+        << time->text().toStdString();
+    const std::uint64_t before = doc->contentRevision();
+    ASSERT_TRUE(doc->edit(QStringLiteral("spp"), [](Scene& s) { s.render.samplesPerPixel = 8; }));
+    EXPECT_EQ(doc->contentRevision(), before);
+    ASSERT_TRUE(doc->edit(QStringLiteral("spp"), [](Scene& s) { s.render.samplesPerPixel = 1; }));
+    EXPECT_TRUE(time->text().contains(QStringLiteral("measured: the last render")))
+        << time->text().toStdString();
+
+    ASSERT_TRUE(doc->edit(QStringLiteral("move"), [](Scene& s) { s.spheres[0].center.x += 0.5; }));
+    EXPECT_NE(doc->contentRevision(), before);
+    EXPECT_TRUE(time->text().contains(QStringLiteral("estimated from the last render")))
+        << time->text().toStdString();
+    // Undo brings the ball back, but the revision moves on: the view renders again.
+    doc->undoStack()->undo();
+    EXPECT_GT(doc->contentRevision(), before + 1);
+    // Once the view has rendered the scene as it is, its time measures again.
+    EXPECT_TRUE(QTest::qWaitFor(
+        [&] { return time->text().contains(QStringLiteral("measured: the last render")); },
+        kTimeoutMs))
+        << time->text().toStdString();
+}
+
 // Issue 15, item 3: once the edits pause, small probe renders predict the
 // error, the rays and the time of the settings. The seed's error, checked
 // against a converged render; the time only where no render has measured it.

@@ -151,6 +151,10 @@ class SceneEditCommand : public QUndoCommand {
 
 void SceneDocument::applyDelta(const SceneDelta& delta, bool forward) {
     const Scene& head = forward ? delta.headAfter : delta.headBefore;
+    const bool settingsOnly = delta.headOnly() && head.camera == scene_.camera &&
+                              head.background == scene_.background &&
+                              head.ambient == scene_.ambient;
+    if (!settingsOnly) ++contentRevision_;
     scene_.camera = head.camera;
     scene_.render = head.render;
     scene_.background = head.background;
@@ -172,6 +176,7 @@ void SceneDocument::reset(const Scene& scene, const QString& filePath) {
     gestureDepth_ = 0;
     runOpen_ = false;
     scene_ = scene;
+    ++contentRevision_;
     resetSceneValid_ = !validateScene(scene_);
     filePath_ = filePath;
     emit filePathChanged(filePath_);

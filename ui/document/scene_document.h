@@ -11,8 +11,10 @@
 #include <type_traits>
 
 #include <QObject>
+
 #include <QString>
 #include <QUndoStack>
+#include <cstdint>
 
 #include "scene/scene.h"
 
@@ -35,6 +37,10 @@ class SceneDocument : public QObject {
     const Scene& scene() const { return scene_; }
     QString filePath() const { return filePath_; }  // empty for a new, unsaved scene
     bool isModified() const { return !undo_.isClean(); }
+    // Changes whenever what a render shows may have changed: any edit, undo,
+    // redo or reset but one of the render settings alone (size, samples,
+    // depth, precision). A render's time speaks for the revision it showed.
+    std::uint64_t contentRevision() const { return contentRevision_; }
     QUndoStack* undoStack() { return &undo_; }
 
     // Replaces the whole scene (New, Open) and forgets the undo history.
@@ -97,6 +103,7 @@ class SceneDocument : public QObject {
     int gestureDepth_ = 0;
     bool runOpen_ = false;  // the top step is a camera run that the next Join edit may extend
     bool resetSceneValid_ = false;  // what reset() was given passed validateScene
+    std::uint64_t contentRevision_ = 0;
 };
 
 // The list of a scene (const or not like it) that holds items of type T:

@@ -15,6 +15,8 @@
 #include <QStatusBar>
 #include <QTimer>
 
+#include <utility>
+
 #include "document/autosave.h"
 #include "document/scene_loading.h"
 #include "editor/export_job.h"
@@ -53,6 +55,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(&quality_, &QualityChoice::changed, this, &MainWindow::requestRender);
     connect(&doc_, &SceneDocument::sceneChanged, this,
             [this] { predictor_.sceneChanged(doc_.scene()); });
+    // Before the Render tab refreshes: the renders' times are of the old content.
+    connect(&doc_, &SceneDocument::sceneChanged, this, [this] {
+        if (std::exchange(renderedRevision_, doc_.contentRevision()) != doc_.contentRevision())
+            record_.contentChanged();
+    });
     connect(&predictor_, &ProbePredictor::predicted, &record_, &TradeoffRecord::setProbePrediction);
     view_ = new RenderView(&doc_, this);
     setCentralWidget(view_);

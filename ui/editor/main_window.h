@@ -11,6 +11,7 @@
 #include <QMainWindow>
 #include <QPointer>
 
+#include <cstdint>
 #include <memory>
 
 #include "document/quality_choice.h"
@@ -126,6 +127,7 @@ class MainWindow : public QMainWindow {
 
     SceneDocument doc_;
     TradeoffRecord record_;
+    std::uint64_t renderedRevision_ = 0;  // the document's content the record's renders are of
     QualityChoice quality_;
     ProbePredictor predictor_;  // the Render tab's predictions for scenes never measured
     RenderWorker worker_;

@@ -77,7 +77,7 @@ bool timeFromProbe(const RenderPrediction& r, const RenderSettings& want, ViewPa
 void timeFromRenders(const RenderSettings& want, const std::vector<EditorRender>& renders,
                      const RenderPrediction* probe, ViewPace pace, Prediction& p) {
     for (auto r = renders.rbegin(); r != renders.rend(); ++r)
-        if (r->settings == want) {
+        if (r->settings == want && !r->earlierContent) {
             p.seconds = r->seconds;
             p.timeSource = QObject::tr("measured: the last render at these settings");
             return;

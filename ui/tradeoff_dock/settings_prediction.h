@@ -21,6 +21,9 @@ struct EditorRender {
     RenderSettings settings;
     double seconds = 0.0;
     std::uint64_t rays = 0;
+    // Of the scene before an edit: its time estimates, but does not measure,
+    // a render of the scene now (TradeoffRecord::contentChanged()).
+    bool earlierContent = false;
 };
 
 // What a Measure run left: the grid's points against its reference.

@@ -13,6 +13,12 @@ void TradeoffRecord::addRender(const EditorRender& render) {
     emit changed();
 }
 
+void TradeoffRecord::contentChanged() {
+    bool marked = false;  // once per edit of many (a drag): nothing to refresh after the first
+    for (EditorRender& r : renders_) marked = !std::exchange(r.earlierContent, true) || marked;
+    if (marked) emit changed();
+}
+
 void TradeoffRecord::setMeasure(std::optional<MeasureResults> results) {
     measure_ = std::move(results);
     emit changed();

@@ -23,6 +23,9 @@ class TradeoffRecord : public QObject {
     static constexpr std::size_t kMaxRenders = 32;
 
     void addRender(const EditorRender& render);
+    // The scene's content changed (SceneDocument::contentRevision()): the
+    // renders so far no longer measure it, though they still estimate it.
+    void contentChanged();
     const std::vector<EditorRender>& renders() const { return renders_; }
 
     void setMeasure(std::optional<MeasureResults> results);

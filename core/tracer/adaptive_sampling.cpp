@@ -38,9 +38,9 @@ void estimateNearbyLargest(std::vector<TileSamplingState>& tiles,
         double largest = tiles[i].estimate.largest;
         for (int dy = -1; dy <= 1; ++dy)
             for (int dx = -1; dx <= 1; ++dx) {
-                const int c = column + dx, w = row + dy;
-                if ((dx == 0 && dy == 0) || c < 0 || w < 0 || c >= columns || w >= rows) continue;
-                const int j = tileOfCell[std::size_t(w) * columns + c];
+                const int x = column + dx, y = row + dy;  // the neighbour's cell
+                if ((dx == 0 && dy == 0) || x < 0 || y < 0 || x >= columns || y >= rows) continue;
+                const int j = tileOfCell[std::size_t(y) * columns + x];
                 if (j < 0 || tiles[i].samples <= 0) continue;
                 const double scale = std::sqrt(double(tiles[j].samples) / tiles[i].samples);
                 // Its pixels cannot raise what was found already.

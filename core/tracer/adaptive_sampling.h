@@ -60,7 +60,7 @@ struct AdaptiveSampling {
 // renders). Samples are chosen per tile: in tiles of 32 one pixel's estimate
 // took a thousand pixels to more samples; in tiles of 16, with the pixels two
 // beyond a tile vouching for it (kNearbyReach), every measured target of
-// docs/quality.md was met as before with 0.76 to 0.98 times the rays. 16 is
+// docs/quality.md was met as before with 0.76 to 1.03 times the rays. 16 is
 // still a whole packet (simd.h) with AVX-512.
 inline constexpr int kAdaptiveTileEdge = 16;
 // How far beyond its tile, in pixels, a pixel's estimate speaks for it
@@ -135,7 +135,7 @@ struct PixelLargest {
 };
 
 // Sets each tile's nearbyLargest: the largest of its pixels' estimates and
-// of those within nearbyReach() pixels outside it, a neighbour's carried to
+// of those within kNearbyReach pixels outside it, a neighbour's carried to
 // the tile's samples as errors go, with the inverse square root of the
 // samples. A pixel's estimate is one draw of a noisy quantity, small by
 // chance a quarter of the time; an edge or a caustic that crosses a tile

@@ -45,13 +45,13 @@ std::vector<Tile> spiralTiles(int width, int height, int size) {
     return tiles;
 }
 
-// The preview's block edge: a divisor of the tile edge, so that tiles hold
-// whole blocks and no block is traced twice.
 // The tile edge: an adaptive render's own (adaptive_sampling.h), else as asked.
 int tileEdgeOf(const RenderOptions& o) {
     return std::max(1, o.adaptive ? kAdaptiveTileEdge : o.tileSize);
 }
 
+// The preview's block edge: a divisor of the tile edge, so that tiles hold
+// whole blocks and no block is traced twice.
 int previewBlockOf(const RenderOptions& o) {
     const int tile = tileEdgeOf(o);
     int block = std::clamp(o.previewBlock, 1, tile);
@@ -399,7 +399,7 @@ class TileRenderer {
         if (!sums_.empty()) std::copy_n(sums.begin(), tile.w, sums_.begin() + at);
         const bool estimating = estimate && pass.lastSample > 1;
         // The row's own, in registers: the tile's is behind a pointer the
-        // image's stores might alias (a third of the loop's time went there).
+        // image's stores might alias, which kept its sums in memory.
         TileErrorEstimate rowEstimate;
         for (int i = 0; i < tile.w; ++i) {
             float* out = image_.pixel(tile.x + i, y);

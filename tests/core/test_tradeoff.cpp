@@ -213,16 +213,17 @@ TEST(DepthTruncation, Reference_WhereTheTruncationNeverSettles_StopsAtTheDeepest
 
 TEST(DepthTruncation, CancelledReference_EndsPromptly) {
     // scenes/field.json: 2,501 reflective spheres, whose reference at depth 16
-    // and 64 samples takes minutes. A user who cancels Measure waits a row.
+    // and 64 samples takes half a minute here, minutes under the sanitizers.
+    // A user who cancels Measure waits a row.
     const Scene field = loadScene(WHITTED_SCENES_DIR "/field.json");
     const auto start = std::chrono::steady_clock::now();
     const auto cancelledAfterASecond = [&] {
         return std::chrono::steady_clock::now() - start > std::chrono::seconds(1);
     };
-    const ReferenceRender ref = renderReference(field, 64, cancelledAfterASecond);
+    renderReference(field, 64, cancelledAfterASecond);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    EXPECT_LT(seconds, 60.0);  // without the stop: minutes
+    EXPECT_LT(seconds, 60.0);  // a row takes longer under the sanitizers
 }
 
 TEST(Tradeoff, FloatAndDoubleRows_DifferWithinTheNumericsBound) {

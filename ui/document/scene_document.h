@@ -7,14 +7,13 @@
 // Listeners re-read scene() on sceneChanged(); nothing else holds scene state.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <type_traits>
 
 #include <QObject>
-
 #include <QString>
 #include <QUndoStack>
-#include <cstdint>
 
 #include "scene/scene.h"
 

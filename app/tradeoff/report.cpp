@@ -240,7 +240,7 @@ std::string sceneSection(const SceneSummary& s) {
            << "`.\n\n";
     md << "![" << s.name << ": error against time](" << s.directory << "/plot.png)\n\n";
     const bool settled =
-        s.reference.render.maxDepth >= std::min(kMaxDepth, s.depthWithinTolerance + 2);
+        s.reference.render.maxDepth >= settledReferenceDepth(s.depthWithinTolerance);
     md << "Reference: double, " << s.reference.render.samplesPerPixel << " samples per pixel, max "
        << "depth " << s.reference.render.maxDepth
        << (settled ? " (two past the depth beyond which no pixel can change by more than 1/1024 "

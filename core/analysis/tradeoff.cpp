@@ -38,7 +38,7 @@ ReferenceRender renderReference(const Scene& scene, int samples, const StopPredi
     ref.scene = scene;
     ref.scene.render.precision = Precision::Double;
     ref.scene.render.samplesPerPixel = samples;
-    const int settled = std::min(kMaxDepth, depthWithinTolerance(scene, 1.0 / 1024.0, stop) + 2);
+    const int settled = settledReferenceDepth(depthWithinTolerance(scene, 1.0 / 1024.0, stop));
     ref.scene.render.maxDepth = std::min(settled, std::max(kDeepestChosen, scene.render.maxDepth));
     RenderResult result = render(ref.scene, oneShotOptions(), {}, stop);
     ref.image = std::move(result.image);

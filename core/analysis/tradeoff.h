@@ -4,6 +4,7 @@
 // editor's Measure action.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -44,6 +45,12 @@ struct TradeoffGrid {
 // kDeepestChosen or the scene's own max_depth, whichever is deeper: where
 // rays bounce in glass without losing weight the search returns kMaxDepth,
 // and a reference at depth 64 would never end.
+// Two past `depthWithinTolerance`, at most kMaxDepth: the depth past which a
+// reference would change nothing a picture shows.
+inline int settledReferenceDepth(int depthWithinTolerance) {
+    return std::min(kMaxDepth, depthWithinTolerance + 2);
+}
+
 struct ReferenceRender {
     Scene scene;  // the settings it was rendered with
     Image image;

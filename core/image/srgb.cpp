@@ -65,11 +65,11 @@ std::array<std::uint8_t, kBuckets> makeBucketCodes() {
 
 const std::array<std::uint8_t, kBuckets> kBucketCodes = makeBucketCodes();
 
-// srgbEncode() at the smallest float of each bucket, and of the bucket after
-// the last (1.0).
-std::array<float, kBuckets + 1> makeBucketStarts() {
-    std::array<float, kBuckets + 1> starts{};
-    for (int b = 0; b <= kBuckets; ++b) {
+// srgbEncode() at the smallest float of each bucket; the last bucket's is
+// 1.0, where the buckets of values below 1 end.
+std::array<float, kBuckets> makeBucketStarts() {
+    std::array<float, kBuckets> starts{};
+    for (int b = 0; b < kBuckets; ++b) {
         const std::uint32_t bits = static_cast<std::uint32_t>(b) << kBucketShift;
         float x;
         std::memcpy(&x, &bits, sizeof x);
@@ -78,7 +78,7 @@ std::array<float, kBuckets + 1> makeBucketStarts() {
     return starts;
 }
 
-const std::array<float, kBuckets + 1> kBucketStarts = makeBucketStarts();
+const std::array<float, kBuckets> kBucketStarts = makeBucketStarts();
 
 }  // namespace
 

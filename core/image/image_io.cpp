@@ -125,7 +125,7 @@ void writeImage(const Image& image, const fs::path& file, const ImageMetadata& m
     const void* pixels = image.rgb.data();
     if (!format.isFloat) {
         bytes.resize(image.rgb.size());
-        std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin(), srgbEncode8);
+        srgbEncode8(image.rgb.data(), image.rgb.size(), bytes.data());
         pixels = bytes.data();
     }
     encodeAndReplace(file, spec, pixels);

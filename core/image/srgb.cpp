@@ -1,8 +1,10 @@
 #include "image/srgb.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 namespace whitted {
 
@@ -93,14 +95,38 @@ float srgbEncodeFast(float linear) {
     return kBucketStarts[bucket] + t * (kBucketStarts[bucket + 1] - kBucketStarts[bucket]);
 }
 
-std::uint8_t srgbEncode8(float linear) {
-    if (!(linear > 0.0f)) return 0;  // NaN too
-    if (linear >= 1.0f) return 255;
+namespace {
+
+// kThresholds with no code above 255: the steps below then need no bound check.
+const std::array<float, 256> kStepThresholds = [] {
+    std::array<float, 256> t{};
+    std::copy(kThresholds.begin(), kThresholds.end(), t.begin());
+    t[255] = std::numeric_limits<float>::infinity();
+    return t;
+}();
+
+// Without branches, so that a row of them vectorizes: values outside (0, 1]
+// (and NaN) become 0 or 1, then the bucket's code and at most two steps.
+inline std::uint8_t encode8(float linear) {
     std::uint32_t bits;
     std::memcpy(&bits, &linear, sizeof bits);
+    bits = linear > 0.0f ? std::min(bits, 0x3f800000u) : 0u;
+    float clamped;
+    std::memcpy(&clamped, &bits, sizeof clamped);
     int code = kBucketCodes[bits >> kBucketShift];
-    while (code < 255 && linear >= kThresholds[code]) ++code;
+    code += clamped >= kStepThresholds[code];
+    code += clamped >= kStepThresholds[code];
     return static_cast<std::uint8_t>(code);
+}
+
+}  // namespace
+
+std::uint8_t srgbEncode8(float linear) {
+    return encode8(linear);
+}
+
+void srgbEncode8(const float* linear, std::size_t count, std::uint8_t* codes) {
+    for (std::size_t i = 0; i < count; ++i) codes[i] = encode8(linear[i]);
 }
 
 float srgbDecode8(std::uint8_t code) {

@@ -2,6 +2,7 @@
 // both show the same pixels (SPEC §5).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 namespace whitted {
@@ -17,6 +18,8 @@ float srgbEncodeFast(float linear);
 
 // Linear value to an 8-bit sRGB code, clamped and rounded to nearest.
 std::uint8_t srgbEncode8(float linear);
+// The same for `count` values at once, into `codes`.
+void srgbEncode8(const float* linear, std::size_t count, std::uint8_t* codes);
 
 // 8-bit sRGB code back to linear.
 float srgbDecode8(std::uint8_t code);

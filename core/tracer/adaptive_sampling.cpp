@@ -1,5 +1,6 @@
 #include "tracer/adaptive_sampling.h"
 
+#include <cstdint>
 #include <cstdlib>
 
 namespace whitted {
@@ -52,37 +53,38 @@ void estimateNearbyLargest(std::vector<TileSamplingState>& tiles,
 }
 
 TileErrorEstimate centreSampleEstimate(const Image& image, const PixelRect& tile) {
-    // A centre's error, in codes, per code of difference to a neighbour.
+    // A centre's error, in codes, per code of difference to a neighbour: under
+    // one code for a difference of one (counted as |e|), over one from two up
+    // (counted as e^2), so the pairs' squared errors are two integer sums.
+    static_assert(kNeighbourShare >= 0.25 && kNeighbourShare < 1.0);
     static const double errorPerDifference = std::sqrt(kNeighbourShare);
-    // The 8-bit codes the user sees, each looked up once, and what each
-    // difference of codes adds, from a table: srgbCode()'s std::pow and a
-    // codeSquaredError() per pair would cost more than tracing the centres of
-    // a simple scene.
-    static const std::vector<double> squaredOfDifference = [] {
-        std::vector<double> table(256);
-        for (int d = 0; d < 256; ++d) table[d] = codeSquaredError(errorPerDifference * d);
-        return table;
-    }();
-    const int w = tile.width, h = tile.height;
-    std::vector<int> codes(std::size_t(w) * h * 3);
+    // The 8-bit codes the user sees, each looked up once. Integer sums, not a
+    // codeSquaredError() per pair: summed in doubles, the pairs took twice as
+    // long as tracing the centres of a simple scene.
+    const int w = tile.width, h = tile.height, stride = 3 * w;
+    std::vector<std::uint8_t> codes(std::size_t(stride) * h);
+    for (int y = 0; y < h; ++y)
+        srgbEncode8(image.pixel(tile.x, tile.y + y), stride,
+                    codes.data() + std::size_t(y) * stride);
+    std::int64_t squares = 0;  // of every difference
+    int ones = 0, largest = 0;
+    auto pairs = [&](const std::uint8_t* a, const std::uint8_t* b, int count) {
+        for (int k = 0; k < count; ++k) {
+            const int d = std::abs(int(a[k]) - int(b[k]));
+            squares += d * d;
+            ones += d == 1;
+            largest = std::max(largest, d);
+        }
+    };
     for (int y = 0; y < h; ++y) {
-        const float* row = image.pixel(tile.x, tile.y + y);
-        for (int k = 0; k < 3 * w; ++k) codes[std::size_t(y) * 3 * w + k] = srgbEncode8(row[k]);
+        const std::uint8_t* row = codes.data() + std::size_t(y) * stride;
+        pairs(row, row + 3, stride - 3);                  // right neighbours
+        if (y + 1 < h) pairs(row, row + stride, stride);  // lower neighbours
     }
     TileErrorEstimate estimate;
-    int largest = 0;
-    auto pair = [&](int a, int b) {
-        const int d = std::abs(a - b);
-        estimate.squaredSum += squaredOfDifference[d];
-        largest = std::max(largest, d);
-        ++estimate.values;
-    };
-    for (int y = 0; y < h; ++y)
-        for (int k = 0; k < 3 * w; ++k) {
-            const std::size_t at = std::size_t(y) * 3 * w + k;
-            if (k + 3 < 3 * w) pair(codes[at], codes[at + 3]);
-            if (y + 1 < h) pair(codes[at], codes[at + 3 * w]);
-        }
+    estimate.values = long(h) * (stride - 3) + long(h - 1) * stride;
+    estimate.squaredSum =
+        kNeighbourShare * double(squares - ones) + errorPerDifference * double(ones);
     estimate.largest = errorPerDifference * largest;
     if (estimate.values == 0) estimate.add(255.0);
     return estimate;

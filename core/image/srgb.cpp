@@ -84,7 +84,9 @@ const std::array<float, kBuckets> kBucketStarts = makeBucketStarts();
 
 }  // namespace
 
-float srgbEncodeFast(float linear) {
+namespace {
+
+inline float encodeFast(float linear) {
     if (!(linear > 0.0f)) return 0.0f;
     if (linear >= 1.0f) return 1.0f;
     std::uint32_t bits;
@@ -93,6 +95,16 @@ float srgbEncodeFast(float linear) {
     // Within a bucket the mantissa's low bits step the value evenly.
     const float t = float(bits & ((1u << kBucketShift) - 1)) * (1.0f / float(1u << kBucketShift));
     return kBucketStarts[bucket] + t * (kBucketStarts[bucket + 1] - kBucketStarts[bucket]);
+}
+
+}  // namespace
+
+float srgbEncodeFast(float linear) {
+    return encodeFast(linear);
+}
+
+void srgbEncodeFast(const float* linear, std::size_t count, float* encoded) {
+    for (std::size_t i = 0; i < count; ++i) encoded[i] = encodeFast(linear[i]);
 }
 
 namespace {

@@ -15,6 +15,8 @@ float srgbEncode(float linear);
 // 1e-5 of the formula (a four-hundredth of an 8-bit code), at a tenth of
 // std::pow's cost. For estimates taken per pixel and pass (adaptive_sampling.h).
 float srgbEncodeFast(float linear);
+// The same for `count` values at once, into `encoded`.
+void srgbEncodeFast(const float* linear, std::size_t count, float* encoded);
 
 // Linear value to an 8-bit sRGB code, clamped and rounded to nearest.
 std::uint8_t srgbEncode8(float linear);

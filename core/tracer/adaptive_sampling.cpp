@@ -90,6 +90,28 @@ TileErrorEstimate centreSampleEstimate(const Image& image, const PixelRect& tile
     return estimate;
 }
 
+TileErrorEstimate halvesEstimate(const float* before, const float* after, int pixels,
+                                 float* largestOfPixel) {
+    constexpr int kChunk = 16;  // pixels: a tile's row, on the stack
+    float codesBefore[3 * kChunk], codesAfter[3 * kChunk];
+    TileErrorEstimate estimate;
+    for (int start = 0; start < pixels; start += kChunk) {
+        const int count = std::min(kChunk, pixels - start);
+        srgbEncodeFast(before + 3 * start, 3 * count, codesBefore);
+        srgbEncodeFast(after + 3 * start, 3 * count, codesAfter);
+        for (int i = 0; i < count; ++i) {
+            double largest = 0.0;
+            for (int c = 0; c < 3; ++c) {
+                const double e =
+                    255.0 * double(codesBefore[3 * i + c]) - 255.0 * double(codesAfter[3 * i + c]);
+                largest = std::max(largest, estimate.add(e));
+            }
+            if (largestOfPixel) largestOfPixel[start + i] = float(largest);
+        }
+    }
+    return estimate;
+}
+
 double estimatedPictureMse(const std::vector<TileSamplingState>& tiles) {
     double weighted = 0.0, pixels = 0.0;
     for (const TileSamplingState& t : tiles) {

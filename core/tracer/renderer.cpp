@@ -323,6 +323,7 @@ class TileRenderer {
     struct Row {
         std::vector<Vec<T>> radiance;
         std::vector<glm::dvec3> sums;
+        std::vector<float> firstHalf;  // an adaptive pass's picture before it
     };
 
     // The image is float whatever the precision: radiance beyond the largest
@@ -398,23 +399,13 @@ class TileRenderer {
         }
         if (!sums_.empty()) std::copy_n(sums.begin(), tile.w, sums_.begin() + at);
         const bool estimating = estimate && pass.lastSample > 1;
-        // The row's own, in registers: the tile's is behind a pointer the
-        // image's stores might alias, which kept its sums in memory.
-        TileErrorEstimate rowEstimate;
-        for (int i = 0; i < tile.w; ++i) {
-            float* out = image_.pixel(tile.x + i, y);
-            if (!estimating) {
-                storeMean(out, sums[i], pass.lastSample);
-                continue;
-            }
-            const float firstHalf[3] = {out[0], out[1], out[2]};
-            storeMean(out, sums[i], pass.lastSample);
-            double largest = 0.0;
-            for (int c = 0; c < 3; ++c)
-                largest = std::max(largest, rowEstimate.addHalves(firstHalf[c], out[c]));
-            if (!pixelLargest_.codes.empty()) pixelLargest_.at(tile.x + i, y) = float(largest);
-        }
-        if (estimating) estimate->add(rowEstimate);
+        float* out = image_.pixel(tile.x, y);
+        // The picture after the tile's last pass is the first half.
+        if (estimating) row.firstHalf.assign(out, out + 3 * tile.w);
+        for (int i = 0; i < tile.w; ++i) storeMean(out + 3 * i, sums[i], pass.lastSample);
+        if (!estimating) return;
+        float* largest = pixelLargest_.codes.empty() ? nullptr : &pixelLargest_.at(tile.x, y);
+        estimate->add(halvesEstimate(row.firstHalf.data(), out, tile.w, largest));
     }
 
     // One camera ray through the middle of each block, stored as the

@@ -61,5 +61,26 @@ TEST(AdaptiveSampling, ANeighbourWithFewerSamplesSpeaksForLess) {
     EXPECT_EQ(tilesToRefine(t.states, AdaptiveSampling{1e9, 20.0, 1024}), std::vector<int>{0});
 }
 
+// The estimate of a row: codes, not linear values; under one code a
+// difference counts as itself (the chance it changes the rounded code), above
+// as its square; 20 pixels, more than the 16 taken at a time.
+TEST(AdaptiveSampling, HalvesEstimateOfARow_InCodes_EachPixelsLargest) {
+    std::vector<float> before(3 * 20, 0.5f), after(3 * 20, 0.5f);
+    after[3 * 17 + 1] = 0.0f;  // pixel 17's green: 187.52 codes from 0.5
+    before[3 * 2] = 0.503f;    // pixel 2's red: about half a code above
+    std::vector<float> largest(20, -1.0f);
+    const TileErrorEstimate e = halvesEstimate(before.data(), after.data(), 20, largest.data());
+    const double halfCode = 255.0 * (srgbEncode(before[6]) - srgbEncode(0.5f));
+    EXPECT_NEAR(halfCode, 0.5, 0.1);
+    EXPECT_EQ(e.values, 60);
+    EXPECT_NEAR(e.largest, 187.52, 0.01);
+    // The half code counts as itself, not squared.
+    EXPECT_NEAR(e.squaredSum - e.largest * e.largest, halfCode, 1e-6);
+    EXPECT_NEAR(largest[17], 187.52, 0.01);
+    EXPECT_NEAR(largest[2], halfCode, 0.001);
+    EXPECT_EQ(largest[0], 0.0f);
+    EXPECT_EQ(largest[19], 0.0f);
+}
+
 }  // namespace
 }  // namespace whitted

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -60,6 +61,25 @@ TEST(Srgb, Encode8ClampsAndHandlesOddInputs) {
 TEST(Srgb, DecodeThenEncodeGivesTheSameCode) {
     for (int code = 0; code < 256; ++code)
         EXPECT_EQ(srgbEncode8(srgbDecode8(static_cast<std::uint8_t>(code))), code) << code;
+}
+
+// The row forms give what the single ones give, value for value, odd inputs too.
+TEST(Srgb, RowFormsEqualTheSingleOnes) {
+    std::vector<float> values = {-1.0f, 0.0f, std::nanf(""), 1.0f, 7.5f, INFINITY, 0.5f};
+    for (std::uint32_t bits = 0; bits <= 0x3f800000u; bits += 1009) {
+        float x;
+        std::memcpy(&x, &bits, sizeof x);
+        values.push_back(x);
+    }
+    std::vector<std::uint8_t> codes(values.size());
+    std::vector<float> encoded(values.size());
+    srgbEncode8(values.data(), values.size(), codes.data());
+    srgbEncodeFast(values.data(), values.size(), encoded.data());
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        ASSERT_EQ(codes[i], srgbEncode8(values[i])) << "x = " << values[i];
+        ASSERT_EQ(encoded[i], srgbEncodeFast(values[i])) << "x = " << values[i];
+    }
+    EXPECT_GT(values.size(), 1000000u);
 }
 
 }  // namespace

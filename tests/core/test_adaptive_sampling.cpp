@@ -75,9 +75,9 @@ TEST(AdaptiveSampling, HalvesEstimateOfARow_InCodes_EachPixelsLargest) {
     EXPECT_EQ(e.values, 60);
     EXPECT_NEAR(e.largest, 187.52, 0.01);
     // The half code counts as itself, not squared.
-    EXPECT_NEAR(e.squaredSum - e.largest * e.largest, halfCode, 1e-6);
+    EXPECT_NEAR(e.squaredSum - e.largest * e.largest, halfCode, 0.005);
     EXPECT_NEAR(largest[17], 187.52, 0.01);
-    EXPECT_NEAR(largest[2], halfCode, 0.001);
+    EXPECT_NEAR(largest[2], halfCode, 0.005);  // srgbEncodeFast()'s codes
     EXPECT_EQ(largest[0], 0.0f);
     EXPECT_EQ(largest[19], 0.0f);
 }

@@ -16,7 +16,10 @@ namespace whitted {
 // passes over every sphere use it.
 inline int resolveThreadCount(int requested) {
     if (requested > 0) return requested;
-    return std::max(1u, std::thread::hardware_concurrency());
+    // Asked once: libstdc++ reads /sys for it, and planning a render asks for
+    // each of its small probes.
+    static const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+    return cores;
 }
 
 // Spheres per task of a pass over every sphere: enough work per task that

@@ -117,48 +117,5 @@ TEST(QualityTarget, FloatAgainstDouble_MeasuredWithSamplesWhereTheCentresDifferM
     EXPECT_EQ(planQuality(seed, finalQuality()).precisionSamples, 1);
 }
 
-// The largest difference between `scene` at `depth` and three levels deeper,
-// with `samples` a pixel in the scene's precision, in codes.
-double largestDepthDifference(Scene scene, int depth, int samples) {
-    scene.render.samplesPerPixel = samples;
-    scene.render.maxDepth = depth;
-    const Image shallow = render(scene, oneShotOptions()).image;
-    scene.render.maxDepth = depth + 3;
-    return measureError(shallow, render(scene, oneShotOptions()).image).largest;
-}
-
-// On seed.json at Preview the pixels' centres of a probe at depth 3 differ
-// from depth 6 by 28 codes in places (a reflection's edge, in a sliver of a
-// pixel), over the depth's 16; a render of many samples shares that out over
-// the pixel. The plan measures those pixels again with 8 samples and takes a
-// depth the samples bear out, shallower than the centres alone would take.
-TEST(QualityTarget, DepthLargestError_MeasuredWithSamplesWhereTheCentresShowASliver) {
-    Scene seed = loadScene(WHITTED_SCENES_DIR "/seed.json");
-    seed.render.width = 320;
-    seed.render.height = 240;
-    seed.render.precision = Precision::Float;
-    const QualityPlan plan = planQuality(seed, previewQuality());
-    EXPECT_EQ(plan.depthLargestSamples, 8);
-    EXPECT_NE(plan.why.find("codes at most at 8 samples a pixel"), std::string::npos) << plan.why;
-    // A plan for one sample a pixel judges by the centres, which that render shows.
-    const QualityPlan centresOnly = planQuality(seed, previewQuality(), 1);
-    EXPECT_EQ(centresOnly.depthLargestSamples, 1);
-    EXPECT_GT(centresOnly.maxDepth, plan.maxDepth);
-    // At the probe's size: the centres over the depth's share, 256 samples within it.
-    Scene probe = seed;
-    probe.render.width = plan.probeWidth;
-    probe.render.height = plan.probeHeight;
-    const double share = kDepthShareOfLargest * *previewQuality().largestCodes;
-    const double atCentres = largestDepthDifference(probe, plan.maxDepth, 1);
-    const double atMany = largestDepthDifference(probe, plan.maxDepth, 256);
-    std::printf("depth %d against %d: centres %.1f, planned %.1f, 256 samples %.1f codes\n",
-                plan.maxDepth, plan.maxDepth + 3, atCentres, plan.depthLargest, atMany);
-    EXPECT_GT(atCentres, share);
-    EXPECT_LE(plan.depthLargest, share);
-    EXPECT_LE(atMany, share);
-    // And the render to the plan meets the target.
-    EXPECT_TRUE(checkQuality(seed, previewQuality(), convergedReference(seed)).met);
-}
-
 }  // namespace
 }  // namespace whitted

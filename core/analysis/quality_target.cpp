@@ -8,7 +8,6 @@
 
 #include "analysis/depth_truncation.h"
 #include "analysis/tradeoff.h"
-#include "image/image_compare.h"
 #include "image/image_error.h"
 #include "tracer/renderer.h"
 
@@ -87,23 +86,20 @@ class ProbeRenders {
         return byDepth_.emplace(depth, trace(depth, plan)).first->second;
     }
 
-    // The probe at `depth` with `samples` a pixel (1: its centres), in
-    // `precision`; only the `pixels` given, unless none are.
-    Image render(int depth, QualityPlan& plan, Precision precision, int samples = 1,
-                 const std::vector<PixelRect>& pixels = {}) {
+    // The probe at `depth` with `samples` a pixel (1: its centres), in `precision`.
+    Image render(int depth, QualityPlan& plan, Precision precision, int samples = 1) {
         const RenderSettings own = probe_.render;
         probe_.render.precision = precision;
         probe_.render.samplesPerPixel = samples;
-        Image image = trace(depth, plan, pixels);
+        Image image = trace(depth, plan);
         probe_.render = own;
         return image;
     }
 
   private:
-    Image trace(int depth, QualityPlan& plan, const std::vector<PixelRect>& pixels = {}) {
+    Image trace(int depth, QualityPlan& plan) {
         probe_.render.maxDepth = depth;
         RenderOptions options = oneShotOptions();
-        options.regions = pixels;
         options.bvhCache = &cache_;
         options.sceneValidated = validated_;  // the first render throws if it is not valid
         options.threads = oneThread_ ? 1 : 0;
@@ -131,48 +127,9 @@ DepthError depthError(const Image& image, const Image& reference) {
     return {e.rmseSrgb8 * e.rmseSrgb8, e.largest};
 }
 
-// The pixels where two probes differ by more than `codes`, in runs along
-// rows, and the largest difference of the others.
-struct PixelsOver {
-    std::vector<PixelRect> runs;
-    double largestElsewhere = 0.0;
-};
-
-PixelsOver pixelsOver(const Image& image, const Image& reference, double codes) {
-    PixelsOver over;
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) {
-            const double d = 255.0 * displayDifference(image.pixel(x, y), reference.pixel(x, y));
-            if (d <= codes) {
-                over.largestElsewhere = std::max(over.largestElsewhere, d);
-                continue;
-            }
-            PixelRect* last = over.runs.empty() ? nullptr : &over.runs.back();
-            if (last && last->y == y && last->x + last->width == x)
-                ++last->width;
-            else
-                over.runs.push_back({x, y, 1, 1});
-        }
-    return over;
-}
-
 bool depthFits(const DepthError& e, const QualityTarget& t) {
     if (e.mse > kDepthShareOfMse * allowedMse(t.psnrDb)) return false;
     return !t.largestCodes || e.largest <= kDepthShareOfLargest * *t.largestCodes;
-}
-
-// Whether the depth's probe at the pixels' centres fails only by its largest
-// error, and by no more than the whole limit: then, as for the precision
-// (planPrecision()), the centres may show whole a difference in a sliver of a
-// pixel that a render of several samples shares out over the pixel, and the
-// largest error is measured again with kPrecisionSamples a pixel. (A render
-// to a target with a limit on the largest error takes two samples a pixel or
-// more, unless it may take only one.) A centre off by more than the whole
-// limit was seldom so thin a sliver (field.json at Preview: 67.6 codes, 39.2
-// with samples, 16 allowed), and the samples cost eight centres' probes.
-bool largestAtCentresOnly(const DepthError& e, const QualityTarget& t, double mseShare) {
-    return t.largestCodes && e.mse <= mseShare &&
-           e.largest > kDepthShareOfLargest * *t.largestCodes && e.largest <= *t.largestCodes;
 }
 
 // Chooses (or, when given, measures) the depth, filling the plan's depth
@@ -182,30 +139,14 @@ bool largestAtCentresOnly(const DepthError& e, const QualityTarget& t, double ms
 // the look-ahead is smaller still, unless rays bounce without losing weight
 // (depthWithinTolerance() follows those much further, but at a cost of
 // minutes on a field of glass balls, too much for planning a render).
-// A depth that fails at the pixels' centres only by its largest error is
-// judged by its largest error with samples (largestAtCentresOnly()).
-void planDepth(ProbeRenders& probes, std::optional<int> given, int maxSamples, QualityPlan& plan) {
+void planDepth(ProbeRenders& probes, std::optional<int> given, QualityPlan& plan) {
     plan.probeWidth = probes.scene().render.width;
     plan.probeHeight = probes.scene().render.height;
-    const double mseShare = kDepthShareOfMse * allowedMse(plan.target.psnrDb);
     auto measure = [&](int depth) {
         plan.maxDepth = depth;
         plan.referenceDepth = std::min(kMaxDepth, depth + kLookAhead);
-        DepthError e = depthError(probes.at(depth, plan), probes.at(plan.referenceDepth, plan));
-        plan.depthLargestSamples = 1;
-        if (maxSamples > 1 && largestAtCentresOnly(e, plan.target, mseShare)) {
-            // Only the pixels over the depth's share are rendered again.
-            const PixelsOver over =
-                pixelsOver(probes.at(depth, plan), probes.at(plan.referenceDepth, plan),
-                           kDepthShareOfLargest * *plan.target.largestCodes);
-            const Precision own = probes.scene().render.precision;
-            auto sampled = [&](int at) {
-                return probes.render(at, plan, own, kPrecisionSamples, over.runs);
-            };
-            e.largest = std::max(over.largestElsewhere,
-                                 depthError(sampled(depth), sampled(plan.referenceDepth)).largest);
-            plan.depthLargestSamples = kPrecisionSamples;
-        }
+        const DepthError e =
+            depthError(probes.at(depth, plan), probes.at(plan.referenceDepth, plan));
         plan.depthMse = e.mse;
         plan.depthLargest = e.largest;
         return e;
@@ -219,6 +160,7 @@ void planDepth(ProbeRenders& probes, std::optional<int> given, int maxSamples, Q
     // MSE share whose largest error is within the whole limit, else the first
     // within the MSE share, else the deepest; the plan then says what is short.
     std::optional<int> withinLimit, withinMse;
+    const double mseShare = kDepthShareOfMse * allowedMse(plan.target.psnrDb);
     for (int depth = 0; depth <= kDeepestPlanned; ++depth) {
         const DepthError e = measure(depth);
         if (depthFits(e, plan.target)) return;
@@ -265,10 +207,7 @@ std::string depthWhy(const QualityPlan& p) {
     why += format(" (the target allows %.3g)", allowedMse(p.target.psnrDb));
     if (p.target.largestCodes)
         why +=
-            format(" and %.3g codes at most", p.depthLargest) +
-            (p.depthLargestSamples > 1 ? format(" at %.0f samples a pixel", p.depthLargestSamples)
-                                       : std::string()) +
-            format(" (limit %.3g)", *p.target.largestCodes);
+            format(" and %.3g codes at most (limit %.3g)", p.depthLargest, *p.target.largestCodes);
     if (p.depthShort)
         why += "\nno depth up to " + std::to_string(kDeepestPlanned) +
                " leaves the samples their share: rays trapped in glass or between mirrors "
@@ -363,7 +302,7 @@ QualityPlan planQuality(const Scene& scene, const QualityTarget& target, int max
     // A stopped probe is an empty picture: the depth search then ends at
     // once, and the plan is marked as stopped below.
     ProbeRenders probes(scene, target.psnrDb, stop);
-    planDepth(probes, depth, maxSamples, plan);
+    planDepth(probes, depth, plan);
     plan.sampling.maxSamples = std::max(1, maxSamples);
     plan.sampling.centresFirst = !target.largestCodes && target.psnrDb <= kCentresFirstUpToDb;
     planPrecision(probes, plan);

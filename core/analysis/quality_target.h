@@ -62,14 +62,13 @@ inline constexpr double kCentresFirstUpToDb = 30.0;
 struct QualityPlan {
     QualityTarget target;
     int maxDepth = 0;
-    bool depthGiven = false;      // the caller fixed the depth; it was measured, not chosen
-    bool depthShort = false;      // no depth the plan would go to cuts off little enough
-    int referenceDepth = 0;       // the deep render the depths were measured against
-    double depthMse = 0.0;        // the chosen depth's error against it, codes^2, in the probe
-    double depthLargest = 0.0;    // codes
-    int depthLargestSamples = 1;  // a pixel, in the probes that measured depthLargest
-    double precisionMse = 0.0;    // float against double at that depth, codes^2, in the probe
-    int precisionSamples = 1;     // a pixel, in the probe that measured it
+    bool depthGiven = false;    // the caller fixed the depth; it was measured, not chosen
+    bool depthShort = false;    // no depth the plan would go to cuts off little enough
+    int referenceDepth = 0;     // the deep render the depths were measured against
+    double depthMse = 0.0;      // the chosen depth's error against it, codes^2, in the probe
+    double depthLargest = 0.0;  // codes
+    double precisionMse = 0.0;  // float against double at that depth, codes^2, in the probe
+    int precisionSamples = 1;   // a pixel, in the probe that measured it
     int probeWidth = 0, probeHeight = 0;
     std::uint64_t probeRays = 0;  // traced to choose the depth: part of the render's cost
     AdaptiveSampling sampling;

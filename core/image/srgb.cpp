@@ -117,9 +117,8 @@ const std::array<float, 256> kStepThresholds = [] {
     return t;
 }();
 
-// Without branches on the value, which mispredicted on the rows of a
-// picture: values outside (0, 1] (and NaN) become 0 or 1, then the bucket's
-// code and at most two steps. (GCC 12 does not vectorize it: the table is of
+// Without branches on the value: values outside (0, 1] (and NaN) become 0 or
+// 1, then the bucket's code and at most two steps. (GCC 12 does not vectorize it: the table is of
 // bytes; a table of ints, which it gathers, was no faster.)
 inline std::uint8_t encode8(float linear) {
     std::uint32_t bits;

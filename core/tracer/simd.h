@@ -137,7 +137,7 @@ inline V floorBySnapping(const V& v) {
     V r = (magnitude + kWhole) - kWhole;
     r = v < T(0) ? -r : r;
     r = r > v ? r - T(1) : r;
-    return (magnitude < kWhole) & (r != v) ? r : v;
+    return ((magnitude < kWhole) & (r != v)) ? r : v;
 }
 
 template <typename V>

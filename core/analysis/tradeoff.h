@@ -40,17 +40,17 @@ struct TradeoffGrid {
     double minSeconds = 0.2;
 };
 
-// The reference: the scene in double with `samples` samples per pixel and a
-// max_depth of depthWithinTolerance(scene) + 2, capped at kMaxDepth and at
-// kDeepestChosen or the scene's own max_depth, whichever is deeper: where
-// rays bounce in glass without losing weight the search returns kMaxDepth,
-// and a reference at depth 64 would never end.
 // Two past `depthWithinTolerance`, at most kMaxDepth: the depth past which a
 // reference would change nothing a picture shows.
 inline int settledReferenceDepth(int depthWithinTolerance) {
     return std::min(kMaxDepth, depthWithinTolerance + 2);
 }
 
+// The reference: the scene in double with `samples` samples per pixel and a
+// max_depth of settledReferenceDepth(depthWithinTolerance(scene)), capped at
+// kDeepestChosen or the scene's own max_depth, whichever is deeper: where
+// rays bounce in glass without losing weight the search returns kMaxDepth,
+// and a reference at depth 64 would never end.
 struct ReferenceRender {
     Scene scene;  // the settings it was rendered with
     Image image;

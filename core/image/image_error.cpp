@@ -29,7 +29,7 @@ ErrorStats measureError(const Image& image, const Image& reference) {
     const int w = reference.width, h = reference.height;
     // A row of each at a time: the image's as the reference's pixels see it,
     // and both in 8-bit codes.
-    std::vector<float> stretched(3 * std::size_t(w));
+    std::vector<float> stretched(image.width != w ? 3 * std::size_t(w) : 0);
     std::vector<std::uint8_t> codesA(3 * std::size_t(w)), codesB(3 * std::size_t(w));
     for (int y = 0; y < h; ++y) {
         // The image pixel covering this reference pixel, as a stretched view shows it.

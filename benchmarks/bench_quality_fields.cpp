@@ -1,0 +1,110 @@
+// Rendering to Preview and Final on generated fields that nothing was tuned
+// on (issue 15): other counts, spreads and seeds than test_quality_target's
+// and bench_quality's. For each render: the depth chosen, the largest error
+// the plan's probe showed for it, and what the render measured against a
+// converged reference (double, 512 samples). Where a target is missed, the
+// worst pixel is examined: what the chosen depth cuts off there, at the
+// picture's size with 64 samples, and what the probe's pixel centre over it
+// showed. A large cut where the probe showed none is a feature too small for
+// the probe to see.
+// Usage: bench_quality_fields [FIRST LAST [WIDTH]] (default 1 8 160; the
+// height is three quarters of the width). Prints a Markdown table.
+#include <cstdio>
+#include <cstdlib>
+
+#include "analysis/quality_check.h"
+#include "image/image_compare.h"
+#include "sphere_field.h"
+#include "tracer/renderer.h"
+
+using namespace whitted;
+
+namespace {
+
+Scene field(int seed, int width) {
+    FieldOptions o;
+    o.count = 40 + 37 * (seed % 9);
+    o.seed = 500 + std::uint32_t(seed);
+    o.halfWidth = 2.0 + seed % 4;
+    o.depth = 5.0 + 1.5 * (seed % 5);
+    Scene scene = sphereField(o);
+    scene.render.width = width;
+    scene.render.height = width * 3 / 4;
+    return scene;
+}
+
+Image renderAt(Scene scene, int depth, int samples) {
+    scene.render.maxDepth = depth;
+    scene.render.samplesPerPixel = samples;
+    return render(scene, oneShotOptions()).image;
+}
+
+struct Pixel {
+    int x = 0, y = 0;
+    double codes = 0.0;
+};
+
+Pixel worstPixel(const Image& image, const Image& reference) {
+    Pixel worst;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const double d = 255.0 * displayDifference(image.pixel(x, y), reference.pixel(x, y));
+            if (d > worst.codes) worst = {x, y, d};
+        }
+    return worst;
+}
+
+double codesAt(const Image& a, const Image& b, int x, int y) {
+    return 255.0 * displayDifference(a.pixel(x, y), b.pixel(x, y));
+}
+
+// What the chosen depth cuts off at the worst pixel, with samples at the
+// picture's size, and what the probe's centre over that pixel showed.
+std::string whyMissed(const Scene& scene, const QualityCheck& c, const Image& reference) {
+    const QualityPlan& p = c.plan;
+    const Image shallow = renderAt(scene, p.maxDepth, 64);
+    const Pixel worst = worstPixel(shallow, reference);
+    const double cut = codesAt(shallow, renderAt(scene, p.referenceDepth, 64), worst.x, worst.y);
+    Scene probe = scene;
+    probe.render.width = p.probeWidth;
+    probe.render.height = p.probeHeight;
+    const int px = worst.x * p.probeWidth / scene.render.width;
+    const int py = worst.y * p.probeHeight / scene.render.height;
+    const double atCentre =
+        codesAt(renderAt(probe, p.maxDepth, 1), renderAt(probe, p.referenceDepth, 1), px, py);
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "pixel (%d, %d): depth %d against %d there %.0f codes at 64 samples, "
+                  "%.0f at the probe's centre",
+                  worst.x, worst.y, p.maxDepth, p.referenceDepth, cut, atCentre);
+    return text;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const int first = argc > 2 ? std::atoi(argv[1]) : 1;
+    const int last = argc > 2 ? std::atoi(argv[2]) : 8;
+    const int width = argc > 3 ? std::atoi(argv[3]) : 160;
+    std::printf("| field | target | depth | probe's largest | measured | met | why missed |\n");
+    std::printf("|---|---|---|---|---|---|---|\n");
+    int renders = 0, met = 0;
+    for (int seed = first; seed <= last; ++seed) {
+        const Scene scene = field(seed, width);
+        const Image reference = convergedReference(scene);
+        for (const QualityTarget& target : {previewQuality(), finalQuality()}) {
+            const QualityCheck c = checkQuality(scene, target, reference);
+            ++renders;
+            met += c.met;
+            std::printf(
+                "| seed %d, %zu balls | %s | %d%s | %.1f codes | %.1f dB, %.1f codes | %s | %s |\n",
+                seed, scene.spheres.size() - 1, target.name.c_str(), c.plan.maxDepth,
+                c.plan.depthShort ? "*" : "", c.plan.depthLargest, c.error.psnrSrgb8,
+                c.error.largest, c.met ? "yes" : "**no**",
+                c.met ? "" : whyMissed(scene, c, reference).c_str());
+            std::fflush(stdout);
+        }
+    }
+    std::printf("\n%d of %d renders met their target (%dx%d; * no depth up to the cap fits)\n", met,
+                renders, width, width * 3 / 4);
+}

@@ -17,6 +17,7 @@ nlohmann::ordered_json qualityJson(const QualityPlan& plan, const AdaptiveOutcom
     q["reference_depth"] = plan.referenceDepth;
     q["depth_mse_codes2"] = plan.depthMse;
     q["depth_max_error_codes"] = plan.depthLargest;
+    q["depth_measured_at_picture_size"] = plan.depthAtPictureSize;
     q["precision_mse_codes2"] = plan.precisionMse;
     q["sampling_mse_limit_codes2"] = plan.sampling.allowedMse;
     q["sampling_max_error_limit_codes"] = plan.sampling.allowedLargest;

@@ -10,9 +10,13 @@
 // render of pixel centres, differs from one three levels deeper by at most a
 // tenth of M and a quarter of the largest error; the sampling gets what is
 // left with a margin (kSamplingShare of it; docs/tradeoff.md measures how
-// often that is enough). Both errors are measured, not bounded: the estimate
-// of what the depth cuts off comes from the probe, that of the sampling from
-// the render's own samples.
+// often that is enough). Where the target limits the largest error, the
+// probe's depth is checked in one-sample renders of the whole picture (a
+// feature of a few pixels can lie between the probe's centres), and a depth
+// whose centres fail only by the largest error is judged with samples of the
+// picture's pixels there. Both errors are measured, not bounded: the estimate
+// of what the depth cuts off comes from the probe and the picture, that of
+// the sampling from the render's own samples.
 #pragma once
 
 #include <cstdint>
@@ -62,11 +66,14 @@ inline constexpr double kCentresFirstUpToDb = 30.0;
 struct QualityPlan {
     QualityTarget target;
     int maxDepth = 0;
-    bool depthGiven = false;    // the caller fixed the depth; it was measured, not chosen
-    bool depthShort = false;    // no depth the plan would go to cuts off little enough
-    int referenceDepth = 0;     // the deep render the depths were measured against
-    double depthMse = 0.0;      // the chosen depth's error against it, codes^2, in the probe
-    double depthLargest = 0.0;  // codes
+    bool depthGiven = false;      // the caller fixed the depth; it was measured, not chosen
+    bool depthShort = false;      // no depth the plan would go to cuts off little enough
+    int referenceDepth = 0;       // the deep render the depths were measured against
+    double depthMse = 0.0;        // the chosen depth's error against it, codes^2
+    double depthLargest = 0.0;    // codes
+    int depthLargestSamples = 1;  // a pixel, where the centres showed it (1: the centres)
+    // depthMse and depthLargest were measured in the picture, not the probe.
+    bool depthAtPictureSize = false;
     double precisionMse = 0.0;  // float against double at that depth, codes^2, in the probe
     int precisionSamples = 1;   // a pixel, in the probe that measured it
     int probeWidth = 0, probeHeight = 0;

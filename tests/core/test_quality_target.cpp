@@ -72,6 +72,15 @@ TEST(QualityTarget, PresetsMeetTheirTargetsOnScenesTheyWereNotFittedOn) {
     EXPECT_GT(compared, 0);
 }
 
+// A shipped scene at 320x240, in float.
+Scene shippedSceneInFloat(const std::string& file) {
+    Scene scene = loadScene(WHITTED_SCENES_DIR "/" + file);
+    scene.render.width = 320;
+    scene.render.height = 240;
+    scene.render.precision = Precision::Float;
+    return scene;
+}
+
 // Float against double at the probe's size, depth and samples: the mean
 // squared difference of their 8-bit pictures.
 double floatAgainstDouble(Scene scene, int samples) {
@@ -88,10 +97,7 @@ double floatAgainstDouble(Scene scene, int samples) {
 // a hundredth of that at 256. The plan measures it again with 8 samples a
 // pixel and counts what it finds there, no less than what 256 samples show.
 TEST(QualityTarget, FloatAgainstDouble_MeasuredWithSamplesWhereTheCentresDifferMuch) {
-    Scene glass = loadScene(WHITTED_SCENES_DIR "/glass.json");
-    glass.render.width = 320;
-    glass.render.height = 240;
-    glass.render.precision = Precision::Float;
+    Scene glass = shippedSceneInFloat("glass.json");
     const QualityPlan plan = planQuality(glass, finalQuality());
     EXPECT_EQ(plan.precisionSamples, 8);
     EXPECT_NE(plan.why.find("float against double: "), std::string::npos);
@@ -134,10 +140,7 @@ double largestDepthDifference(Scene scene, int depth, int samples) {
 // depth that 256 samples a pixel bear out, shallower than the centres alone
 // would take.
 TEST(QualityTarget, DepthLargestError_JudgedWithSamplesWhereTheCentresShowASliver) {
-    Scene seed = loadScene(WHITTED_SCENES_DIR "/seed.json");
-    seed.render.width = 320;
-    seed.render.height = 240;
-    seed.render.precision = Precision::Float;
+    Scene seed = shippedSceneInFloat("seed.json");
     const QualityPlan plan = planQuality(seed, previewQuality());
     EXPECT_TRUE(plan.depthAtPictureSize);
     EXPECT_EQ(plan.depthLargestSamples, 8);

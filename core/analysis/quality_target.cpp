@@ -195,21 +195,22 @@ RenderPixels renderPixelsUnder(const Image& probe, const Image& deeper, double c
     const double across = double(width) / probe.width, down = double(height) / probe.height;
     for (int py = 0; py < probe.height; ++py) {
         const int y0 = int(py * down), y1 = int((py + 1) * down);
-        std::optional<int> runStart;
+        constexpr int kNoRun = -1;  // not std::optional: GCC 12 warns it may be unset
+        int runStart = kNoRun;
         for (int px = 0; px <= probe.width; ++px) {
             const double d =
                 px == probe.width ? 0.0 : codesApart(probe.pixel(px, py), deeper.pixel(px, py));
             if (d > codes) {
-                if (!runStart) runStart = px;
+                if (runStart == kNoRun) runStart = px;
                 continue;
             }
             under.largestElsewhere = std::max(under.largestElsewhere, d);
-            if (!runStart || y1 == y0) {
-                runStart.reset();
+            if (runStart == kNoRun || y1 == y0) {
+                runStart = kNoRun;
                 continue;
             }
-            const int x0 = int(*runStart * across), x1 = int(px * across);
-            runStart.reset();
+            const int x0 = int(runStart * across), x1 = int(px * across);
+            runStart = kNoRun;
             if (x1 == x0) continue;
             under.rects.push_back({x0, y0, x1 - x0, y1 - y0});
             under.count += std::size_t(x1 - x0) * (y1 - y0);

@@ -44,18 +44,18 @@ struct Pixel {
     double codes = 0.0;
 };
 
+double codesAt(const Image& a, const Image& b, int x, int y) {
+    return 255.0 * displayDifference(a.pixel(x, y), b.pixel(x, y));
+}
+
 Pixel worstPixel(const Image& image, const Image& reference) {
     Pixel worst;
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x) {
-            const double d = 255.0 * displayDifference(image.pixel(x, y), reference.pixel(x, y));
+            const double d = codesAt(image, reference, x, y);
             if (d > worst.codes) worst = {x, y, d};
         }
     return worst;
-}
-
-double codesAt(const Image& a, const Image& b, int x, int y) {
-    return 255.0 * displayDifference(a.pixel(x, y), b.pixel(x, y));
 }
 
 // What the chosen depth cuts off at the worst pixel, with samples at the

@@ -323,13 +323,13 @@ void planDepth(ProbeRenders& probes, std::optional<int> given, int maxSamples, Q
     auto measure = [&](int depth) {
         plan.maxDepth = depth;
         plan.referenceDepth = std::min(kMaxDepth, depth + kLookAhead);
-        DepthError e = depthError(probes.at(depth, plan), probes.at(plan.referenceDepth, plan));
+        const Image& shallow = probes.at(depth, plan);
+        const Image& deep = probes.at(plan.referenceDepth, plan);
+        DepthError e = depthError(shallow, deep);
         plan.depthLargestSamples = 1;
         if (maxSamples > 1 && largestAtCentresOnly(e, plan.target, mseShare))
-            e.largest =
-                largestWithSamples(probes, plan, probes.at(depth, plan),
-                                   probes.at(plan.referenceDepth, plan), depth, plan.referenceDepth)
-                    .value_or(e.largest);
+            e.largest = largestWithSamples(probes, plan, shallow, deep, depth, plan.referenceDepth)
+                            .value_or(e.largest);
         plan.depthMse = e.mse;
         plan.depthLargest = e.largest;
         return e;

@@ -9,11 +9,19 @@
 // the probe to see.
 // Usage: bench_quality_fields [FIRST LAST [WIDTH]] (default 1 8 160; the
 // height is three quarters of the width). Prints a Markdown table.
+//
+// bench_quality_fields depths SEED [SAMPLES [DEEPEST]] (default 8 samples,
+// depth 24, 160x120) prints how far the field's picture is from converging
+// in depth: each depth against the one before, the same sample positions in
+// both, so the difference is the depth's alone, and the seconds each took.
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 #include "analysis/quality_check.h"
 #include "image/image_compare.h"
+#include "image/image_error.h"
 #include "sphere_field.h"
 #include "tracer/renderer.h"
 
@@ -80,15 +88,45 @@ std::string whyMissed(const Scene& scene, const QualityCheck& c, const Image& re
     return text;
 }
 
+int printDepthSeries(int seed, int samples, int deepest) {
+    const Scene scene = field(seed, 160);
+    std::printf("seed %d, %zu balls, %d samples a pixel, 160x120, double\n", seed,
+                scene.spheres.size() - 1, samples);
+    std::printf("| depth | against the one before: PSNR, largest | seconds |\n|---|---|---|\n");
+    Scene inDouble = scene;
+    inDouble.render.precision = Precision::Double;
+    Image before;
+    for (int depth : {14, 16, 19, 24, 29, 34}) {
+        if (depth > deepest) break;
+        const auto start = std::chrono::steady_clock::now();
+        const Image image = renderAt(inDouble, depth, samples);
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (before.width == 0) {
+            std::printf("| %d | | %.2f |\n", depth, seconds);
+        } else {
+            const ErrorStats e = measureError(image, before);
+            std::printf("| %d | %.1f dB, %.1f codes | %.2f |\n", depth, e.psnrSrgb8, e.largest,
+                        seconds);
+        }
+        std::fflush(stdout);
+        before = image;
+    }
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+    if (argc > 2 && std::strcmp(argv[1], "depths") == 0)
+        return printDepthSeries(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 8,
+                                argc > 4 ? std::atoi(argv[4]) : 24);
     const int first = argc > 2 ? std::atoi(argv[1]) : 1;
     const int last = argc > 2 ? std::atoi(argv[2]) : 8;
     const int width = argc > 3 ? std::atoi(argv[3]) : 160;
     std::printf("| field | target | depth | probe's largest | measured | met | why missed |\n");
     std::printf("|---|---|---|---|---|---|---|\n");
-    int renders = 0, met = 0;
+    int renders = 0, met = 0, promised = 0, promisedMet = 0;
     for (int seed = first; seed <= last; ++seed) {
         const Scene scene = field(seed, width);
         const Image reference = convergedReference(scene);
@@ -96,6 +134,8 @@ int main(int argc, char** argv) {
             const QualityCheck c = checkQuality(scene, target, reference);
             ++renders;
             met += c.met;
+            promised += !c.plan.depthShort;
+            promisedMet += !c.plan.depthShort && c.met;
             std::printf(
                 "| seed %d, %zu balls | %s | %d%s | %.1f codes | %.1f dB, %.1f codes | %s | %s |\n",
                 seed, scene.spheres.size() - 1, target.name.c_str(), c.plan.maxDepth,
@@ -107,4 +147,8 @@ int main(int argc, char** argv) {
     }
     std::printf("\n%d of %d renders met their target (%dx%d; * no depth up to the cap fits)\n", met,
                 renders, width, width * 3 / 4);
+    std::printf(
+        "%d of the %d plans that promised their target met it; %d of the %d that said "
+        "beforehand it may be missed (*) met it\n",
+        promisedMet, promised, met - promisedMet, renders - promised);
 }

@@ -30,12 +30,7 @@ using namespace whitted;
 namespace {
 
 Scene field(int seed, int width) {
-    FieldOptions o;
-    o.count = 40 + 37 * (seed % 9);
-    o.seed = 500 + std::uint32_t(seed);
-    o.halfWidth = 2.0 + seed % 4;
-    o.depth = 5.0 + 1.5 * (seed % 5);
-    Scene scene = sphereField(o);
+    Scene scene = sphereField(untunedField(seed));
     scene.render.width = width;
     scene.render.height = width * 3 / 4;
     return scene;

@@ -44,4 +44,13 @@ Scene sphereField(const FieldOptions& o) {
     return s;
 }
 
+FieldOptions untunedField(int n) {
+    FieldOptions o;
+    o.count = 40 + 37 * (n % 9);
+    o.seed = 500 + std::uint32_t(n);
+    o.halfWidth = 2.0 + n % 4;
+    o.depth = 5.0 + 1.5 * (n % 5);
+    return o;
+}
+
 }  // namespace whitted

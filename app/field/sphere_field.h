@@ -25,4 +25,8 @@ struct FieldOptions {
 // depth 5, 1 sample, float, 640x480. Balls may overlap.
 Scene sphereField(const FieldOptions& options);
 
+// bench_quality_fields' field number `n` (issue 15): 40 to 336 balls, other
+// counts, spreads and seeds than any the quality targets were tuned on.
+FieldOptions untunedField(int n);
+
 }  // namespace whitted

@@ -401,11 +401,16 @@ std::string depthWhy(const QualityPlan& p) {
                           "differ most",
                           p.depthLargestSamples)
                  : std::string());
-    if (p.depthShort)
-        why += "\nno depth up to " + std::to_string(kDeepestPlanned) +
-               " leaves the samples their share: rays trapped in glass or between mirrors "
-               "still change the picture, so the target may be missed";
-    return why;
+    if (!p.depthShort) return why;
+    why += "\nno depth up to " + std::to_string(kDeepestPlanned) +
+           " leaves the samples their share: rays trapped in glass or between mirrors "
+           "still change the picture, ";
+    // No number of samples takes back what the depth cuts off: a cut over
+    // the whole limit makes a miss of the largest error likely.
+    if (p.target.largestCodes && p.depthLargest > *p.target.largestCodes)
+        return why + format("so a pixel is likely to be off by more than %.3g codes",
+                            *p.target.largestCodes);
+    return why + "so the target may be missed";
 }
 
 std::string samplingWhy(const QualityPlan& p) {

@@ -17,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include "analysis/depth_truncation.h"
 #include "analysis/quality_check.h"
 #include "scene/scene_io.h"
 #include "sphere_field.h"
@@ -188,6 +189,41 @@ TEST(QualityTarget, DepthCheckedAtThePicturesSize_SeesWhatFallsBetweenTheProbesC
                 atDepth5, plan.maxDepth, plan.maxDepth + 3, planned);
     EXPECT_GT(atDepth5, limit);
     EXPECT_LE(planned, limit / 2);
+}
+
+// bench_quality_fields' fields by seed, at 80x60 to keep the test short.
+Scene benchField(int seed) {
+    Scene field = sphereField(untunedField(seed));
+    field.render.width = 80;
+    field.render.height = 60;
+    return field;
+}
+
+// On a dense glass field no depth up to the cap fits Final's share. Where
+// what depth 16 cuts off is over the whole limit of 16 codes, samples cannot
+// take it back, and the plan says a pixel is likely to be off by more: the
+// picture at depth 16 against 19 bears it out. Where it is under the limit
+// the plan only says the target may be missed.
+TEST(QualityTarget, DepthShortOverTheLimit_SaysAPixelIsLikelyToBeOffByMore) {
+    const Scene dense = benchField(8);
+    const QualityPlan plan = planQuality(dense, finalQuality());
+    const double limit = *finalQuality().largestCodes;
+    EXPECT_TRUE(plan.depthShort);
+    EXPECT_EQ(plan.maxDepth, kDeepestChosen);
+    EXPECT_GT(plan.depthLargest, limit);
+    EXPECT_NE(plan.why.find("so a pixel is likely to be off by more than 16 codes"),
+              std::string::npos)
+        << plan.why;
+    const double cut = largestDepthDifference(dense, plan.maxDepth, 8);
+    std::printf("depth %d against %d: planned %.1f, 8 samples %.1f codes\n", plan.maxDepth,
+                plan.maxDepth + 3, plan.depthLargest, cut);
+    EXPECT_GT(cut, limit);
+
+    const QualityPlan underLimit = planQuality(benchField(5), finalQuality());
+    EXPECT_TRUE(underLimit.depthShort);
+    EXPECT_LE(underLimit.depthLargest, limit);
+    EXPECT_NE(underLimit.why.find("so the target may be missed"), std::string::npos)
+        << underLimit.why;
 }
 
 }  // namespace

@@ -523,8 +523,9 @@ QualityPlan planQuality(const Scene& scene, const QualityTarget& target, int max
             "\n";
     plan.why += samplingWhy(plan);
     if (plan.depthMse > total)
-        plan.why +=
-            "\nthe given depth alone cuts off more than the target allows: it cannot be met";
+        plan.why += std::string("\nthe ") +
+                    (plan.depthGiven ? "given depth" : "deepest depth planned") +
+                    " alone cuts off more than the target allows: it cannot be met";
     return plan;
 }
 

@@ -219,6 +219,18 @@ TEST(QualityTarget, DepthShortOverTheLimit_SaysAPixelIsLikelyToBeOffByMore) {
                 plan.maxDepth + 3, plan.depthLargest, cut);
     EXPECT_GT(cut, limit);
 
+    // At 160x120 the cap cuts off more than Final's whole MSE, and the plan
+    // names the depth for what it is: chosen, not given.
+    Scene larger = dense;
+    larger.render.width = 160;
+    larger.render.height = 120;
+    const QualityPlan overBudget = planQuality(larger, finalQuality());
+    EXPECT_GT(overBudget.depthMse, allowedMse(finalQuality().psnrDb));
+    EXPECT_NE(overBudget.why.find("the deepest depth planned alone cuts off more than the "
+                                  "target allows: it cannot be met"),
+              std::string::npos)
+        << overBudget.why;
+
     const QualityPlan underLimit = planQuality(benchField(5), finalQuality());
     EXPECT_TRUE(underLimit.depthShort);
     EXPECT_LE(underLimit.depthLargest, limit);

@@ -413,6 +413,25 @@ std::string depthWhy(const QualityPlan& p) {
     return why + "so the target may be missed";
 }
 
+// The sampling's share of a target's MSE `total` once the depth and the
+// precision have cut off `bias`. While the target can be met the samples get
+// what is left, and at least the depth's share. Once the bias alone is over
+// the target, chasing it with samples buys a fraction of a dB for several
+// times the render (on a dense glass field, 602 samples a pixel instead of
+// 108, for 46.2 dB instead of 45.3): the samples are then held to the noise
+// of a picture that meets the target.
+double samplingMse(double total, double bias) {
+    if (bias > total) return kSamplingShare * (1.0 - kDepthShareOfMse) * total;
+    return kSamplingShare * std::max(total - bias, kDepthShareOfMse * total);
+}
+
+std::string outOfReachWhy(const QualityPlan& p, double total) {
+    return std::string("\nthe ") + (p.depthGiven ? "given depth" : "deepest depth planned") +
+           (p.depthMse > total ? " alone cuts" : " and float together cut") +
+           " off more than the target allows: it cannot be met, so the samples aim for " +
+           format("the noise of a picture that meets it (%.3g codes^2)", p.sampling.allowedMse);
+}
+
 std::string samplingWhy(const QualityPlan& p) {
     std::string why = p.sampling.centresFirst
                           ? "samples: one at each pixel's centre, its error estimated from "
@@ -508,9 +527,7 @@ QualityPlan planQuality(const Scene& scene, const QualityTarget& target, int max
     plan.stopped = stop && stop();
     const double total = allowedMse(target.psnrDb);
     const double bias = plan.depthMse + plan.precisionMse;
-    // A given depth may cut off more than the whole budget: the samples still
-    // get a share, and the note says the target cannot be met.
-    plan.sampling.allowedMse = kSamplingShare * std::max(total - bias, kDepthShareOfMse * total);
+    plan.sampling.allowedMse = samplingMse(total, bias);
     // The largest errors of the depth and of the sampling are seldom in the
     // same pixel (light trapped in glass; edges), so each gets the whole limit.
     if (target.largestCodes) plan.sampling.allowedLargest = kLargestMargin * *target.largestCodes;
@@ -522,10 +539,7 @@ QualityPlan planQuality(const Scene& scene, const QualityTarget& target, int max
                                        : std::string()) +
             "\n";
     plan.why += samplingWhy(plan);
-    if (plan.depthMse > total)
-        plan.why += std::string("\nthe ") +
-                    (plan.depthGiven ? "given depth" : "deepest depth planned") +
-                    " alone cuts off more than the target allows: it cannot be met";
+    if (bias > total) plan.why += outOfReachWhy(plan, total);
     return plan;
 }
 

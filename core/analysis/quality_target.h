@@ -10,12 +10,12 @@
 // render of pixel centres, differs from one three levels deeper by at most a
 // tenth of M and a quarter of the largest error; the sampling gets what is
 // left with a margin (kSamplingShare of it; docs/tradeoff.md measures how
-// often that is enough). Where the target limits the largest error, the
-// probe's depth is checked in one-sample renders of the whole picture (a
-// feature of a few pixels can lie between the probe's centres), and a depth
-// whose centres fail only by the largest error is judged with samples of the
-// picture's pixels there. Both errors are measured, not bounded: the estimate
-// of what the depth cuts off comes from the probe and the picture, that of
+// often that is enough), or, where the depth alone is over M and the target
+// cannot be met, what it would get at a depth that fits. Where the target limits the largest error,
+// the probe's depth is checked in one-sample renders of the whole picture (a feature of a few
+// pixels can lie between the probe's centres), and a depth whose centres fail only by the largest
+// error is judged with samples of the picture's pixels there. Both errors are measured, not
+// bounded: the estimate of what the depth cuts off comes from the probe and the picture, that of
 // the sampling from the render's own samples.
 #pragma once
 

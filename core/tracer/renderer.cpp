@@ -15,6 +15,7 @@
 #include "base/thread_cpu_time.h"
 #include "scene/scene_io.h"
 #include "tracer/kernel_dispatch.h"
+#include "tracer/progress_share.h"
 
 namespace whitted {
 namespace {
@@ -169,7 +170,9 @@ class TileRenderer {
         // zero pages, so nothing is written, and no time spent, before the
         // first tile; a page costs memory only once a tile of it is rendered.
         if (passes.back().firstSample > 0) sums_ = Sums(size_t(s_.width) * s_.height);
-        for (const Pass& p : passes) totalWork_ += p.work;
+        double totalWork = 0.0;
+        for (const Pass& p : passes) totalWork += p.work;
+        progress_.expect(0.0, totalWork);
         std::vector<int> all(tiles_.size());
         std::iota(all.begin(), all.end(), 0);
         RenderResult result;
@@ -209,7 +212,11 @@ class TileRenderer {
         std::iota(refine.begin(), refine.end(), 0);
         int index = 0;
         if (!passes.empty()) {
-            totalWork_ = passes.front().work;
+            // The first samples, and the passes the guess expects after them.
+            const double firstSamples =
+                pixelsRendered(settings_, options_) * (limits.centresFirst ? 1 : 2);
+            progress_.expect(
+                0.0, passes.front().work + firstSamples * (1.0 + remainingPassesGuess(limits)));
             startImage(PassKind::Preview);
             runPass(passes.front(), 0, 1, refine);
             index = 1;
@@ -218,7 +225,8 @@ class TileRenderer {
         if (limits.centresFirst) {
             const double pixels = pixelsRendered(settings_, options_);
             const Pass centres{PassKind::Samples, 0, 1, pixels, true};
-            totalWork_ = centres.work * (1.0 + remainingPassesGuess(limits));
+            progress_.expect(workDone_,
+                             workDone_ + centres.work * (1.0 + remainingPassesGuess(limits)));
             startImage(PassKind::Samples);
             runPass(centres, index, index + 1, refine);
             ++index, ++samplesPasses;
@@ -238,7 +246,7 @@ class TileRenderer {
                 double pixels = 0.0;
                 for (int t : ids) pixels += tileStates_[t].pixels;
                 const Pass pass{PassKind::Samples, first, next, pixels * (next - first)};
-                totalWork_ = workDone_ + pass.work * remainingPassesGuess(limits);
+                progress_.expect(workDone_, workDone_ + pass.work * remainingPassesGuess(limits));
                 startImage(PassKind::Samples);
                 // Not before: a render whose centres do needs no sums.
                 if (sums_.empty()) sums_ = Sums(size_t(s_.width) * s_.height);
@@ -302,7 +310,7 @@ class TileRenderer {
                                             count,
                                             pass.kind,
                                             pass.kind == PassKind::Preview ? 0 : pass.lastSample,
-                                            std::min(1.0, done / totalWork_),
+                                            progress_.at(done),
                                             int(ids.size())};
                     const bool preview = pass.kind == PassKind::Preview;
                     onTile_(TileUpdate{preview ? preview_ : image_, tile.x, tile.y, tile.w, tile.h,
@@ -436,8 +444,8 @@ class TileRenderer {
     Sums sums_;
     std::atomic<bool> stopped_{false};
     std::atomic<double> workDone_{0.0};
-    double totalWork_ = 0.0;
-    std::mutex raysMutex_;  // guards rays_ and tilesCpuSeconds_
+    ProgressShare progress_;  // set between passes, read by the workers
+    std::mutex raysMutex_;    // guards rays_ and tilesCpuSeconds_
     RayCounts rays_;
     double tilesCpuSeconds_ = 0.0;
     std::vector<Tile> tiles_;

@@ -390,6 +390,33 @@ TEST(Renderer, AdaptiveRender_SameImageWithAnyThreadsAndWithOrWithoutPreview) {
     }
 }
 
+// The share of work done that a progress bar shows never goes back, though
+// the render learns how many passes it takes only as it goes; and the preview
+// is not the whole render (it reported 100% before the samples started).
+TEST(Renderer, AdaptiveRender_ProgressNeverGoesBack) {
+    std::vector<Recorded> log;
+    const RenderResult r = render(
+        smallSeed(1, Precision::Float), adaptiveOptions(1, true, 0.5, 64),
+        [&](const TileUpdate& t) {
+            log.push_back({t.progress.pass, t.progress.passCount, t.progress.kind,
+                           t.progress.samples, t.progress.fraction, t.x, t.y, t.width, t.height});
+        });
+    ASSERT_TRUE(r.completed);
+    ASSERT_GT(r.adaptive->passes, 2);
+    double lastPreview = 0.0;
+    for (size_t k = 0; k < log.size(); ++k) {
+        if (k > 0) {
+            EXPECT_GE(log[k].fraction, log[k - 1].fraction) << "callback " << k;
+        }
+        if (log[k].kind == PassKind::Preview) lastPreview = log[k].fraction;
+    }
+    EXPECT_GT(lastPreview, 0.0);
+    EXPECT_LT(lastPreview, 0.25);
+    EXPECT_LE(log.back().fraction, 1.0);
+    std::printf("preview ends at %.3f, last tile at %.3f, %d passes\n", lastPreview,
+                log.back().fraction, r.adaptive->passes);
+}
+
 TEST(Renderer, AdaptiveRender_ZeroAllowedErrorTakesTheCapWhereverThereIsError) {
     const Scene scene = smallSeed(1, Precision::Float);
     const RenderResult r = render(scene, adaptiveOptions(2, false, 0.0, 8));

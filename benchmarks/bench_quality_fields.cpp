@@ -84,17 +84,16 @@ std::string whyMissed(const Scene& scene, const QualityCheck& c, const Image& re
 }
 
 int printDepthSeries(int seed, int samples, int deepest) {
-    const Scene scene = field(seed, 160);
+    Scene scene = field(seed, 160);
+    scene.render.precision = Precision::Double;
     std::printf("seed %d, %zu balls, %d samples a pixel, 160x120, double\n", seed,
                 scene.spheres.size() - 1, samples);
     std::printf("| depth | against the one before: PSNR, largest | seconds |\n|---|---|---|\n");
-    Scene inDouble = scene;
-    inDouble.render.precision = Precision::Double;
     Image before;
     for (int depth : {14, 16, 19, 24, 29, 34}) {
         if (depth > deepest) break;
         const auto start = std::chrono::steady_clock::now();
-        const Image image = renderAt(inDouble, depth, samples);
+        const Image image = renderAt(scene, depth, samples);
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (before.width == 0) {

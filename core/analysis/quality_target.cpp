@@ -167,9 +167,10 @@ DepthError depthError(const Image& image, const Image& reference) {
     return {e.rmseSrgb8 * e.rmseSrgb8, e.largest};
 }
 
-bool depthFits(const DepthError& e, const QualityTarget& t) {
+bool depthFits(const DepthError& e, const QualityTarget& t,
+               double largestShare = kDepthShareOfLargest) {
     if (e.mse > kDepthShareOfMse * allowedMse(t.psnrDb)) return false;
-    return !t.largestCodes || e.largest <= kDepthShareOfLargest * *t.largestCodes;
+    return !t.largestCodes || e.largest <= largestShare * *t.largestCodes;
 }
 
 // Most pixels of two depths are equal: those skip the sRGB curve.
@@ -242,16 +243,17 @@ bool largestAtCentresOnly(const DepthError& e, const QualityTarget& t, double ms
 // The largest error of `depth` against `reference` as the picture's own
 // pixels show it with kDepthLargestSamples each, the same samples at both,
 // where the centres of `shallow` and `deep` (the probe's or the picture's)
-// differ by more than the depth's share; with the other centres' largest.
+// differ by more than `largestShare` of the limit; with the other centres'
+// largest.
 // Nothing where those pixels are too many. At the picture's own pixels, not
 // the probe's: a probe's pixel is two to eight of the picture's across, and
 // averaging a sliver over it understated what one of the picture's pixels
 // shows (two of twelve generated fields missed their target).
 std::optional<double> largestWithSamples(ProbeRenders& probes, QualityPlan& plan,
                                          const Image& shallow, const Image& deep, int depth,
-                                         int reference) {
+                                         int reference, double largestShare) {
     const RenderPixels over =
-        renderPixelsUnder(shallow, deep, kDepthShareOfLargest * *plan.target.largestCodes,
+        renderPixelsUnder(shallow, deep, largestShare * *plan.target.largestCodes,
                           probes.renderWidth(), probes.renderHeight());
     const double picture = double(probes.renderWidth()) * probes.renderHeight();
     if (double(over.count) > kMostRenderPixelsJudged * picture) return std::nullopt;
@@ -264,8 +266,8 @@ std::optional<double> largestWithSamples(ProbeRenders& probes, QualityPlan& plan
 }
 
 // The error of `depth` against `reference` at the picture's own size: its
-// pixels' centres, and where they differ by more than the depth's share of
-// the largest error, samples (largestWithSamples()).
+// pixels' centres, and where they differ by more than kPictureShareOfLargest
+// of the limit, samples (largestWithSamples()).
 DepthError pictureDepthError(ProbeRenders& probes, QualityPlan& plan, int depth, int reference,
                              int maxSamples) {
     const Image& shallow = probes.pictureAt(depth, plan);
@@ -274,9 +276,10 @@ DepthError pictureDepthError(ProbeRenders& probes, QualityPlan& plan, int depth,
     plan.depthLargestSamples = 1;
     // Whatever the centres' largest: at the picture's size a centre off by
     // more than the whole limit may still be a sliver.
-    if (maxSamples > 1 && e.largest > kDepthShareOfLargest * *plan.target.largestCodes)
-        e.largest =
-            largestWithSamples(probes, plan, shallow, deep, depth, reference).value_or(e.largest);
+    if (maxSamples > 1 && e.largest > kPictureShareOfLargest * *plan.target.largestCodes)
+        e.largest = largestWithSamples(probes, plan, shallow, deep, depth, reference,
+                                       kPictureShareOfLargest)
+                        .value_or(e.largest);
     return e;
 }
 
@@ -301,7 +304,7 @@ void checkDepthAtPictureSize(ProbeRenders& probes, int maxSamples, QualityPlan& 
         plan.depthMse = e.mse;
         plan.depthLargest = e.largest;
         plan.depthAtPictureSize = true;
-        if (depthFits(e, plan.target)) return;
+        if (depthFits(e, plan.target, kPictureShareOfLargest)) return;
     }
     plan.depthShort = true;
 }
@@ -328,7 +331,8 @@ void planDepth(ProbeRenders& probes, std::optional<int> given, int maxSamples, Q
         DepthError e = depthError(shallow, deep);
         plan.depthLargestSamples = 1;
         if (maxSamples > 1 && largestAtCentresOnly(e, plan.target, mseShare))
-            e.largest = largestWithSamples(probes, plan, shallow, deep, depth, plan.referenceDepth)
+            e.largest = largestWithSamples(probes, plan, shallow, deep, depth, plan.referenceDepth,
+                                           kDepthShareOfLargest)
                             .value_or(e.largest);
         plan.depthMse = e.mse;
         plan.depthLargest = e.largest;

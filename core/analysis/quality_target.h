@@ -11,11 +11,13 @@
 // tenth of M and a quarter of the largest error; the sampling gets what is
 // left with a margin (kSamplingShare of it; docs/tradeoff.md measures how
 // often that is enough), or, where the depth alone is over M and the target
-// cannot be met, what it would get at a depth that fits. Where the target limits the largest error,
-// the probe's depth is checked in one-sample renders of the whole picture (a feature of a few
-// pixels can lie between the probe's centres), and a depth whose centres fail only by the largest
-// error is judged with samples of the picture's pixels there. Both errors are measured, not
-// bounded: the estimate of what the depth cuts off comes from the probe and the picture, that of
+// cannot be met, what it would get at a depth that fits. Where the target
+// limits the largest error, the probe's depth is checked in one-sample
+// renders of the whole picture (a feature of a few pixels can lie between the
+// probe's centres; there the depth gets half the largest error), and a depth
+// whose centres fail only by the largest error is judged with samples of the
+// picture's pixels there. Both errors are measured, not bounded: the estimate
+// of what the depth cuts off comes from the probe and the picture, that of
 // the sampling from the render's own samples.
 #pragma once
 
@@ -53,6 +55,10 @@ double allowedMse(double psnrDb);
 
 inline constexpr double kDepthShareOfMse = 0.1;
 inline constexpr double kDepthShareOfLargest = 0.25;
+// The depth's share of the largest error where it is measured at the
+// picture's own pixels: the probe's quarter leaves room for what falls
+// between its centres, and there nothing does.
+inline constexpr double kPictureShareOfLargest = 0.5;
 inline constexpr double kSamplingShare = 0.8;
 inline constexpr int kDefaultMaxSamples = 1024;
 // Targets this loose with no limit on the largest error start with one sample

@@ -134,25 +134,25 @@ double largestDepthDifference(Scene scene, int depth, int samples) {
     return measureError(shallow, render(scene, oneShotOptions()).image).largest;
 }
 
-// On seed.json at Preview the pixels' centres at depth 4 differ from depth 7
-// by more than the depth's quarter of the largest error (a reflection's edge,
-// in a sliver of a pixel); a render of many samples shares that out over the
-// pixel. The plan renders those pixels again with 8 samples each and takes a
-// depth that 256 samples a pixel bear out, shallower than the centres alone
-// would take.
+// On seed.json at Final the picture's pixel centres at depth 4 differ from
+// depth 7 by more than the depth's share of the largest error (a reflection's
+// edge, in a sliver of a pixel: 21 codes, 8 allowed); a render of many
+// samples shares that out over the pixel. The plan renders those pixels
+// again with 8 samples each and takes a depth that 256 samples a pixel bear
+// out, shallower than the centres alone would take.
 TEST(QualityTarget, DepthLargestError_JudgedWithSamplesWhereTheCentresShowASliver) {
     Scene seed = shippedSceneInFloat("seed.json");
-    const QualityPlan plan = planQuality(seed, previewQuality());
+    const QualityPlan plan = planQuality(seed, finalQuality());
     EXPECT_TRUE(plan.depthAtPictureSize);
     EXPECT_EQ(plan.depthLargestSamples, 8);
     EXPECT_NE(plan.why.find("with 8 samples a pixel of the picture where the centres differ"),
               std::string::npos)
         << plan.why;
     // A plan for one sample a pixel judges by the centres, which that render shows.
-    const QualityPlan centresOnly = planQuality(seed, previewQuality(), 1);
+    const QualityPlan centresOnly = planQuality(seed, finalQuality(), 1);
     EXPECT_EQ(centresOnly.depthLargestSamples, 1);
     EXPECT_GT(centresOnly.maxDepth, plan.maxDepth);
-    const double share = kDepthShareOfLargest * *previewQuality().largestCodes;
+    const double share = kPictureShareOfLargest * *finalQuality().largestCodes;
     const double atCentres = largestDepthDifference(seed, plan.maxDepth, 1);
     const double atMany = largestDepthDifference(seed, plan.maxDepth, 256);
     std::printf("depth %d against %d: centres %.1f, planned %.1f, 256 samples %.1f codes\n",
@@ -160,7 +160,7 @@ TEST(QualityTarget, DepthLargestError_JudgedWithSamplesWhereTheCentresShowASlive
     EXPECT_GT(atCentres, share);
     EXPECT_LE(plan.depthLargest, share);
     EXPECT_LE(atMany, share);
-    EXPECT_TRUE(checkQuality(seed, previewQuality(), convergedReference(seed)).met);
+    EXPECT_TRUE(checkQuality(seed, finalQuality(), convergedReference(seed)).met);
 }
 
 // A field of 114 balls at 160x120 (bench_quality_fields' second) where light

@@ -7,7 +7,8 @@
 // and the preset together take under a second, they are run again in pairs,
 // one after the other, and the medians are printed with the median of the
 // pairs' ratios.
-// Usage: bench_quality [WIDTH HEIGHT] (default 320 240). Prints a Markdown table.
+// Usage: bench_quality [WIDTH HEIGHT [times]] (default 320 240). Prints a
+// Markdown table; `times` prints only the paired times of Draft and Preview.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -82,11 +83,50 @@ void row(const NamedScene& n, const QualityTarget& target, const RenderPreset& p
     std::fflush(stdout);
 }
 
+// Only the times of ours and the preset, in pairs (at least 3, up to 15 or
+// about 4 s), for Draft and Preview: the renders of a few milliseconds whose
+// ratio bench_quality's single pairs leave noisy. No reference is rendered,
+// so it runs at sizes where the references would take an hour; the error
+// is measured against the preset's own render and not printed.
+void printTimes(int width, int height) {
+    std::printf("%dx%d, float; times of ours include planning; medians of the pairs\n\n", width,
+                height);
+    std::printf(
+        "| scene | target | depth | mean spp | ours (plan) | preset | ours / preset (pairs) "
+        "|\n|---|---|---|---|---|---|---|\n");
+    const QualityTarget targets[] = {draftQuality(), previewQuality()};
+    for (const NamedScene& n : scenes(width, height))
+        for (int i = 0; i < 2; ++i) {
+            Scene preset = n.scene;
+            preset.render.samplesPerPixel = kRenderPresets[i].samplesPerPixel;
+            preset.render.maxDepth = kRenderPresets[i].maxDepth;
+            const Image presetImage = render(preset, oneShotOptions()).image;
+            std::vector<double> ours, fixed, ratios;
+            QualityCheck last;
+            for (double spent = 0.0; ratios.size() < 3 || (ratios.size() < 15 && spent < 4.0);) {
+                last = checkQuality(n.scene, targets[i], presetImage);
+                ours.push_back(last.seconds);
+                fixed.push_back(checkFixed(preset, presetImage).seconds);
+                ratios.push_back(ours.back() / fixed.back());
+                spent += ours.back() + fixed.back();
+            }
+            std::printf("| %s | %s | %d | %.1f | %.4f s (%.4f) | %.4f s | %.2f (%zu) |\n",
+                        n.name.c_str(), targets[i].name.c_str(), last.plan.maxDepth,
+                        last.meanSamples, median(ours), last.planSeconds, median(fixed),
+                        median(ratios), ratios.size());
+            std::fflush(stdout);
+        }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     const int width = argc > 2 ? std::atoi(argv[1]) : 320;
     const int height = argc > 2 ? std::atoi(argv[2]) : 240;
+    if (argc > 3 && std::string(argv[3]) == "times") {
+        printTimes(width, height);
+        return 0;
+    }
     const QualityTarget targets[] = {draftQuality(), previewQuality(), finalQuality()};
     std::printf(
         "%dx%d, float; reference: double, 512 spp, depth 14; rays and seconds of ours "

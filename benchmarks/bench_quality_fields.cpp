@@ -4,9 +4,10 @@
 // the plan's probe showed for it, and what the render measured against a
 // converged reference (double, 512 samples). Where a target is missed, the
 // worst pixel is examined: what the chosen depth cuts off there, at the
-// picture's size with 64 samples, and what the probe's pixel centre over it
-// showed. A large cut where the probe showed none is a feature too small for
-// the probe to see.
+// picture's size with 64 samples, what the probe's pixel centre over it
+// showed, and how far the reference itself moves there three levels deeper.
+// A large cut where the probe showed none is a feature too small for the
+// probe to see; a reference that moves is not converged there.
 // Usage: bench_quality_fields [FIRST LAST [WIDTH]] (default 1 8 160; the
 // height is three quarters of the width). Prints a Markdown table.
 //
@@ -61,8 +62,25 @@ Pixel worstPixel(const Image& image, const Image& reference) {
     return worst;
 }
 
+// How far the reference moves at pixel (x, y) from its own depth (14, as
+// convergedReference() renders it) to three levels deeper, in double with
+// 256 samples: where light trapped in glass comes out later, the reference
+// is not converged there, and it may be the reference that is off.
+double referenceMovesAt(Scene scene, int x, int y) {
+    scene.render.precision = Precision::Double;
+    scene.render.samplesPerPixel = 256;
+    RenderOptions options = oneShotOptions();
+    options.regions = {{x, y, 1, 1}};
+    auto at = [&](int depth) {
+        scene.render.maxDepth = depth;
+        return render(scene, options).image;
+    };
+    return codesAt(at(14), at(17), x, y);
+}
+
 // What the chosen depth cuts off at the worst pixel, with samples at the
-// picture's size, and what the probe's centre over that pixel showed.
+// picture's size, what the probe's centre over that pixel showed, and how
+// far the reference there is from converged.
 std::string whyMissed(const Scene& scene, const QualityCheck& c, const Image& reference) {
     const QualityPlan& p = c.plan;
     const Image shallow = renderAt(scene, p.maxDepth, 64);
@@ -75,11 +93,12 @@ std::string whyMissed(const Scene& scene, const QualityCheck& c, const Image& re
     const int py = worst.y * p.probeHeight / scene.render.height;
     const double atCentre =
         codesAt(renderAt(probe, p.maxDepth, 1), renderAt(probe, p.referenceDepth, 1), px, py);
-    char text[200];
+    char text[300];
     std::snprintf(text, sizeof text,
                   "pixel (%d, %d): depth %d against %d there %.0f codes at 64 samples, "
-                  "%.0f at the probe's centre",
-                  worst.x, worst.y, p.maxDepth, p.referenceDepth, cut, atCentre);
+                  "%.0f at the probe's centre; the reference, depth 14 against 17 there: %.0f",
+                  worst.x, worst.y, p.maxDepth, p.referenceDepth, cut, atCentre,
+                  referenceMovesAt(scene, worst.x, worst.y));
     return text;
 }
 

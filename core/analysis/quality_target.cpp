@@ -244,11 +244,11 @@ bool largestAtCentresOnly(const DepthError& e, const QualityTarget& t, double ms
 // pixels show it with kDepthLargestSamples each, the same samples at both,
 // where the centres of `shallow` and `deep` (the probe's or the picture's)
 // differ by more than `largestShare` of the limit; with the other centres'
-// largest.
-// Nothing where those pixels are too many. At the picture's own pixels, not
-// the probe's: a probe's pixel is two to eight of the picture's across, and
-// averaging a sliver over it understated what one of the picture's pixels
-// shows (two of twelve generated fields missed their target).
+// largest. Nothing where those pixels are too many. At the picture's own
+// pixels, not the probe's: a probe's pixel is two to eight of the picture's
+// across, and averaging a sliver over it understated what one of the
+// picture's pixels shows (two of twelve generated fields missed their
+// target).
 std::optional<double> largestWithSamples(ProbeRenders& probes, QualityPlan& plan,
                                          const Image& shallow, const Image& deep, int depth,
                                          int reference, double largestShare) {

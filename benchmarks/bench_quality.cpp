@@ -43,12 +43,14 @@ struct PairedTimes {
     int pairs = 1;
 };
 
-// Ours (planning included) and the preset, timed in pairs until about a
-// second has gone, at most 15 pairs; the first pair is the one measured.
+// Ours (planning included) and the preset, timed in pairs until about
+// `seconds` have gone, at least `fewest` and at most 15 pairs; the first pair
+// is the one measured.
 PairedTimes pairedTimes(const Scene& scene, const QualityTarget& target, const Scene& preset,
-                        const Image& reference, double oursFirst, double presetFirst) {
+                        const Image& reference, double oursFirst, double presetFirst,
+                        int fewest = 1, double seconds = 1.0) {
     std::vector<double> ours{oursFirst}, fixed{presetFirst}, ratios{oursFirst / presetFirst};
-    const int pairs = std::clamp(int(1.0 / (oursFirst + presetFirst)), 1, 15);
+    const int pairs = std::clamp(int(seconds / (oursFirst + presetFirst)), fewest, 15);
     for (int i = 1; i < pairs; ++i) {
         ours.push_back(checkQuality(scene, target, reference).seconds);
         fixed.push_back(checkFixed(preset, reference).seconds);
@@ -57,12 +59,17 @@ PairedTimes pairedTimes(const Scene& scene, const QualityTarget& target, const S
     return {median(ours), median(fixed), median(ratios), pairs};
 }
 
+// The scene with the preset's samples and depth.
+Scene withPreset(Scene scene, const RenderPreset& preset) {
+    scene.render.samplesPerPixel = preset.samplesPerPixel;
+    scene.render.maxDepth = preset.maxDepth;
+    return scene;
+}
+
 void row(const NamedScene& n, const QualityTarget& target, const RenderPreset& preset,
          const Image& reference) {
     const QualityCheck c = checkQuality(n.scene, target, reference);
-    Scene fixedScene = n.scene;
-    fixedScene.render.samplesPerPixel = preset.samplesPerPixel;
-    fixedScene.render.maxDepth = preset.maxDepth;
+    const Scene fixedScene = withPreset(n.scene, preset);
     const FixedCheck fixed = checkFixed(fixedScene, reference);
     const PairedTimes times =
         pairedTimes(n.scene, target, fixedScene, reference, c.seconds, fixed.seconds);
@@ -83,11 +90,10 @@ void row(const NamedScene& n, const QualityTarget& target, const RenderPreset& p
     std::fflush(stdout);
 }
 
-// Only the times of ours and the preset, in pairs (at least 3, up to 15 or
-// about 4 s), for Draft and Preview: the renders of a few milliseconds whose
-// ratio bench_quality's single pairs leave noisy. No reference is rendered,
-// so it runs at sizes where the references would take an hour; the error
-// is measured against the preset's own render and not printed.
+// Only the times of ours and the preset, in pairs (pairedTimes(): at least
+// 3, up to 15 or about 4 s), for Draft and Preview. No reference is
+// rendered, so it runs at sizes where the references would take an hour;
+// the error is measured against the preset's own render and not printed.
 void printTimes(int width, int height) {
     std::printf("%dx%d, float; times of ours include planning; medians of the pairs\n\n", width,
                 height);
@@ -97,23 +103,15 @@ void printTimes(int width, int height) {
     const QualityTarget targets[] = {draftQuality(), previewQuality()};
     for (const NamedScene& n : scenes(width, height))
         for (int i = 0; i < 2; ++i) {
-            Scene preset = n.scene;
-            preset.render.samplesPerPixel = kRenderPresets[i].samplesPerPixel;
-            preset.render.maxDepth = kRenderPresets[i].maxDepth;
+            const Scene preset = withPreset(n.scene, kRenderPresets[i]);
             const Image presetImage = render(preset, oneShotOptions()).image;
-            std::vector<double> ours, fixed, ratios;
-            QualityCheck last;
-            for (double spent = 0.0; ratios.size() < 3 || (ratios.size() < 15 && spent < 4.0);) {
-                last = checkQuality(n.scene, targets[i], presetImage);
-                ours.push_back(last.seconds);
-                fixed.push_back(checkFixed(preset, presetImage).seconds);
-                ratios.push_back(ours.back() / fixed.back());
-                spent += ours.back() + fixed.back();
-            }
-            std::printf("| %s | %s | %d | %.1f | %.4f s (%.4f) | %.4f s | %.2f (%zu) |\n",
-                        n.name.c_str(), targets[i].name.c_str(), last.plan.maxDepth,
-                        last.meanSamples, median(ours), last.planSeconds, median(fixed),
-                        median(ratios), ratios.size());
+            const QualityCheck c = checkQuality(n.scene, targets[i], presetImage);
+            const PairedTimes times =
+                pairedTimes(n.scene, targets[i], preset, presetImage, c.seconds,
+                            checkFixed(preset, presetImage).seconds, 3, 4.0);
+            std::printf("| %s | %s | %d | %.1f | %.4f s (%.4f) | %.4f s | %.2f (%d) |\n",
+                        n.name.c_str(), targets[i].name.c_str(), c.plan.maxDepth, c.meanSamples,
+                        times.ours, c.planSeconds, times.preset, times.ratio, times.pairs);
             std::fflush(stdout);
         }
 }

@@ -46,6 +46,13 @@ constexpr double kMostRenderPixelsJudged = 0.25;
 constexpr double kOneThreadProbeSeconds = 0.5e-3;
 // How much deeper the render a depth is measured against goes.
 constexpr int kLookAhead = 3;
+// The renders of the check at the picture's size (checkDepthAtPictureSize())
+// follow no ray whose path passes on less than this weight: at most about a
+// code near black for a ray of radiance 3. A clear glass ball's inner
+// reflections (kr 0.1) end after three, instead of running to the depth the
+// check looks at, while light kept at 0.9 a bounce among glass balls is
+// followed to the end.
+constexpr double kPictureCheckPruneWeight = 1e-4;
 // The deepest depth a plan chooses: there light trapped in glass balls can
 // still change some pixels by 60 codes.
 constexpr int kDeepestPlanned = kDeepestChosen;
@@ -121,23 +128,26 @@ class ProbeRenders {
     }
 
     // The `regions` of the picture at its own size, at `depth` with `samples`
-    // a pixel in the scene's precision; zero elsewhere.
+    // a pixel in the scene's precision; zero elsewhere. Rays lighter than
+    // kPictureCheckPruneWeight are not followed.
     Image atRenderSize(int depth, QualityPlan& plan, int samples,
                        const std::vector<PixelRect>& regions) {
         const RenderSettings own = probe_.render;
         probe_.render.width = renderWidth_;
         probe_.render.height = renderHeight_;
         probe_.render.samplesPerPixel = samples;
-        Image image = trace(depth, plan, regions);
+        Image image = trace(depth, plan, regions, kPictureCheckPruneWeight);
         probe_.render = own;
         return image;
     }
 
   private:
-    Image trace(int depth, QualityPlan& plan, const std::vector<PixelRect>& regions = {}) {
+    Image trace(int depth, QualityPlan& plan, const std::vector<PixelRect>& regions = {},
+                double pruneBelowWeight = 0.0) {
         probe_.render.maxDepth = depth;
         RenderOptions options = oneShotOptions();
         options.regions = regions;
+        options.pruneBelowWeight = pruneBelowWeight;
         options.bvhCache = &cache_;
         options.sceneValidated = validated_;  // the first render throws if it is not valid
         options.threads = oneThread_ ? 1 : 0;
@@ -289,15 +299,19 @@ DepthError pictureDepthError(ProbeRenders& probes, QualityPlan& plan, int depth,
 // centre around it was unchanged (bench_quality_fields, docs/quality.md). So
 // for a target with a limit on the largest error, the probe's depth is
 // checked at the picture's own size, and taken deeper until it fits there or
-// reaches kDeepestPlanned. It costs two one-sample renders of the picture
-// where the probe's depth holds, against the two or more samples a pixel
-// such a render takes.
+// reaches kDeepestPlanned. It is checked against kDeepestPlanned, not three
+// levels deeper: light trapped among glass balls can come out five levels or
+// more past a depth (on bench_quality_fields' seventeenth field a pixel
+// changes by 5 codes from depth 8 to 11, and by 78 from 12 to 14). It costs two one-sample renders of the
+// picture where the probe's depth holds, against the two or more samples a
+// pixel such a render takes; the deep one follows only the rays that can
+// still matter (kPictureCheckPruneWeight).
 void checkDepthAtPictureSize(ProbeRenders& probes, int maxSamples, QualityPlan& plan) {
     if (!plan.target.largestCodes || plan.depthGiven || plan.depthShort ||
         probes.probeIsThePicture())
         return;
     for (int depth = plan.maxDepth; depth <= kDeepestPlanned; ++depth) {
-        const int reference = std::min(kMaxDepth, depth + kLookAhead);
+        const int reference = std::max(depth + kLookAhead, kDeepestPlanned);
         const DepthError e = pictureDepthError(probes, plan, depth, reference, maxSamples);
         plan.maxDepth = depth;
         plan.referenceDepth = reference;

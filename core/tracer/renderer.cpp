@@ -156,6 +156,7 @@ class TileRenderer {
   private:
     static PreparedScene<T> prepared(const Scene& scene, const RenderOptions& options) {
         PreparedScene<T> s = prepareScene<T>(scene, options.bvhCache);
+        s.pruneBelow = T(options.pruneBelowWeight);
         if (options.adaptive) {
             s.samplesPerPixel = std::max(1, options.adaptive->maxSamples);
             s.openEndedSamples = true;

@@ -53,6 +53,12 @@ struct RenderOptions {
     // progressiveSample(), passes double the samples of the tiles that need
     // them most, and the image is as deterministic as any other. Not with regions.
     std::optional<AdaptiveSampling> adaptive = std::nullopt;
+    // Reflected and refracted rays whose path passes on less than this weight
+    // are not traced, whatever the depth (PreparedScene::pruneBelow): for
+    // planning renders that look deep, where light trapped in lossless glass
+    // must be followed and a glass ball's faint inner reflections need not.
+    // 0: every ray SPEC spawns.
+    double pruneBelowWeight = 0.0;
 };
 
 // For a render nobody watches (a file, a measurement): one pass of all the

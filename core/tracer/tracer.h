@@ -92,6 +92,11 @@ struct PreparedScene {
     std::vector<PreparedLight<T>> lights;
     Vec<T> background, ambient;
     int maxDepth = 0;
+    // A reflected or refracted ray whose path passes on less than this weight
+    // (the product of kr and kt along it) is not traced. 0 in every render
+    // SPEC describes; a planning render that looks deep sets it
+    // (RenderOptions::pruneBelowWeight).
+    T pruneBelow = 0;
     int samplesPerPixel = 1;
     SamplePattern pattern = samplePattern(1);  // samplePattern(samplesPerPixel)
     // Samples from progressiveSample(), whose every power-of-two prefix is

@@ -40,8 +40,8 @@ std::optional<Hit<T>> kernelClosestHit(const PreparedScene<T>& s, const Ray<T>& 
 }
 
 template <typename T>
-void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth, Vec3x<T>& radiance,
-                 RayCounts& counts);
+void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth,
+                 const typename Simd<T>::type& weight, Vec3x<T>& radiance, RayCounts& counts);
 
 // Where the lanes that hit are on their surfaces: the point, the normal
 // facing the ray, and on which side the ray came from.
@@ -119,9 +119,14 @@ void addDirectLight(const PreparedScene<T>& s, const LaneMaterials<T>& g, const 
 template <typename T, typename Mask>
 void addSecondaryRays(const PreparedScene<T>& s, const LaneMaterials<T>& g,
                       const SurfacePoint<T>& sp, const Mask& hit,
-                      const typename Simd<T>::type& kHit, int depth, Vec3x<T>& radiance,
-                      RayCounts& counts) {
+                      const typename Simd<T>::type& kHit, int depth,
+                      const typename Simd<T>::type& weight, Vec3x<T>& radiance, RayCounts& counts) {
     using V = typename Simd<T>::type;
+    // The lanes whose ray, passing on `share` of its weight, stays at or above
+    // the scene's pruning weight (every lane when it is 0, as SPEC renders).
+    auto heavyEnough = [&](const V& share) {
+        return s.pruneBelow > T(0) ? laneBits(weight * share >= s.pruneBelow) : ~0u;
+    };
     const Vec3x<T>& d = sp.d;
     const Vec3x<T>& n = sp.n;
     V reflectWeight = g.reflectivity;
@@ -134,25 +139,27 @@ void addSecondaryRays(const PreparedScene<T>& s, const LaneMaterials<T>& g,
         // Total internal reflection: the refracted share follows the reflected
         // ray, which is traced once for both shares.
         reflectWeight = glass & ~(k >= T(0)) ? reflectWeight + g.transparency : reflectWeight;
-        if (const unsigned bits = laneBits(passes)) {
+        if (const unsigned bits = laneBits(passes) & heavyEnough(g.transparency)) {
             const V root = laneSqrt(passes ? k : V{});
             const Vec3x<T> t = normalize(eta * d + (eta * cosi - root) * n);
             // Refracted rays cross the surface: into the sphere from outside, out from inside.
             const RayPacket<T> refracted = RayPacket<T>::of(sp.p, t, kHit, ~sp.inside, bits);
             counts.refraction += __builtin_popcount(bits);
             Vec3x<T> sub;
-            tracePacket(s, refracted, depth + 1, sub, counts);
-            radiance = select(passes, radiance + g.transparency * sub, radiance);
+            tracePacket(s, refracted, depth + 1, weight * g.transparency, sub, counts);
+            const auto traced = passes & maskFromBits<T>(bits);
+            radiance = select(traced, radiance + g.transparency * sub, radiance);
         }
     }
     const auto mirror = hit & (reflectWeight > T(0));
-    if (const unsigned bits = laneBits(mirror)) {
+    if (const unsigned bits = laneBits(mirror) & heavyEnough(reflectWeight)) {
         const Vec3x<T> r = d - (T(2) * dot(d, n)) * n;  // reflect(d, n)
         const RayPacket<T> reflected = RayPacket<T>::of(sp.p, r, kHit, sp.inside, bits);
         counts.reflection += __builtin_popcount(bits);
         Vec3x<T> sub;
-        tracePacket(s, reflected, depth + 1, sub, counts);
-        radiance = select(mirror, radiance + reflectWeight * sub, radiance);
+        tracePacket(s, reflected, depth + 1, weight * reflectWeight, sub, counts);
+        const auto traced = mirror & maskFromBits<T>(bits);
+        radiance = select(traced, radiance + reflectWeight * sub, radiance);
     }
 }
 
@@ -160,8 +167,8 @@ void addSecondaryRays(const PreparedScene<T>& s, const LaneMaterials<T>& g,
 // SPEC §3, computed for all lanes at once, with the shadow, reflected and
 // refracted rays of all lanes traced as packets.
 template <typename T>
-void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth, Vec3x<T>& radiance,
-                 RayCounts& counts) {
+void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth,
+                 const typename Simd<T>::type& weight, Vec3x<T>& radiance, RayCounts& counts) {
     using V = typename Simd<T>::type;
     V tHit, kHit;
     sceneClosestHits(s.spheres, s.useBvh ? s.bvh.get() : nullptr, rays, tHit, kHit);
@@ -176,7 +183,7 @@ void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth,
     if (laneBits(g.checker & hit)) kd = select(g.checker, checkerLanes(g, sp.p, sp.outward), kd);
     radiance = select(hit, Vec3x<T>::broadcast(s.ambient) * kd, radiance);
     addDirectLight(s, g, sp, hit, kHit, kd, radiance, counts);
-    if (depth < s.maxDepth) addSecondaryRays(s, g, sp, hit, kHit, depth, radiance, counts);
+    if (depth < s.maxDepth) addSecondaryRays(s, g, sp, hit, kHit, depth, weight, radiance, counts);
 }
 
 template <typename T>
@@ -185,7 +192,7 @@ Vec<T> kernelTraceRay(const PreparedScene<T>& s, const Ray<T>& ray, int depth, R
     packet.set(0, ray.origin, ray.dir, ray.originSphere, ray.intoOrigin);
     packet.fromCamera = ray.fromCamera;
     Vec3x<T> radiance;
-    tracePacket(s, packet, depth, radiance, counts);
+    tracePacket(s, packet, depth, typename Simd<T>::type{} + T(1), radiance, counts);
     return radiance.lane(0);
 }
 
@@ -205,7 +212,7 @@ void traceCameraPacket(const PreparedScene<T>& s, typename Simd<T>::type x,
         RayPacket<T>::of(Vec3x<T>::broadcast(cam.origin), dir, V{} - T(1),
                          typename RayPacket<T>::Mask{}, (1u << m) - 1, true);
     counts.camera += m;
-    tracePacket(s, packet, 0, radiance, counts);
+    tracePacket(s, packet, 0, V{} + T(1), radiance, counts);
 }
 
 // Camera rays for `count` samples in packets; place(first, m, x, y) puts the

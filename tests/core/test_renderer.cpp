@@ -113,6 +113,28 @@ TEST(Renderer, EveryRepositoryScene_FloatAndDoubleRendersAgree) {
     EXPECT_GT(scenes, 0u);
 }
 
+// The planner's deep check (quality_target.cpp) follows only rays of weight
+// 1e-4 or more: on glass.json at depth 16 that ends the glass balls' inner
+// reflections (kr 0.1) after three, and changes no pixel by a code.
+TEST(Renderer, PruningWeight_GlassAtDepth16_FewerRaysAndNoPixelOffByACode) {
+    Scene scene = loadScene(std::filesystem::path(WHITTED_SCENES_DIR) / "glass.json");
+    scene.render.width = 160;
+    scene.render.height = 120;
+    scene.render.samplesPerPixel = 1;
+    scene.render.maxDepth = 16;
+    const RenderResult full = render(scene, oneShotOptions());
+    RenderOptions pruned = oneShotOptions();
+    pruned.pruneBelowWeight = 1e-4;
+    const RenderResult light = render(scene, pruned);
+    const double largest = measureError(light.image, full.image).largest;
+    const double share = double(light.rays.total()) / double(full.rays.total());
+    std::cout << "glass.json at depth 16, pruned below 1e-4: largest difference " << largest
+              << " codes, " << share << " of the rays\n";
+    EXPECT_GT(largest, 0.0);  // something was pruned
+    EXPECT_LE(largest, 1.0);
+    EXPECT_LT(share, 0.8);
+}
+
 TEST(Renderer, RayCounts_SameForOneAndTwoThreadsAndProgressive) {
     const Scene scene = smallSeed(5, Precision::Float);
     const RayCounts one = render(scene, options(1, 16, false)).rays;

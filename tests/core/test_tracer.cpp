@@ -300,6 +300,34 @@ TEST_P(ShadingTest, FacingMirrors_EachDepthAddsOneBounce) {
     }
 }
 
+TEST_P(ShadingTest, FacingMirrors_PruningWeightEndsAPathLighterThanIt) {
+    Scene s = scene();
+    s.ambient = {0.1, 0.1, 0.1};
+    Material m = test::makeMaterial("mirror", {0.2, 0.2, 0.2});
+    m.reflectivity = 0.5;
+    s.materials = {m};
+    s.spheres = {test::makeSphere("A", {0, 0, 5}, 1, "mirror"),
+                 test::makeSphere("B", {0, 0, -5}, 1, "mirror")};
+    s.render.maxDepth = 10;
+    // The bounces pass on 0.5, 0.25, 0.125, ...: a ray of weight 0.25 is still
+    // traced at 0.25 (at or above), not at 0.26; at 0.2 the third is not.
+    const struct {
+        double prune;
+        int reflections;
+        double colour;
+    } cases[] = {{0.25, 2, 0.035}, {0.26, 1, 0.03}, {0.2, 2, 0.035}, {0.1, 3, 0.0375}};
+    for (const auto& c : cases) {
+        RenderOptions o = oneShotOptions();
+        o.threads = 1;
+        o.pruneBelowWeight = c.prune;
+        const RenderResult r = render(s, o);
+        const float* p = r.image.pixel(r.image.width / 2, r.image.height / 2);
+        const std::string label = "prune below " + std::to_string(c.prune);
+        test::expectColour({p[0], p[1], p[2]}, Vec3(c.colour), label.c_str());
+        EXPECT_EQ(r.rays.reflection, std::uint64_t(c.reflections)) << label;
+    }
+}
+
 TEST_P(ShadingTest, Glass_AddsTransparencyTimesWhatIsBehind) {
     Scene s = scene();
     s.ambient = {0.5, 0.5, 0.5};

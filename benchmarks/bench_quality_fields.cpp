@@ -2,10 +2,10 @@
 // on (issue 15): other counts, spreads and seeds than test_quality_target's
 // and bench_quality's. For each render: the depth chosen, the largest error
 // the plan's probe showed for it, and what the render measured against a
-// converged reference (double, 512 samples). Where a target is missed, the
+// converged reference (double, 512 samples, kDeepReferenceDepth). Where a target is missed, the
 // worst pixel is examined: what the chosen depth cuts off there, at the
 // picture's size with 64 samples, what the probe's pixel centre over it
-// showed, and how far the reference itself moves there three levels deeper.
+// showed, and how far the reference itself moves there five levels deeper.
 // A large cut where the probe showed none is a feature too small for the
 // probe to see; a reference that moves is not converged there.
 // Usage: bench_quality_fields [FIRST LAST [WIDTH]] (default 1 8 160; the
@@ -62,10 +62,12 @@ Pixel worstPixel(const Image& image, const Image& reference) {
     return worst;
 }
 
-// How far the reference moves at pixel (x, y) from its own depth (14, as
-// convergedReference() renders it) to three levels deeper, in double with
-// 256 samples: where light trapped in glass comes out later, the reference
-// is not converged there, and it may be the reference that is off.
+// How far the reference moves at pixel (x, y) from its own depth
+// (kDeepReferenceDepth) to five levels deeper, in double with 256 samples:
+// where light trapped in glass comes out later, the reference is not
+// converged there, and it may be the reference that is off.
+constexpr int kDeeperThanTheReference = kDeepReferenceDepth + 5;
+
 double referenceMovesAt(Scene scene, int x, int y) {
     scene.render.precision = Precision::Double;
     scene.render.samplesPerPixel = 256;
@@ -75,7 +77,7 @@ double referenceMovesAt(Scene scene, int x, int y) {
         scene.render.maxDepth = depth;
         return render(scene, options).image;
     };
-    return codesAt(at(14), at(17), x, y);
+    return codesAt(at(kDeepReferenceDepth), at(kDeeperThanTheReference), x, y);
 }
 
 // What the chosen depth cuts off at the worst pixel, with samples at the
@@ -96,8 +98,9 @@ std::string whyMissed(const Scene& scene, const QualityCheck& c, const Image& re
     char text[300];
     std::snprintf(text, sizeof text,
                   "pixel (%d, %d): depth %d against %d there %.0f codes at 64 samples, "
-                  "%.0f at the probe's centre; the reference, depth 14 against 17 there: %.0f",
+                  "%.0f at the probe's centre; the reference, depth %d against %d there: %.0f",
                   worst.x, worst.y, p.maxDepth, p.referenceDepth, cut, atCentre,
+                  kDeepReferenceDepth, kDeeperThanTheReference,
                   referenceMovesAt(scene, worst.x, worst.y));
     return text;
 }
@@ -142,7 +145,7 @@ int main(int argc, char** argv) {
     int renders = 0, met = 0, promised = 0, promisedMet = 0;
     for (int seed = first; seed <= last; ++seed) {
         const Scene scene = field(seed, width);
-        const Image reference = convergedReference(scene);
+        const Image reference = convergedReference(scene, 512, kDeepReferenceDepth);
         for (const QualityTarget& target : {previewQuality(), finalQuality()}) {
             const QualityCheck c = checkQuality(scene, target, reference);
             ++renders;

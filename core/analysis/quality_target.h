@@ -13,12 +13,14 @@
 // often that is enough), or, where the depth alone is over M and the target
 // cannot be met, what it would get at a depth that fits. Where the target
 // limits the largest error, the probe's depth is checked in one-sample
-// renders of the whole picture (a feature of a few pixels can lie between the
-// probe's centres; there the depth gets half the largest error), and a depth
-// whose centres fail only by the largest error is judged with samples of the
-// picture's pixels there. Both errors are measured, not bounded: the estimate
-// of what the depth cuts off comes from the probe and the picture, that of
-// the sampling from the render's own samples.
+// renders of the whole picture against depth 16 (a feature of a few pixels
+// can lie between the probe's centres, and light trapped in glass can come
+// out more than three levels deeper; there the depth gets half the largest
+// error), and a depth whose centres fail only by the largest error is
+// judged with samples of the picture's pixels there. Both errors are
+// measured, not bounded: the estimate of what the depth cuts off comes from
+// the probe and the picture, that of the sampling from the render's own
+// samples.
 #pragma once
 
 #include <cstdint>

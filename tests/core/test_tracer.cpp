@@ -275,15 +275,20 @@ TEST_P(ShadingTest, Mirror_AddsReflectivityTimesBackground) {
     EXPECT_EQ(one, centrePixel(s));
 }
 
-TEST_P(ShadingTest, FacingMirrors_EachDepthAddsOneBounce) {
-    Scene s = scene();
+// Two mirrors of reflectivity 0.5 facing each other through the camera: A
+// at z = 5 in front, B at z = -5 behind, so the centre's ray bounces between them.
+Scene facingMirrors(Scene s) {
     s.ambient = {0.1, 0.1, 0.1};
     Material m = test::makeMaterial("mirror", {0.2, 0.2, 0.2});
     m.reflectivity = 0.5;
     s.materials = {m};
-    // A at z = 5 in front, B at z = -5 behind the camera: the ray bounces between them.
     s.spheres = {test::makeSphere("A", {0, 0, 5}, 1, "mirror"),
                  test::makeSphere("B", {0, 0, -5}, 1, "mirror")};
+    return s;
+}
+
+TEST_P(ShadingTest, FacingMirrors_EachDepthAddsOneBounce) {
+    Scene s = facingMirrors(scene());
     // Each hit adds e = 0.1 * 0.2 = 0.02 weighted by 0.5^bounce:
     // depth 0: 0.02, 1: 0.03, 2: 0.035, 3: 0.0375.
     const double expected[] = {0.02, 0.03, 0.035, 0.0375};
@@ -301,13 +306,7 @@ TEST_P(ShadingTest, FacingMirrors_EachDepthAddsOneBounce) {
 }
 
 TEST_P(ShadingTest, FacingMirrors_PruningWeightEndsAPathLighterThanIt) {
-    Scene s = scene();
-    s.ambient = {0.1, 0.1, 0.1};
-    Material m = test::makeMaterial("mirror", {0.2, 0.2, 0.2});
-    m.reflectivity = 0.5;
-    s.materials = {m};
-    s.spheres = {test::makeSphere("A", {0, 0, 5}, 1, "mirror"),
-                 test::makeSphere("B", {0, 0, -5}, 1, "mirror")};
+    Scene s = facingMirrors(scene());
     s.render.maxDepth = 10;
     // The bounces pass on 0.5, 0.25, 0.125, ...: a ray of weight 0.25 is still
     // traced at 0.25 (at or above), not at 0.26; at 0.2 the third is not.

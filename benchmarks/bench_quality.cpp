@@ -1,8 +1,9 @@
 // Rendering to a quality (issue 15) on every shipped scene and on a generated
 // field: for each preset, the depth and mean samples chosen, the PSNR and
 // largest error measured against a converged render (double, 512 samples,
-// kDeepReferenceDepth), against the fixed preset's settings (render_presets.h) and the
-// fewest fixed samples that would meet the target at the chosen depth.
+// kDeepReferenceDepth), against the fixed preset's settings
+// (render_presets.h) and the fewest fixed samples that would meet the target
+// at the chosen depth.
 // Times of a few milliseconds say little alone on a shared machine: where ours
 // and the preset together take under a second, they are run again in pairs,
 // one after the other, and the medians are printed with the median of the

@@ -2,10 +2,11 @@
 // on (issue 15): other counts, spreads and seeds than test_quality_target's
 // and bench_quality's. For each render: the depth chosen, the largest error
 // the plan's probe showed for it, and what the render measured against a
-// converged reference (double, 512 samples, kDeepReferenceDepth). Where a target is missed, the
-// worst pixel is examined: what the chosen depth cuts off there, at the
-// picture's size with 64 samples, what the probe's pixel centre over it
-// showed, and how far the reference itself moves there five levels deeper.
+// converged reference (double, 512 samples, kDeepReferenceDepth). Where a
+// target is missed, the worst pixel is examined: what the chosen depth cuts
+// off there, at the picture's size with 64 samples, what the probe's pixel
+// centre over it showed, and how far the reference itself moves there five
+// levels deeper.
 // A large cut where the probe showed none is a feature too small for the
 // probe to see; a reference that moves is not converged there.
 // Usage: bench_quality_fields [FIRST LAST [WIDTH]] (default 1 8 160; the

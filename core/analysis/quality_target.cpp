@@ -46,9 +46,11 @@ constexpr double kMostRenderPixelsJudged = 0.25;
 constexpr double kOneThreadProbeSeconds = 0.5e-3;
 // How much deeper the render a depth is measured against goes.
 constexpr int kLookAhead = 3;
-// The renders of the check at the picture's size (checkDepthAtPictureSize())
-// follow no ray whose path passes on less than this weight: at most about a
-// code near black for a ray of radiance 3. A clear glass ball's inner
+// The renders at the picture's own size (checkDepthAtPictureSize(), and the
+// samples of largestWithSamples()) follow no ray whose path passes on less
+// than this weight: at most about a code near black for a ray of radiance 3.
+// Both depths compared are rendered so, so the difference is what the
+// shallower depth cuts off of the rays that matter. A clear glass ball's inner
 // reflections (kr 0.1) end after three, instead of running to the depth the
 // check looks at, while light kept at 0.9 a bounce among glass balls is
 // followed to the end.
@@ -302,10 +304,10 @@ DepthError pictureDepthError(ProbeRenders& probes, QualityPlan& plan, int depth,
 // reaches kDeepestPlanned. It is checked against kDeepestPlanned, not three
 // levels deeper: light trapped among glass balls can come out five levels or
 // more past a depth (on bench_quality_fields' seventeenth field a pixel
-// changes by 5 codes from depth 8 to 11, and by 78 from 12 to 14). It costs two one-sample renders of the
-// picture where the probe's depth holds, against the two or more samples a
-// pixel such a render takes; the deep one follows only the rays that can
-// still matter (kPictureCheckPruneWeight).
+// changes by 5 codes from depth 8 to 11, and by 78 from 12 to 14). It costs
+// two one-sample renders of the picture where the probe's depth holds,
+// against the two or more samples a pixel such a render takes; the deep one
+// follows only the rays that can still matter (kPictureCheckPruneWeight).
 void checkDepthAtPictureSize(ProbeRenders& probes, int maxSamples, QualityPlan& plan) {
     if (!plan.target.largestCodes || plan.depthGiven || plan.depthShort ||
         probes.probeIsThePicture())

@@ -122,11 +122,12 @@ class ProbeRenders {
         return probe_.render.width == renderWidth_ && probe_.render.height == renderHeight_;
     }
 
-    // The picture's centres at its own size at `depth`.
-    const Image& pictureAt(int depth, QualityPlan& plan) {
-        auto found = pictureByDepth_.find(depth);
+    // The picture at its own size at `depth`, `samples` a pixel (1: its centres).
+    const Image& pictureAt(int depth, QualityPlan& plan, int samples) {
+        const std::pair key{depth, samples};
+        auto found = pictureByDepth_.find(key);
         if (found != pictureByDepth_.end()) return found->second;
-        return pictureByDepth_.emplace(depth, atRenderSize(depth, plan, 1, {})).first->second;
+        return pictureByDepth_.emplace(key, atRenderSize(depth, plan, samples, {})).first->second;
     }
 
     // The `regions` of the picture at its own size, at `depth` with `samples`
@@ -166,8 +167,8 @@ class ProbeRenders {
     bool validated_ = false;
     bool oneThread_ = true;
     BvhCache cache_;
-    std::map<int, Image> byDepth_;  // a map, so references stay valid
-    std::map<int, Image> pictureByDepth_;
+    std::map<int, Image> byDepth_;                         // a map, so references stay valid
+    std::map<std::pair<int, int>, Image> pictureByDepth_;  // by depth and samples
 };
 
 struct DepthError {
@@ -191,10 +192,36 @@ double codesApart(const float* a, const float* b) {
     return 255.0 * displayDifference(a, b);
 }
 
-// The render's pixels under the probe's pixels where two probes differ by
-// more than `codes`, as rectangles (one for each run of such probe pixels
-// along a row), and the largest difference of the probe's other pixels. Each
-// of the render's pixels lies under one probe pixel: the probe pixel's edges
+// Two renders of one grid (the probe's or the picture's) at two depths: at
+// the pixels' centres, and where the picture is also checked with several
+// samples a pixel, those too.
+struct DepthPair {
+    const Image& shallow;
+    const Image& deep;
+    const Image* shallowSampled = nullptr;
+    const Image* deepSampled = nullptr;
+    int samples = 1;
+
+    // Codes apart at a pixel: the larger of the centres' and the samples'.
+    double codes(int x, int y) const {
+        const double centres = codesApart(shallow.pixel(x, y), deep.pixel(x, y));
+        if (!shallowSampled) return centres;
+        return std::max(centres, codesApart(shallowSampled->pixel(x, y), deepSampled->pixel(x, y)));
+    }
+    // Whether a pixel may hold a sliver over `limit`: its centres are over it,
+    // or its samples' mean over 1/n of it (one of n samples sees a sliver,
+    // and their mean shows 1/n of it).
+    bool over(int x, int y, double limit) const {
+        if (codesApart(shallow.pixel(x, y), deep.pixel(x, y)) > limit) return true;
+        return shallowSampled &&
+               samples * codesApart(shallowSampled->pixel(x, y), deepSampled->pixel(x, y)) > limit;
+    }
+};
+
+// The render's pixels under the grid's pixels that may be over `codes`
+// (DepthPair::over()), as rectangles (one for each run of such grid pixels
+// along a row), and the largest difference of the grid's other pixels. Each
+// of the render's pixels lies under one grid pixel: the grid pixel's edges
 // rounded down to the render's.
 struct RenderPixels {
     std::vector<PixelRect> rects;
@@ -202,22 +229,21 @@ struct RenderPixels {
     double largestElsewhere = 0.0;
 };
 
-RenderPixels renderPixelsUnder(const Image& probe, const Image& deeper, double codes, int width,
-                               int height) {
+RenderPixels renderPixelsUnder(const DepthPair& pair, double codes, int width, int height) {
     RenderPixels under;
-    const double across = double(width) / probe.width, down = double(height) / probe.height;
-    for (int py = 0; py < probe.height; ++py) {
+    const Image& grid = pair.shallow;
+    const double across = double(width) / grid.width, down = double(height) / grid.height;
+    for (int py = 0; py < grid.height; ++py) {
         const int y0 = int(py * down), y1 = int((py + 1) * down);
         constexpr int kNoRun = -1;  // not std::optional: GCC 12 warns it may be unset
         int runStart = kNoRun;
-        for (int px = 0; px <= probe.width; ++px) {
-            const double d =
-                px == probe.width ? 0.0 : codesApart(probe.pixel(px, py), deeper.pixel(px, py));
-            if (d > codes) {
+        for (int px = 0; px <= grid.width; ++px) {
+            if (px < grid.width && pair.over(px, py, codes)) {
                 if (runStart == kNoRun) runStart = px;
                 continue;
             }
-            under.largestElsewhere = std::max(under.largestElsewhere, d);
+            if (px < grid.width)
+                under.largestElsewhere = std::max(under.largestElsewhere, pair.codes(px, py));
             if (runStart == kNoRun || y1 == y0) {
                 runStart = kNoRun;
                 continue;
@@ -254,19 +280,17 @@ bool largestAtCentresOnly(const DepthError& e, const QualityTarget& t, double ms
 
 // The largest error of `depth` against `reference` as the picture's own
 // pixels show it with kDepthLargestSamples each, the same samples at both,
-// where the centres of `shallow` and `deep` (the probe's or the picture's)
-// differ by more than `largestShare` of the limit; with the other centres'
-// largest. Nothing where those pixels are too many. At the picture's own
-// pixels, not the probe's: a probe's pixel is two to eight of the picture's
-// across, and averaging a sliver over it understated what one of the
-// picture's pixels shows (two of twelve generated fields missed their
-// target).
+// where the grid's pair may hold a sliver over `largestShare` of the limit;
+// with the grid's other pixels' largest. Nothing where those pixels are too
+// many. At the picture's own pixels, not the probe's: a probe's pixel is two
+// to eight of the picture's across, and averaging a sliver over it
+// understated what one of the picture's pixels shows (two of twelve
+// generated fields missed their target).
 std::optional<double> largestWithSamples(ProbeRenders& probes, QualityPlan& plan,
-                                         const Image& shallow, const Image& deep, int depth,
-                                         int reference, double largestShare) {
-    const RenderPixels over =
-        renderPixelsUnder(shallow, deep, largestShare * *plan.target.largestCodes,
-                          probes.renderWidth(), probes.renderHeight());
+                                         const DepthPair& pair, int depth, int reference,
+                                         double largestShare) {
+    const RenderPixels over = renderPixelsUnder(pair, largestShare * *plan.target.largestCodes,
+                                                probes.renderWidth(), probes.renderHeight());
     const double picture = double(probes.renderWidth()) * probes.renderHeight();
     if (double(over.count) > kMostRenderPixelsJudged * picture) return std::nullopt;
     auto sampled = [&](int at) {
@@ -277,20 +301,44 @@ std::optional<double> largestWithSamples(ProbeRenders& probes, QualityPlan& plan
                     largestDifference(sampled(depth), sampled(reference), over.rects));
 }
 
+// A pixel centre sees nothing of light trapped in glass that falls between
+// the centres: on bench_quality_fields' tenth field depth 10 cut 16.5 codes
+// off a pixel at 8 samples where its centre and its eight neighbours' showed
+// none. The smaller the limit, the thinner a sliver that can break it (one
+// sixteenth of a pixel 255 codes off breaks Final's 16), so besides its
+// centres the picture is checked with kPictureCheckCodes / limit samples a
+// pixel: two for Final, none for Preview; never more than the render takes.
+// They cost a Final a few of its hundred samples.
+constexpr double kPictureCheckCodes = 32.0;
+
+int pictureCheckSamples(double largestCodes, int maxSamples) {
+    const int samples = int(std::lround(kPictureCheckCodes / largestCodes));
+    return std::clamp(samples, 1, std::min(maxSamples, kDepthLargestSamples));
+}
+
 // The error of `depth` against `reference` at the picture's own size: its
-// pixels' centres, and where they differ by more than kPictureShareOfLargest
-// of the limit, samples (largestWithSamples()).
+// centres and pictureCheckSamples() a pixel, and where a pixel may hold a
+// sliver over kPictureShareOfLargest of the limit, kDepthLargestSamples
+// (largestWithSamples()). The MSE is the centres'.
 DepthError pictureDepthError(ProbeRenders& probes, QualityPlan& plan, int depth, int reference,
                              int maxSamples) {
-    const Image& shallow = probes.pictureAt(depth, plan);
-    const Image& deep = probes.pictureAt(reference, plan);
-    DepthError e = depthError(shallow, deep);
+    DepthPair pair{probes.pictureAt(depth, plan, 1), probes.pictureAt(reference, plan, 1)};
+    DepthError e = depthError(pair.shallow, pair.deep);
+    const double share = kPictureShareOfLargest * *plan.target.largestCodes;
+    bool anyOver = e.largest > share;
+    pair.samples = pictureCheckSamples(*plan.target.largestCodes, maxSamples);
+    if (pair.samples > 1) {
+        pair.shallowSampled = &probes.pictureAt(depth, plan, pair.samples);
+        pair.deepSampled = &probes.pictureAt(reference, plan, pair.samples);
+        const double sampledLargest = depthError(*pair.shallowSampled, *pair.deepSampled).largest;
+        e.largest = std::max(e.largest, sampledLargest);
+        anyOver = anyOver || pair.samples * sampledLargest > share;
+    }
     plan.depthLargestSamples = 1;
-    // Whatever the centres' largest: at the picture's size a centre off by
-    // more than the whole limit may still be a sliver.
-    if (maxSamples > 1 && e.largest > kPictureShareOfLargest * *plan.target.largestCodes)
-        e.largest = largestWithSamples(probes, plan, shallow, deep, depth, reference,
-                                       kPictureShareOfLargest)
+    // Whatever the largest: at the picture's size a pixel off by more than
+    // the whole limit may still be a sliver.
+    if (maxSamples > 1 && anyOver)
+        e.largest = largestWithSamples(probes, plan, pair, depth, reference, kPictureShareOfLargest)
                         .value_or(e.largest);
     return e;
 }
@@ -347,8 +395,8 @@ void planDepth(ProbeRenders& probes, std::optional<int> given, int maxSamples, Q
         DepthError e = depthError(shallow, deep);
         plan.depthLargestSamples = 1;
         if (maxSamples > 1 && largestAtCentresOnly(e, plan.target, mseShare))
-            e.largest = largestWithSamples(probes, plan, shallow, deep, depth, plan.referenceDepth,
-                                           kDepthShareOfLargest)
+            e.largest = largestWithSamples(probes, plan, {shallow, deep}, depth,
+                                           plan.referenceDepth, kDepthShareOfLargest)
                             .value_or(e.largest);
         plan.depthMse = e.mse;
         plan.depthLargest = e.largest;
@@ -402,6 +450,13 @@ void planPrecision(ProbeRenders& probes, QualityPlan& plan) {
                             .mse;
 }
 
+// The picture's check looked for slivers with more samples than its centres.
+std::string pictureSamplesWhy(const QualityPlan& p) {
+    const int samples = pictureCheckSamples(*p.target.largestCodes, p.sampling.maxSamples);
+    if (!p.depthAtPictureSize || samples == 1) return "";
+    return format(" at the centres or with %.0f samples a pixel", samples);
+}
+
 std::string depthWhy(const QualityPlan& p) {
     std::string why = "depth " + std::to_string(p.maxDepth) + (p.depthGiven ? " (given)" : "");
     why +=
@@ -414,13 +469,13 @@ std::string depthWhy(const QualityPlan& p) {
                      p.referenceDepth, p.probeWidth, p.probeHeight, p.depthMse);
     why += format(" (the target allows %.3g)", allowedMse(p.target.psnrDb));
     if (p.target.largestCodes)
-        why +=
-            format(" and %.3g codes at most (limit %.3g)", p.depthLargest, *p.target.largestCodes) +
-            (p.depthLargestSamples > 1
-                 ? format(", with %.0f samples a pixel of the picture where the centres "
-                          "differ most",
-                          p.depthLargestSamples)
-                 : std::string());
+        why += format(" and %.3g codes at most", p.depthLargest) + pictureSamplesWhy(p) +
+               format(" (limit %.3g)", *p.target.largestCodes) +
+               (p.depthLargestSamples > 1
+                    ? format(", with %.0f samples a pixel of the picture where the centres "
+                             "differ most",
+                             p.depthLargestSamples)
+                    : std::string());
     if (!p.depthShort) return why;
     why += "\nno depth up to " + std::to_string(kDeepestPlanned) +
            " leaves the samples their share: rays trapped in glass or between mirrors "

@@ -357,9 +357,10 @@ DepthError pictureDepthError(ProbeRenders& probes, QualityPlan& plan, int depth,
 // against the two or more samples a pixel such a render takes; the deep one
 // follows only the rays that can still matter (kPictureCheckPruneWeight).
 void checkDepthAtPictureSize(ProbeRenders& probes, int maxSamples, QualityPlan& plan) {
-    if (!plan.target.largestCodes || plan.depthGiven || plan.depthShort ||
-        probes.probeIsThePicture())
-        return;
+    if (!plan.target.largestCodes || plan.depthGiven || probes.probeIsThePicture()) return;
+    // A probe that found no depth that fits and is already at the deepest
+    // keeps its verdict: the picture cannot take it deeper.
+    if (plan.depthShort && plan.maxDepth >= kDeepestPlanned) return;
     for (int depth = plan.maxDepth; depth <= kDeepestPlanned; ++depth) {
         const int reference = std::max(depth + kLookAhead, kDeepestPlanned);
         const DepthError e = pictureDepthError(probes, plan, depth, reference, maxSamples);
@@ -368,7 +369,8 @@ void checkDepthAtPictureSize(ProbeRenders& probes, int maxSamples, QualityPlan& 
         plan.depthMse = e.mse;
         plan.depthLargest = e.largest;
         plan.depthAtPictureSize = true;
-        if (depthFits(e, plan.target, kPictureShareOfLargest)) return;
+        plan.depthShort = !depthFits(e, plan.target, kPictureShareOfLargest);
+        if (!plan.depthShort) return;
     }
     plan.depthShort = true;
 }

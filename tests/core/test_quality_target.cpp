@@ -219,6 +219,22 @@ TEST(QualityTarget, PictureCheckedWithSamples_SeesASliverBetweenTheCentres) {
     EXPECT_TRUE(c.met);
 }
 
+// bench_quality_fields' nineteenth field at 160x120: at Final its 80x60
+// probe found no depth that fits, and the plan took depth 11 ("the target may
+// be missed") without looking at the picture; the render was 30 codes off a
+// depth-19 reference where 16 are allowed. A plan short at the probe is
+// checked at the picture's size too, and goes on to the deepest depth
+// planned, where the render is 11.9 codes off (bench_quality_fields).
+TEST(QualityTarget, ShortAtTheProbe_CheckedAtThePicturesSizeToo) {
+    Scene field = sphereField(untunedField(19));
+    field.render.width = 160;
+    field.render.height = 120;
+    const QualityPlan plan = planQuality(field, finalQuality());
+    EXPECT_EQ(plan.maxDepth, kDeepestChosen) << plan.why;
+    EXPECT_TRUE(plan.depthAtPictureSize);
+    EXPECT_TRUE(plan.depthShort);
+}
+
 // On a dense glass field no depth up to the cap fits Final's share. Where
 // what depth 16 cuts off is over the whole limit of 16 codes, samples cannot
 // take it back, and the plan says a pixel is likely to be off by more: the

@@ -3,10 +3,10 @@
 // and bench_quality's. For each render: the depth chosen, the largest error
 // the plan's probe showed for it, and what the render measured against a
 // converged reference (double, 512 samples, kDeepReferenceDepth). Where a
-// target is missed, the worst pixel is examined: what the chosen depth cuts
-// off there, at the picture's size with 64 samples, what the probe's pixel
-// centre over it showed, and how far the reference itself moves there five
-// levels deeper.
+// target is missed, the render's worst pixel is examined: what the chosen
+// depth cuts off there, at the picture's size with 64 samples, what the
+// probe's pixel centre over it showed, and how far the reference itself moves
+// there five levels deeper.
 // A large cut where the probe showed none is a feature too small for the
 // probe to see; a reference that moves is not converged there.
 // Usage: bench_quality_fields [FIRST LAST [WIDTH]] (default 1 8 160; the
@@ -81,14 +81,14 @@ double referenceMovesAt(Scene scene, int x, int y) {
     return codesAt(at(kDeepReferenceDepth), at(kDeeperThanTheReference), x, y);
 }
 
-// What the chosen depth cuts off at the worst pixel, with samples at the
-// picture's size, what the probe's centre over that pixel showed, and how
+// What the chosen depth cuts off at the render's worst pixel, with samples at
+// the picture's size, what the probe's centre over that pixel showed, and how
 // far the reference there is from converged.
 std::string whyMissed(const Scene& scene, const QualityCheck& c, const Image& reference) {
     const QualityPlan& p = c.plan;
-    const Image shallow = renderAt(scene, p.maxDepth, 64);
-    const Pixel worst = worstPixel(shallow, reference);
-    const double cut = codesAt(shallow, renderAt(scene, p.referenceDepth, 64), worst.x, worst.y);
+    const Pixel worst = worstPixel(c.image, reference);
+    const double cut = codesAt(renderAt(scene, p.maxDepth, 64),
+                               renderAt(scene, p.referenceDepth, 64), worst.x, worst.y);
     Scene probe = scene;
     probe.render.width = p.probeWidth;
     probe.render.height = p.probeHeight;

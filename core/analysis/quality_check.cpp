@@ -35,7 +35,8 @@ QualityCheck checkQuality(const Scene& scene, const QualityTarget& target, const
     applyPlan(c.plan, planned, options);
     const RenderResult r = render(planned, options);
     c.seconds = secondsSince(start);
-    c.error = measureError(r.image, reference);
+    c.image = r.image;
+    c.error = measureError(c.image, reference);
     c.met = meetsTarget(c.error, target);
     c.rays = r.rays.total() + c.plan.probeRays;
     c.meanSamples = r.adaptive->meanSamples;

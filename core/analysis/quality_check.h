@@ -30,6 +30,7 @@ bool meetsTarget(const ErrorStats& error, const QualityTarget& target);
 
 struct QualityCheck {
     QualityPlan plan;
+    Image image;       // the render
     ErrorStats error;  // against the reference
     bool met = false;
     std::uint64_t rays = 0;  // the render's and the plan's probes'

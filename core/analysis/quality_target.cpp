@@ -353,9 +353,10 @@ DepthError pictureDepthError(ProbeRenders& probes, QualityPlan& plan, int depth,
 // levels deeper: light trapped among glass balls can come out five levels or
 // more past a depth (on bench_quality_fields' seventeenth field a pixel
 // changes by 5 codes from depth 8 to 11, and by 78 from 12 to 14). It costs
-// two one-sample renders of the picture where the probe's depth holds,
-// against the two or more samples a pixel such a render takes; the deep one
-// follows only the rays that can still matter (kPictureCheckPruneWeight).
+// two one-sample renders of the picture where the probe's depth holds (and
+// for Final two of two samples, pictureCheckSamples()), against the two or
+// more samples a pixel such a render takes; the deep ones follow only the
+// rays that can still matter (kPictureCheckPruneWeight).
 void checkDepthAtPictureSize(ProbeRenders& probes, int maxSamples, QualityPlan& plan) {
     if (!plan.target.largestCodes || plan.depthGiven || probes.probeIsThePicture()) return;
     // A probe that found no depth that fits and is already at the deepest

@@ -202,19 +202,20 @@ struct DepthPair {
     const Image* deepSampled = nullptr;
     int samples = 1;
 
-    // Codes apart at a pixel: the larger of the centres' and the samples'.
-    double codes(int x, int y) const {
-        const double centres = codesApart(shallow.pixel(x, y), deep.pixel(x, y));
-        if (!shallowSampled) return centres;
-        return std::max(centres, codesApart(shallowSampled->pixel(x, y), deepSampled->pixel(x, y)));
+    struct Apart {
+        double centres = 0.0, sampled = 0.0;  // codes
+    };
+    Apart at(int x, int y) const {
+        Apart a{codesApart(shallow.pixel(x, y), deep.pixel(x, y))};
+        if (shallowSampled)
+            a.sampled = codesApart(shallowSampled->pixel(x, y), deepSampled->pixel(x, y));
+        return a;
     }
     // Whether a pixel may hold a sliver over `limit`: its centres are over it,
     // or its samples' mean over 1/n of it (one of n samples sees a sliver,
     // and their mean shows 1/n of it).
-    bool over(int x, int y, double limit) const {
-        if (codesApart(shallow.pixel(x, y), deep.pixel(x, y)) > limit) return true;
-        return shallowSampled &&
-               samples * codesApart(shallowSampled->pixel(x, y), deepSampled->pixel(x, y)) > limit;
+    bool over(const Apart& a, double limit) const {
+        return a.centres > limit || samples * a.sampled > limit;
     }
 };
 
@@ -238,12 +239,13 @@ RenderPixels renderPixelsUnder(const DepthPair& pair, double codes, int width, i
         constexpr int kNoRun = -1;  // not std::optional: GCC 12 warns it may be unset
         int runStart = kNoRun;
         for (int px = 0; px <= grid.width; ++px) {
-            if (px < grid.width && pair.over(px, py, codes)) {
+            const DepthPair::Apart apart = px < grid.width ? pair.at(px, py) : DepthPair::Apart{};
+            if (pair.over(apart, codes)) {
                 if (runStart == kNoRun) runStart = px;
                 continue;
             }
-            if (px < grid.width)
-                under.largestElsewhere = std::max(under.largestElsewhere, pair.codes(px, py));
+            under.largestElsewhere =
+                std::max({under.largestElsewhere, apart.centres, apart.sampled});
             if (runStart == kNoRun || y1 == y0) {
                 runStart = kNoRun;
                 continue;
@@ -313,7 +315,7 @@ constexpr double kPictureCheckCodes = 32.0;
 
 int pictureCheckSamples(double largestCodes, int maxSamples) {
     const int samples = int(std::lround(kPictureCheckCodes / largestCodes));
-    return std::clamp(samples, 1, std::min(maxSamples, kDepthLargestSamples));
+    return std::clamp(samples, 1, std::clamp(maxSamples, 1, kDepthLargestSamples));
 }
 
 // The error of `depth` against `reference` at the picture's own size: its

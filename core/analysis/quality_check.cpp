@@ -1,6 +1,7 @@
 #include "analysis/quality_check.h"
 
 #include <chrono>
+#include <utility>
 
 #include "tracer/renderer.h"
 
@@ -33,9 +34,9 @@ QualityCheck checkQuality(const Scene& scene, const QualityTarget& target, const
     Scene planned = scene;
     RenderOptions options = oneShotOptions();
     applyPlan(c.plan, planned, options);
-    const RenderResult r = render(planned, options);
+    RenderResult r = render(planned, options);
     c.seconds = secondsSince(start);
-    c.image = r.image;
+    c.image = std::move(r.image);
     c.error = measureError(c.image, reference);
     c.met = meetsTarget(c.error, target);
     c.rays = r.rays.total() + c.plan.probeRays;

@@ -326,20 +326,18 @@ DepthError pictureDepthError(ProbeRenders& probes, QualityPlan& plan, int depth,
                              int maxSamples) {
     DepthPair pair{probes.pictureAt(depth, plan, 1), probes.pictureAt(reference, plan, 1)};
     DepthError e = depthError(pair.shallow, pair.deep);
-    const double share = kPictureShareOfLargest * *plan.target.largestCodes;
-    bool anyOver = e.largest > share;
+    DepthPair::Apart largest{e.largest};
     pair.samples = pictureCheckSamples(*plan.target.largestCodes, maxSamples);
     if (pair.samples > 1) {
         pair.shallowSampled = &probes.pictureAt(depth, plan, pair.samples);
         pair.deepSampled = &probes.pictureAt(reference, plan, pair.samples);
-        const double sampledLargest = depthError(*pair.shallowSampled, *pair.deepSampled).largest;
-        e.largest = std::max(e.largest, sampledLargest);
-        anyOver = anyOver || pair.samples * sampledLargest > share;
+        largest.sampled = depthError(*pair.shallowSampled, *pair.deepSampled).largest;
+        e.largest = std::max(e.largest, largest.sampled);
     }
     plan.depthLargestSamples = 1;
     // Whatever the largest: at the picture's size a pixel off by more than
     // the whole limit may still be a sliver.
-    if (maxSamples > 1 && anyOver)
+    if (maxSamples > 1 && pair.over(largest, kPictureShareOfLargest * *plan.target.largestCodes))
         e.largest = largestWithSamples(probes, plan, pair, depth, reference, kPictureShareOfLargest)
                         .value_or(e.largest);
     return e;

@@ -30,7 +30,7 @@ Timed timedTiles(Scene scene, int samples, const std::vector<PixelRect>& tiles, 
                  const StopPredicate& stop) {
     scene.render.samplesPerPixel = samples;
     RenderOptions options = oneShotOptions();
-    options.sceneValidated = true;  // overheadOf() rendered it
+    options.sceneValidated = true;  // renderOverheadSeconds() rendered it
     options.regions = tiles;
     options.bvhCache = &trees;
     Timed best;
@@ -46,17 +46,15 @@ double perRay(const Timed& t) {
     return t.cpuSeconds / std::max(1.0, t.rays);
 }
 
-// The render of one pixel, in the CPU time of this thread, which prepares
-// the scene: the overhead, as any other render would pay it.
-double overheadOf(const Scene& scene, const StopPredicate& stop) {
+}  // namespace
+
+double renderOverheadSeconds(const Scene& scene, const StopPredicate& stop) {
     RenderOptions options = oneShotOptions();
     options.regions = {PixelRect{0, 0, 1, 1}};
     const double start = threadCpuSeconds();
     render(scene, options, {}, stop);
     return threadCpuSeconds() - start;
 }
-
-}  // namespace
 
 std::vector<PixelRect> probeTiles(int width, int height, int pixels) {
     if (double(width) * height <= pixels) return {PixelRect{0, 0, width, height}};
@@ -80,7 +78,8 @@ std::vector<PixelRect> probeTiles(int width, int height, int pixels) {
 
 SpeedProbe probeSpeed(const Scene& scene, int pixels, const StopPredicate& stop) {
     SpeedProbe probe;
-    probe.overheadSeconds = std::min(overheadOf(scene, stop), overheadOf(scene, stop));
+    probe.overheadSeconds =
+        std::min(renderOverheadSeconds(scene, stop), renderOverheadSeconds(scene, stop));
     const std::vector<PixelRect> tiles =
         probeTiles(scene.render.width, scene.render.height, pixels);
     for (const PixelRect& t : tiles) probe.pixels += t.width * t.height;

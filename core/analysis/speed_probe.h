@@ -55,6 +55,10 @@ std::vector<PixelRect> probeTiles(int width, int height, int pixels);
 SpeedProbe probeSpeed(const Scene& scene, int pixels = kSpeedProbePixels,
                       const StopPredicate& stop = {});
 
+// A render of one pixel of the scene, in the CPU time of the calling thread,
+// which prepares the scene: what any render pays before its first tile.
+double renderOverheadSeconds(const Scene& scene, const StopPredicate& stop = {});
+
 // The seconds of a render of the scene with its own settings that traces `rays`.
 double predictSeconds(const SpeedProbe& probe, const Scene& scene, double rays);
 

@@ -489,8 +489,6 @@ RenderResult render(const Scene& scene, const RenderOptions& options, const Tile
         throw std::invalid_argument(problem->jsonPath + ": " + problem->reason);
     if (auto problem = regionsProblem(options.regions, scene.render.width, scene.render.height))
         throw std::invalid_argument(*problem);
-    if (!options.regions.empty() && options.adaptive)
-        throw std::invalid_argument("an adaptive render covers the whole image, not a region");
     // Here, not in a worker: a WHITTED_KERNEL this CPU cannot run throws to the caller.
     activeKernel();
     const auto start = std::chrono::steady_clock::now();

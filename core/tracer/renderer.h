@@ -51,7 +51,9 @@ struct RenderOptions {
     // these limits (adaptive_sampling.h), at most maxSamples per pixel; the
     // scene's samples_per_pixel is not used. Samples come from
     // progressiveSample(), passes double the samples of the tiles that need
-    // them most, and the image is as deterministic as any other. Not with regions.
+    // them most, and the image is as deterministic as any other. With regions,
+    // only their tiles, judged among themselves: a sample of the picture's
+    // tiles whose samples and time stand for the whole's (target_prediction.h).
     std::optional<AdaptiveSampling> adaptive = std::nullopt;
     // Reflected and refracted rays whose path passes on less than this weight
     // are not traced, whatever the depth (PreparedScene::pruneBelow): for

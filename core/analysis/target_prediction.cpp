@@ -50,7 +50,8 @@ TargetPrediction predictRenderTo(const Scene& scene, const QualityTarget& target
     const RenderResult tiles = render(planned, options, {}, stop);
     if (!tiles.completed || !tiles.adaptive) return notPredicted(p, "stopped");
 
-    const double scale = picture / pixelsOf(options.regions);
+    p.tilesShare = pixelsOf(options.regions) / picture;
+    const double scale = 1.0 / p.tilesShare;
     p.meanSamples = tiles.adaptive->meanSamples;
     p.psnrDb = estimatedPsnr(p.plan, *tiles.adaptive);
     p.largestCodes = tiles.adaptive->estimatedLargest;

@@ -29,8 +29,9 @@ namespace whitted {
 
 struct TargetPrediction {
     bool predicted = false;
-    std::string cannot;  // why not, when not predicted
-    QualityPlan plan;    // the render's own: its depth, limits and reasons
+    std::string cannot;       // why not, when not predicted
+    QualityPlan plan;         // the render's own: its depth, limits and reasons
+    double tilesShare = 0.0;  // of the picture's pixels, rendered to predict it
     double meanSamples = 0.0;
     double psnrDb = 0.0;          // what the render's estimate will say (estimatedPsnr())
     double largestCodes = 0.0;    // the tiles' estimated largest error

@@ -12,6 +12,7 @@
 #include <QTest>
 
 #include "analysis/quality_check.h"
+#include "analysis/target_prediction.h"
 #include "document/quality_choice.h"
 #include "editor/main_window.h"
 #include "image/image_error.h"
@@ -109,6 +110,47 @@ TEST_F(QualityEditorTest, FinalShortcut_RendersToFinalsTarget_MeasuredAgainstACo
                                        .arg(frame.seconds, 0, 'f', 2)
                                        .arg(frame.qualityPlan->maxDepth)))
         << predicted.toStdString();
+}
+
+// Before a render to a target, the Render tab predicts it from the probes:
+// the plan the render then makes and its samples from a quarter of the
+// picture's tiles rendered to the target (core/analysis/target_prediction.h).
+// A picture of the fixture's 160x120 is rendered as fast as it is predicted.
+TEST_F(QualityEditorTest, RenderTab_PredictsARenderToTheTarget_TheDepthAndSamplesItThenTakes) {
+    const auto predictedFor = [&](const QualityTarget& target) {
+        return window->tradeoffRecord()->targetPrediction(doc->scene(), target);
+    };
+    ASSERT_TRUE(pressAndWait("Ctrl+2"));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return predictedFor(previewQuality()); }, 30000));
+    auto* time = child<QLabel>("predictedTime");
+    EXPECT_TRUE(time->text().startsWith(QStringLiteral(
+        "not predicted: a picture this small is rendered as fast as it is predicted")))
+        << time->text().toStdString();
+
+    ASSERT_TRUE(editAndWait([](Scene& s) {
+        s.render.width = 320;
+        s.render.height = 240;
+    }));
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] {
+            const TargetPrediction* p = predictedFor(previewQuality());
+            return p && p->predicted;
+        },
+        30000));
+    const TargetPrediction& p = *predictedFor(previewQuality());
+    const RenderFrame& frame = log->lastComplete;
+    ASSERT_TRUE(frame.qualityPlan && frame.qualityReached);
+    EXPECT_EQ(p.plan.maxDepth, frame.qualityPlan->maxDepth);
+    EXPECT_NEAR(p.meanSamples / frame.qualityReached->meanSamples, 1.0, 0.25);
+    EXPECT_TRUE(time->text().startsWith(QStringLiteral("about "))) << time->text().toStdString();
+    EXPECT_TRUE(time->text().contains(QStringLiteral(": depth %1, %2 samples per pixel on average")
+                                          .arg(frame.qualityPlan->maxDepth)
+                                          .arg(p.meanSamples, 0, 'f', 1)))
+        << time->text().toStdString();
+    const QString error = child<QLabel>("predictedError")->text();
+    EXPECT_TRUE(error.startsWith(
+        QStringLiteral("about %1 dB, no pixel off by more than about ").arg(p.psnrDb, 0, 'f', 1)))
+        << error.toStdString();
 }
 
 // The status bar and the export message: a range where tiles stopped at

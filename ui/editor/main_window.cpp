@@ -53,8 +53,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     // panels and the rest refresh (a few ms on a scene of 100,000 spheres).
     connect(&doc_, &SceneDocument::sceneChanged, this, &MainWindow::requestRender);
     connect(&quality_, &QualityChoice::changed, this, &MainWindow::requestRender);
-    connect(&doc_, &SceneDocument::sceneChanged, this,
-            [this] { predictor_.sceneChanged(doc_.scene()); });
+    const auto predict = [this] { predictor_.sceneChanged(doc_.scene(), quality_.target()); };
+    connect(&doc_, &SceneDocument::sceneChanged, this, predict);
+    connect(&quality_, &QualityChoice::changed, this, predict);
     // Before the Render tab refreshes: the renders' times are of the old content.
     connect(&doc_, &SceneDocument::sceneChanged, this, [this] {
         if (std::exchange(renderedRevision_, doc_.contentRevision()) != doc_.contentRevision())

@@ -109,6 +109,39 @@ QString PresetControls::errorText(const Prediction& p) {
     return tr("RMSE %1 of 255, %2 (%3)").arg(*p.rmseSrgb8, 0, 'f', 2).arg(psnr, p.errorSource);
 }
 
+QString PresetControls::targetTimeText(const TargetPrediction* p, const QString& reached) {
+    const QString last =
+        reached.isEmpty() ? QString() : tr("; the last one here took %1").arg(reached);
+    if (!p)
+        return tr("not predicted yet: each render to a target chooses its own depth and "
+                  "samples, which the probes predict once edits pause%1")
+            .arg(last);
+    if (!p->predicted)
+        return tr("not predicted: %1%2").arg(QString::fromStdString(p->cannot), last);
+    return tr("about %1 (%2 of it choosing the settings): depth %3, %4 samples per pixel on "
+              "average, from %5% of the picture's tiles rendered to the target%6")
+        .arg(secondsText(p->seconds()), secondsText(p->planSeconds))
+        .arg(p->plan.maxDepth)
+        .arg(p->meanSamples, 0, 'f', 1)
+        .arg(std::lround(100.0 * p->tilesShare))
+        .arg(last);
+}
+
+QString PresetControls::targetErrorText(const TargetPrediction* p,
+                                        const std::optional<QualityTarget>& target) {
+    const QString aim = QualityChoice::describe(target);
+    if (!p || !p->predicted)
+        return tr("the target, %1; the status bar shows the render's estimate").arg(aim);
+    const QString largest =
+        target->largestCodes
+            ? tr(", no pixel off by more than about %1 codes").arg(p->largestCodes, 0, 'f', 1)
+            : QString();
+    const QString predicted =
+        tr("about %1 dB%2 (the target, %3)").arg(p->psnrDb, 0, 'f', 1).arg(largest, aim);
+    // planQuality() found no depth that cuts off little enough: its words say by what.
+    return p->plan.depthShort ? tr("%1; the plan says it may be missed").arg(predicted) : predicted;
+}
+
 void PresetControls::choose(int index) {
     if (index <= 0) {  // Custom: nothing to set, show what the settings match
         refresh();
@@ -146,16 +179,10 @@ void PresetControls::refresh() {
     }
     const Prediction now = record_->predict(scene);
     if (target) {
-        // Depth and samples are chosen at the render: nothing measured yet says what they cost.
+        const TargetPrediction* ahead = record_->targetPrediction(scene, *target);
         const QString reached = quality_->lastReached(target->name);
-        time_->setText(reached.isEmpty()
-                           ? tr("not predicted: each render to a target chooses its own depth "
-                                "and samples (the status bar shows what it took)")
-                           : tr("not predicted: each render to a target chooses its own depth "
-                                "and samples; the last one here took %1")
-                                 .arg(reached));
-        error_->setText(tr("the target, %1; the status bar shows the render's estimate")
-                            .arg(QualityChoice::describe(target)));
+        time_->setText(targetTimeText(ahead, reached));
+        error_->setText(targetErrorText(ahead, target));
     } else {
         time_->setText(timeText(now));
         error_->setText(errorText(now));

@@ -15,7 +15,10 @@
 
 #include <QObject>
 
+#include <optional>
+
 #include "analysis/render_presets.h"
+#include "analysis/target_prediction.h"
 #include "scene/scene.h"
 
 class QComboBox;
@@ -46,6 +49,11 @@ class PresetControls : public QObject {
     // "1.2 s" and "RMSE 2.3 of 255, PSNR 41 dB" with their sources, as the labels show them.
     static QString timeText(const Prediction& p);
     static QString errorText(const Prediction& p);
+    // The same for a render to `target`, from the probes' prediction of it
+    // (null: not made yet) and what the last render to it here took.
+    static QString targetTimeText(const TargetPrediction* p, const QString& reached);
+    static QString targetErrorText(const TargetPrediction* p,
+                                   const std::optional<QualityTarget>& target);
 
   private:
     void choose(int index);

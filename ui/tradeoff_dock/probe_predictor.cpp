@@ -9,8 +9,8 @@ namespace whitted::ui {
 ProbePredictor::ProbePredictor(QObject* parent)
     : QObject(parent),
       requests_(
-          RequestThread<Scene>::Policy::LatestWins,
-          [this](Scene&& scene, quint64 ticket) { predict(std::move(scene), ticket); },
+          RequestThread<ProbeRequest>::Policy::LatestWins,
+          [this](ProbeRequest&& request, quint64 ticket) { predict(std::move(request), ticket); },
           lowerThisThreadsPriority) {
     qRegisterMetaType<std::shared_ptr<const whitted::ui::ProbePrediction>>();
     quiet_.setSingleShot(true);
@@ -19,15 +19,23 @@ ProbePredictor::ProbePredictor(QObject* parent)
     connect(this, &ProbePredictor::posted, this, &ProbePredictor::deliver, Qt::QueuedConnection);
 }
 
-void ProbePredictor::sceneChanged(const Scene& scene) {
-    waiting_ = scene;
+void ProbePredictor::sceneChanged(const Scene& scene, const std::optional<QualityTarget>& target) {
+    waiting_ = {scene, target};
     quiet_.start();
 }
 
-void ProbePredictor::predict(Scene&& scene, quint64 ticket) {
+void ProbePredictor::predict(ProbeRequest&& request, quint64 ticket) {
     auto result = std::make_shared<ProbePrediction>();
-    result->prediction = predictRender(scene, [&] { return requests_.stale(ticket); });
-    result->scene = std::move(scene);
+    const auto stale = [&] { return requests_.stale(ticket); };
+    // As the view renders to a target (render_worker.cpp): at most
+    // kDefaultMaxSamples a pixel, the depth chosen.
+    if (request.target)
+        result->toTarget =
+            predictRenderTo(request.scene, *request.target, kDefaultMaxSamples, stale);
+    else
+        result->prediction = predictRender(request.scene, stale);
+    result->scene = std::move(request.scene);
+    result->target = std::move(request.target);
     if (requests_.stale(ticket)) return;
     {
         std::lock_guard lock(outboxMutex_);

@@ -1,5 +1,6 @@
 // The Render tab's predictions for a scene never measured (issue 15, item 3):
-// core's predictRender() on a thread of its own, a moment after the last
+// core's predictRender() (or, when the view renders to a target,
+// predictRenderTo()) on a thread of its own, a moment after the last
 // edit (it renders small probes of the scene, a few tenths of a second on a
 // glass field, and would only compete with the view's render during a drag).
 // Its thread runs at a lower priority (base/thread_priority.h): the probes
@@ -17,15 +18,25 @@
 #include <memory>
 #include <mutex>
 
+#include <optional>
+
 #include "analysis/render_prediction.h"
+#include "analysis/target_prediction.h"
 #include "base/request_thread.h"
 #include "scene/scene.h"
 
 namespace whitted::ui {
 
+struct ProbeRequest {
+    Scene scene;
+    std::optional<QualityTarget> target;  // set: a render to it, not to the settings
+};
+
 struct ProbePrediction {
-    Scene scene;  // what was predicted: its content and render settings
-    RenderPrediction prediction;
+    Scene scene;                          // what was predicted: its content and render settings
+    RenderPrediction prediction;          // of the settings, when there is no target
+    std::optional<QualityTarget> target;  // set: a render to it was predicted instead
+    TargetPrediction toTarget;
 };
 
 class ProbePredictor : public QObject {
@@ -37,8 +48,9 @@ class ProbePredictor : public QObject {
     // How long after the last edit the prediction starts.
     static constexpr int kQuietMs = 400;
 
-    // Predicts `scene` once edits have paused for kQuietMs.
-    void sceneChanged(const Scene& scene);
+    // Predicts a render of `scene`, to `target` if set, once edits have
+    // paused for kQuietMs.
+    void sceneChanged(const Scene& scene, const std::optional<QualityTarget>& target);
 
   signals:
     // In the GUI thread.
@@ -47,15 +59,15 @@ class ProbePredictor : public QObject {
     void posted();
 
   private:
-    void predict(Scene&& scene, quint64 ticket);
+    void predict(ProbeRequest&& request, quint64 ticket);
     void deliver();  // GUI thread: takes the result and emits predicted()
 
     std::mutex outboxMutex_;
     std::shared_ptr<const ProbePrediction> outbox_;  // guarded by outboxMutex_
 
-    Scene waiting_;
+    ProbeRequest waiting_;
     QTimer quiet_;
-    RequestThread<Scene> requests_;
+    RequestThread<ProbeRequest> requests_;
 };
 
 }  // namespace whitted::ui

@@ -35,7 +35,8 @@ double work(const RenderSettings& r) {
 // The probes' error and rays for these settings, when they were made for them.
 const RenderPrediction* probeFor(const Scene& scene, const RenderSettings& want,
                                  const ProbePrediction* probe) {
-    if (!probe || !(probe->scene.render == want) || !sameSceneContent(scene, probe->scene))
+    if (!probe || probe->target || !(probe->scene.render == want) ||
+        !sameSceneContent(scene, probe->scene))
         return nullptr;
     return &probe->prediction;
 }

@@ -30,6 +30,16 @@ void TradeoffRecord::setProbePrediction(std::shared_ptr<const ProbePrediction> p
     emit changed();
 }
 
+const TargetPrediction* TradeoffRecord::targetPrediction(const Scene& scene,
+                                                         const QualityTarget& target) const {
+    if (!probe_ || !probe_->target || probe_->target->name != target.name ||
+        probe_->target->psnrDb != target.psnrDb ||
+        probe_->target->largestCodes != target.largestCodes ||
+        !(probe_->scene.render == scene.render) || !sameSceneContent(probe_->scene, scene))
+        return nullptr;
+    return &probe_->toTarget;
+}
+
 void TradeoffRecord::addViewRender(const Scene& scene, double seconds) {
     if (!std::exchange(firstViewRenderSeen_, true)) return;
     lastView_ = ViewRender{scene, seconds};

@@ -35,6 +35,10 @@ class TradeoffRecord : public QObject {
     void setProbePrediction(std::shared_ptr<const ProbePrediction> probe);
     const ProbePrediction* probePrediction() const { return probe_.get(); }
 
+    // The probes' prediction of a render of `scene` to `target`, once made
+    // for that very scene (content and settings) and target; null until then.
+    const TargetPrediction* targetPrediction(const Scene& scene, const QualityTarget& target) const;
+
     // The view's pace is the median of this many renders' (settings_prediction.h).
     static constexpr std::size_t kPaceRenders = 5;
 

@@ -524,10 +524,33 @@ TEST(Renderer, AdaptiveRender_CentresFirst_EstimatedErrorIsNoLowerThanTheErrorMe
                 centresError.rmseSrgb8 * centresError.rmseSrgb8, centres.adaptive->estimatedMse);
 }
 
-TEST(Renderer, AdaptiveRender_RefusesARegion) {
-    RenderOptions o = adaptiveOptions(1, false, 1.0, 8);
-    o.regions = {PixelRect{0, 0, 8, 8}};
-    EXPECT_THROW(render(smallSeed(1, Precision::Float), o), std::invalid_argument);
+// An adaptive render of regions (what predictRenderTo() renders) samples
+// their tiles only, each pixel as the whole render samples it: with a limit
+// no tile meets, every tile takes its passes up to the cap in both.
+TEST(Renderer, AdaptiveRender_OfRegions_TheirTilesOnly_AsTheWholeRendersThem) {
+    const Scene scene = smallSeed(1, Precision::Float);
+    const RenderOptions whole = adaptiveOptions(2, false, 0.0, 8);
+    RenderOptions parts = whole;
+    parts.regions = {PixelRect{16, 16, 16, 16}, PixelRect{48, 32, 16, 16}};
+    const RenderResult all = render(scene, whole);
+    const RenderResult some = render(scene, parts);
+    ASSERT_TRUE(some.adaptive);
+    EXPECT_EQ(some.adaptive->tiles, 2);
+    EXPECT_EQ(some.adaptive->fewestSamples, 8);
+    EXPECT_EQ(some.adaptive->passes, 3);  // 2, 4, 8
+    int inside = 0;
+    for (int y = 0; y < scene.render.height; ++y)
+        for (int x = 0; x < scene.render.width; ++x) {
+            const bool inRegion = (x >= 16 && x < 32 && y >= 16 && y < 32) ||
+                                  (x >= 48 && x < 64 && y >= 32 && y < 48);
+            for (int c = 0; c < 3; ++c) {
+                const float expected = inRegion ? all.image.pixel(x, y)[c] : 0.0f;
+                ASSERT_EQ(some.image.pixel(x, y)[c], expected) << x << "," << y;
+            }
+            inside += inRegion;
+        }
+    EXPECT_EQ(inside, 512);
+    EXPECT_LT(some.rays.total(), all.rays.total() / 5);
 }
 
 TEST(Renderer, InvalidScene_ThrowsInvalidArgument) {

@@ -714,11 +714,7 @@ void printSet(const Bench& b, const RaySet& set, const Options& o, int n, std::s
 }
 
 Bench makeBench(int n, const Options& o) {
-    FieldOptions field;
-    field.count = n;
-    Scene scene = sphereField(field);
-    scene.render.width = o.width;
-    scene.render.height = o.height;
+    Scene scene = sphereField({.count = n}, o.width, o.height);
     useAcceleration(Acceleration::bvh);
     Bench b{prepareScene<float>(scene), {}, {}, {}};
     useAcceleration(Acceleration::automatic);

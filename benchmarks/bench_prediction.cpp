@@ -17,11 +17,11 @@
 // predictRenderTo() expects against what the plan and render then take (the
 // faster of three when under a second).
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "analysis/quality_check.h"
@@ -64,25 +64,11 @@ void speedTable() {
     std::printf("\nwithin 25%%: %d of %d\n", within, total);
 }
 
-// What a render to `target` takes, as the CLI and the editor make it: the
-// plan, then the adaptive render; the faster of three when under a second.
-struct TargetRender {
-    QualityPlan plan;
-    RenderResult result;
-    double seconds = 0.0;
-};
-
-TargetRender renderTo(const Scene& scene, const QualityTarget& target) {
+// renderToTarget(), the faster of three when under a second.
+TargetRender fastestRenderTo(const Scene& scene, const QualityTarget& target) {
     TargetRender best;
     for (int attempt = 0; attempt < 3; ++attempt) {
-        const auto start = std::chrono::steady_clock::now();
-        TargetRender r;
-        r.plan = planQuality(scene, target);
-        Scene planned = scene;
-        RenderOptions options = oneShotOptions();
-        applyPlan(r.plan, planned, options);
-        r.result = render(planned, options);
-        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        TargetRender r = renderToTarget(scene, target);
         if (attempt == 0 || r.seconds < best.seconds) best = std::move(r);
         if (best.seconds > 1.0) break;
     }
@@ -103,7 +89,7 @@ void targetTable(int width, int height) {
                             target.name.c_str(), p.cannot.c_str());
                 continue;
             }
-            const TargetRender r = renderTo(n.scene, target);
+            const TargetRender r = fastestRenderTo(n.scene, target);
             const double rendered = estimatedPsnr(r.plan, *r.result.adaptive);
             const double rays = p.rays() / double(r.plan.probeRays + r.result.rays.total());
             const double seconds = p.seconds() / r.seconds;

@@ -252,11 +252,7 @@ int main(int argc, char** argv) {
                 o.ours == Acceleration::bvh ? "always the BVH" : "the tracer's own choice");
     printHeader();
     for (const int n : o.sizes) {
-        FieldOptions field;
-        field.count = n;
-        Scene scene = sphereField(field);
-        scene.render.width = o.width;
-        scene.render.height = o.height;
+        Scene scene = sphereField({.count = n}, o.width, o.height);
         Row row{n, measureTree(scene), {}, {}, {}, {}, {}};
         row.ours = renderWith(scene, o.ours, Precision::Float);
         BvhCache cache;

@@ -19,13 +19,8 @@ struct NamedScene {
 
 // `count` balls of app/field within `halfWidth` of the axis and `depth` deep.
 inline NamedScene generatedField(int count, std::uint32_t seed, double halfWidth, double depth) {
-    FieldOptions o;
-    o.count = count;
-    o.seed = seed;
-    o.halfWidth = halfWidth;
-    o.depth = depth;
     return {"generated: " + std::to_string(count) + " balls, seed " + std::to_string(seed),
-            sphereField(o)};
+            sphereField({.count = count, .seed = seed, .halfWidth = halfWidth, .depth = depth})};
 }
 
 inline std::vector<NamedScene> benchScenes(int width, int height,

@@ -44,6 +44,13 @@ Scene sphereField(const FieldOptions& o) {
     return s;
 }
 
+Scene sphereField(const FieldOptions& options, int width, int height) {
+    Scene s = sphereField(options);
+    s.render.width = width;
+    s.render.height = height;
+    return s;
+}
+
 FieldOptions untunedField(int n) {
     FieldOptions o;
     o.count = 40 + 37 * (n % 9);

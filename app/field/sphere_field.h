@@ -25,6 +25,9 @@ struct FieldOptions {
 // depth 5, 1 sample, float, 640x480. Balls may overlap.
 Scene sphereField(const FieldOptions& options);
 
+// The same field pictured at width x height: the tests' and benches' fields.
+Scene sphereField(const FieldOptions& options, int width, int height);
+
 // bench_quality_fields' field number `n` (issue 15): 40 to 336 balls, other
 // counts, spreads and seeds than any the quality targets were tuned on.
 FieldOptions untunedField(int n);

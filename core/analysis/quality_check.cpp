@@ -3,8 +3,6 @@
 #include <chrono>
 #include <utility>
 
-#include "tracer/renderer.h"
-
 namespace whitted {
 
 namespace {
@@ -26,22 +24,31 @@ bool meetsTarget(const ErrorStats& e, const QualityTarget& t) {
     return e.psnrSrgb8 >= t.psnrDb && (!t.largestCodes || e.largest <= *t.largestCodes);
 }
 
-QualityCheck checkQuality(const Scene& scene, const QualityTarget& target, const Image& reference) {
-    QualityCheck c;
+TargetRender renderToTarget(const Scene& scene, const QualityTarget& target) {
+    TargetRender r;
     const auto start = std::chrono::steady_clock::now();
-    c.plan = planQuality(scene, target);
-    c.planSeconds = secondsSince(start);
+    r.plan = planQuality(scene, target);
+    r.planSeconds = secondsSince(start);
     Scene planned = scene;
     RenderOptions options = oneShotOptions();
-    applyPlan(c.plan, planned, options);
-    RenderResult r = render(planned, options);
-    c.seconds = secondsSince(start);
-    c.image = std::move(r.image);
+    applyPlan(r.plan, planned, options);
+    r.result = render(planned, options);
+    r.seconds = secondsSince(start);
+    return r;
+}
+
+QualityCheck checkQuality(const Scene& scene, const QualityTarget& target, const Image& reference) {
+    TargetRender r = renderToTarget(scene, target);
+    QualityCheck c;
+    c.plan = std::move(r.plan);
+    c.planSeconds = r.planSeconds;
+    c.seconds = r.seconds;
+    c.image = std::move(r.result.image);
     c.error = measureError(c.image, reference);
     c.met = meetsTarget(c.error, target);
-    c.rays = r.rays.total() + c.plan.probeRays;
-    c.meanSamples = r.adaptive->meanSamples;
-    c.estimatedPsnr = estimatedPsnr(c.plan, *r.adaptive);
+    c.rays = r.result.rays.total() + c.plan.probeRays;
+    c.meanSamples = r.result.adaptive->meanSamples;
+    c.estimatedPsnr = estimatedPsnr(c.plan, *r.result.adaptive);
     return c;
 }
 

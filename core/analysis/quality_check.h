@@ -10,6 +10,7 @@
 #include "image/image.h"
 #include "image/image_error.h"
 #include "scene/scene.h"
+#include "tracer/renderer.h"
 
 namespace whitted {
 
@@ -27,6 +28,17 @@ Image convergedReference(Scene scene, int samples = 512, int depth = 14);
 inline constexpr int kDeepReferenceDepth = kDeepestChosen + 3;
 
 bool meetsTarget(const ErrorStats& error, const QualityTarget& target);
+
+// A render to a target as whitted-render and the editor make one: the plan,
+// then the adaptive render it chose.
+struct TargetRender {
+    QualityPlan plan;
+    RenderResult result;
+    double seconds = 0.0;  // on the wall: planning and rendering
+    double planSeconds = 0.0;
+};
+
+TargetRender renderToTarget(const Scene& scene, const QualityTarget& target);
 
 struct QualityCheck {
     QualityPlan plan;

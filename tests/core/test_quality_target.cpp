@@ -31,15 +31,11 @@ namespace {
 std::vector<Scene> generatedScenes() {
     std::vector<Scene> scenes;
     for (std::uint32_t seed = 1; seed <= 4; ++seed) {
-        FieldOptions o;
-        o.count = 20 + 60 * int(seed);
-        o.seed = 100 + seed;
-        o.halfWidth = 2.0 + seed;
-        o.depth = 6.0 + 2.0 * seed;
-        Scene scene = sphereField(o);
-        scene.render.width = 128;
-        scene.render.height = 96;
-        scenes.push_back(scene);
+        scenes.push_back(sphereField({.count = 20 + 60 * int(seed),
+                                      .seed = 100 + seed,
+                                      .halfWidth = 2.0 + seed,
+                                      .depth = 6.0 + 2.0 * seed},
+                                     128, 96));
     }
     return scenes;
 }
@@ -171,14 +167,8 @@ TEST(QualityTarget, DepthLargestError_JudgedWithSamplesWhereTheCentresShowASlive
 // depth the plan takes leaves no pixel of the picture more than half the
 // limit short of three levels deeper.
 TEST(QualityTarget, DepthCheckedAtThePicturesSize_SeesWhatFallsBetweenTheProbesCentres) {
-    FieldOptions o;
-    o.count = 114;
-    o.seed = 502;
-    o.halfWidth = 4.0;
-    o.depth = 8.0;
-    Scene field = sphereField(o);
-    field.render.width = 160;
-    field.render.height = 120;
+    const Scene field =
+        sphereField({.count = 114, .seed = 502, .halfWidth = 4.0, .depth = 8.0}, 160, 120);
     const double limit = *previewQuality().largestCodes;
     const QualityPlan plan = planQuality(field, previewQuality());
     EXPECT_TRUE(plan.depthAtPictureSize);

@@ -22,15 +22,11 @@ namespace {
 std::vector<Scene> generatedScenes() {
     std::vector<Scene> scenes;
     for (std::uint32_t seed = 1; seed <= 3; ++seed) {
-        FieldOptions o;
-        o.count = 40 + 90 * int(seed);
-        o.seed = 200 + seed;
-        o.halfWidth = 2.5 + seed;
-        o.depth = 7.0 + 2.0 * seed;
-        Scene scene = sphereField(o);
-        scene.render.width = 240;
-        scene.render.height = 180;
-        scenes.push_back(scene);
+        scenes.push_back(sphereField({.count = 40 + 90 * int(seed),
+                                      .seed = 200 + seed,
+                                      .halfWidth = 2.5 + seed,
+                                      .depth = 7.0 + 2.0 * seed},
+                                     240, 180));
     }
     return scenes;
 }
@@ -58,10 +54,7 @@ TEST(RenderPrediction, GeneratedFields_PsnrWithinTwoDecibels_RaysWithinAQuarter)
 }
 
 TEST(RenderPrediction, PictureSmallerThanAProbe_SaysItCannotRatherThanGuess) {
-    FieldOptions o;
-    Scene scene = sphereField(o);
-    scene.render.width = 64;
-    scene.render.height = 48;
+    const Scene scene = sphereField({}, 64, 48);
     const RenderPrediction p = predictRender(scene);
     EXPECT_FALSE(p.predicted);
     EXPECT_NE(p.cannot.find("smaller than a probe"), std::string::npos) << p.cannot;
@@ -71,11 +64,7 @@ TEST(RenderPrediction, PictureSmallerThanAProbe_SaysItCannotRatherThanGuess) {
 // as renders do, and nothing is predicted from their empty pictures. Asked
 // `stops` times before saying stop: at once, inside the plan, and later.
 TEST(RenderPrediction, Stopped_PredictsNothingAndSaysSo) {
-    FieldOptions o;
-    o.count = 200;
-    Scene scene = sphereField(o);
-    scene.render.width = 320;
-    scene.render.height = 240;
+    Scene scene = sphereField({.count = 200}, 320, 240);
     scene.render.samplesPerPixel = 16;
     for (const int stops : {0, 40, 400}) {
         int asked = 0;

@@ -72,12 +72,9 @@ TEST(ScalarRayTree, TracesTheTracersRays_OnRandomFieldsOfMirrorAndGlassBalls) {
     // 12 balls: every ray tests every sphere; 400: through the BVH.
     for (const int count : {12, 400})
         for (const std::uint32_t seed : {1u, 2u, 3u}) {
-            FieldOptions field;
-            field.count = count;
-            field.seed = seed;
-            field.halfWidth = 3.0;  // close enough that balls fill the picture
-            field.depth = 8.0;
-            const Scene scene = sphereField(field);
+            // halfWidth 3: close enough that balls fill the picture
+            const Scene scene =
+                sphereField({.count = count, .seed = seed, .halfWidth = 3.0, .depth = 8.0});
             expectSameRays(scene, std::to_string(count) + " balls, seed " + std::to_string(seed));
         }
 }
@@ -89,13 +86,7 @@ TEST(ScalarRayTree, TracesTheTracersRays_OnTheShippedScenes) {
 
 // The counts can tell: at depth 5 a field sends reflected and refracted rays.
 TEST(ScalarRayTree, TheFieldsSendReflectedAndRefractedRays) {
-    FieldOptions field;
-    field.count = 400;
-    field.halfWidth = 3.0;
-    field.depth = 8.0;
-    Scene scene = sphereField(field);
-    scene.render.width = 96;
-    scene.render.height = 72;
+    const Scene scene = sphereField({.count = 400, .halfWidth = 3.0, .depth = 8.0}, 96, 72);
     const RayCounts walked = walkEveryPixel<float>(scene);
     EXPECT_GT(walked.reflection, 1000u);
     EXPECT_GT(walked.refraction, 300u);

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "analysis/quality_check.h"
 #include "analysis/target_prediction.h"
 #include "sphere_field.h"
 
@@ -18,30 +19,11 @@ namespace {
 
 // 240x180: 169 tiles of the adaptive render, of which the prediction renders 75.
 Scene generatedField(std::uint32_t seed) {
-    FieldOptions o;
-    o.count = 40 + 90 * int(seed);
-    o.seed = 300 + seed;
-    o.halfWidth = 2.5 + seed;
-    o.depth = 7.0 + 2.0 * seed;
-    Scene scene = sphereField(o);
-    scene.render.width = 240;
-    scene.render.height = 180;
-    return scene;
-}
-
-struct Rendered {
-    QualityPlan plan;
-    RenderResult result;
-};
-
-// As whitted-render and the editor render to a target: plan, then render.
-Rendered renderTo(const Scene& scene, const QualityTarget& target) {
-    Rendered r{planQuality(scene, target), {}};
-    Scene planned = scene;
-    RenderOptions options = oneShotOptions();
-    applyPlan(r.plan, planned, options);
-    r.result = render(planned, options);
-    return r;
+    return sphereField({.count = 40 + 90 * int(seed),
+                        .seed = 300 + seed,
+                        .halfWidth = 2.5 + seed,
+                        .depth = 7.0 + 2.0 * seed},
+                       240, 180);
 }
 
 TEST(TargetPrediction, GeneratedFields_SamplesRaysAndEstimateOfTheRenderItPredicts) {
@@ -50,7 +32,7 @@ TEST(TargetPrediction, GeneratedFields_SamplesRaysAndEstimateOfTheRenderItPredic
         for (const QualityTarget& target : {draftQuality(), previewQuality()}) {
             const TargetPrediction p = predictRenderTo(scene, target);
             ASSERT_TRUE(p.predicted) << p.cannot;
-            const Rendered r = renderTo(scene, target);
+            const TargetRender r = renderToTarget(scene, target);
             const AdaptiveOutcome& reached = *r.result.adaptive;
             const double rendered = estimatedPsnr(r.plan, reached);
             const double rays = p.rays() / double(r.plan.probeRays + r.result.rays.total());

@@ -48,7 +48,8 @@ int main(int argc, char** argv) {
     scene.render.width = 1280;
     scene.render.height = 720;
 
-    whitted::ui::RenderWorker worker;
+    whitted::PlanMemo plans;
+    whitted::ui::RenderWorker worker(plans);
     std::vector<double> previewMs, fullPassMs, completeMs;
     std::vector<double> previewWorkerMs,
         fullPassWorkerMs;  // frame.seconds: since the worker began the render

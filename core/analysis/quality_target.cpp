@@ -8,6 +8,7 @@
 
 #include "analysis/depth_truncation.h"
 #include "analysis/tradeoff.h"
+#include "base/thread_cpu_time.h"
 #include "image/image_compare.h"
 #include "image/image_error.h"
 #include "tracer/renderer.h"
@@ -592,6 +593,7 @@ double estimatedPsnr(const QualityPlan& plan, const AdaptiveOutcome& outcome) {
 
 QualityPlan planQuality(const Scene& scene, const QualityTarget& target, int maxSamples,
                         std::optional<int> depth, const StopPredicate& stop) {
+    const double start = threadCpuSeconds();
     QualityPlan plan;
     plan.target = target;
     // A stopped probe is an empty picture: the depth search then ends at
@@ -618,6 +620,7 @@ QualityPlan planQuality(const Scene& scene, const QualityTarget& target, int max
             "\n";
     plan.why += samplingWhy(plan);
     if (bias > total) plan.why += outOfReachWhy(plan, total);
+    plan.cpuSeconds = threadCpuSeconds() - start;
     return plan;
 }
 

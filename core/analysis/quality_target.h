@@ -86,6 +86,7 @@ struct QualityPlan {
     int precisionSamples = 1;   // a pixel, in the probe that measured it
     int probeWidth = 0, probeHeight = 0;
     std::uint64_t probeRays = 0;  // traced to choose the depth: part of the render's cost
+    double cpuSeconds = 0.0;      // the planning thread's CPU time: part of it too
     AdaptiveSampling sampling;
     std::string why;       // the choices in a user's words, one line each
     bool stopped = false;  // `stop` said so while planning: the plan means nothing

@@ -3,7 +3,6 @@
 #include <chrono>
 
 #include "analysis/speed_probe.h"
-#include "base/thread_cpu_time.h"
 #include "tracer/adaptive_sampling.h"
 
 namespace whitted {
@@ -20,6 +19,16 @@ TargetPrediction notPredicted(TargetPrediction p, std::string why) {
     return p;
 }
 
+constexpr const char* kTooSmall = "a picture this small is rendered as fast as it is predicted";
+
+bool tooSmallToPredict(const Scene& scene) {
+    return double(scene.render.width) * scene.render.height <= kSpeedProbePixels;
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 double pixelsOf(const std::vector<PixelRect>& rects) {
     double pixels = 0.0;
     for (const PixelRect& r : rects) pixels += double(r.width) * r.height;
@@ -30,14 +39,23 @@ double pixelsOf(const std::vector<PixelRect>& rects) {
 
 TargetPrediction predictRenderTo(const Scene& scene, const QualityTarget& target, int maxSamples,
                                  const StopPredicate& stop) {
+    if (tooSmallToPredict(scene)) return notPredicted({}, kTooSmall);
+    const auto start = std::chrono::steady_clock::now();
+    const QualityPlan plan = planQuality(scene, target, maxSamples, std::nullopt, stop);
+    const double planning = secondsSince(start);
+    TargetPrediction p = predictRenderTo(scene, plan, stop);
+    p.probeSeconds += planning;
+    return p;
+}
+
+TargetPrediction predictRenderTo(const Scene& scene, const QualityPlan& plan,
+                                 const StopPredicate& stop) {
     const auto start = std::chrono::steady_clock::now();
     TargetPrediction p;
+    if (tooSmallToPredict(scene)) return notPredicted(p, kTooSmall);
     const double picture = double(scene.render.width) * scene.render.height;
-    if (picture <= kSpeedProbePixels)
-        return notPredicted(p, "a picture this small is rendered as fast as it is predicted");
-    const double planStart = threadCpuSeconds();
-    p.plan = planQuality(scene, target, maxSamples, std::nullopt, stop);
-    p.planSeconds = threadCpuSeconds() - planStart;
+    p.plan = plan;
+    p.planSeconds = plan.cpuSeconds;
     if (p.plan.stopped) return notPredicted(p, "stopped");
 
     Scene planned = scene;
@@ -58,8 +76,7 @@ TargetPrediction predictRenderTo(const Scene& scene, const QualityTarget& target
     p.renderRays = double(tiles.rays.total()) * scale;
     p.renderSeconds = overhead + tiles.tilesCpuSeconds * scale / threads;
     p.probeRays = p.plan.probeRays + tiles.rays.total();
-    p.probeSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    p.probeSeconds = secondsSince(start);
     p.predicted = true;
     return p;
 }

@@ -36,7 +36,7 @@ struct TargetPrediction {
     double psnrDb = 0.0;          // what the render's estimate will say (estimatedPsnr())
     double largestCodes = 0.0;    // the tiles' estimated largest error
     double renderRays = 0.0;      // the adaptive render's, planning aside
-    double planSeconds = 0.0;     // planning, which the render does again
+    double planSeconds = 0.0;     // planning (the plan's cpuSeconds), part of the render
     double renderSeconds = 0.0;   // the adaptive render's
     std::uint64_t probeRays = 0;  // traced to predict, planning included
     double probeSeconds = 0.0;    // how long predicting took
@@ -49,6 +49,11 @@ struct TargetPrediction {
 // nothing is predicted (`cannot` says it was stopped).
 TargetPrediction predictRenderTo(const Scene& scene, const QualityTarget& target,
                                  int maxSamples = kDefaultMaxSamples,
+                                 const StopPredicate& stop = {});
+
+// The same for a plan already made (by the render itself, or PlanMemo): the
+// scene is that the plan was made for.
+TargetPrediction predictRenderTo(const Scene& scene, const QualityPlan& plan,
                                  const StopPredicate& stop = {});
 
 }  // namespace whitted

@@ -18,7 +18,8 @@ struct ExportOutcome {
 
 inline ExportOutcome exportAndWait(const Scene& scene, const ExportSettings& settings,
                                    int timeoutMs = 30000) {
-    ExportJob job(scene, settings);
+    PlanMemo plans;  // its own: each export plans, as the first in a session does
+    ExportJob job(scene, settings, plans);
     ExportOutcome outcome;
     // &job as context: queued to this thread (finished comes from the export thread).
     QObject::connect(&job, &ExportJob::finished, &job, [&](bool success, const QString& text) {

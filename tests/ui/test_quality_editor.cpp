@@ -141,6 +141,8 @@ TEST_F(QualityEditorTest, RenderTab_PredictsARenderToTheTarget_TheDepthAndSample
     const RenderFrame& frame = log->lastComplete;
     ASSERT_TRUE(frame.qualityPlan && frame.qualityReached);
     EXPECT_EQ(p.plan.maxDepth, frame.qualityPlan->maxDepth);
+    // Planned once between them (PlanMemo): the same planning's CPU time.
+    EXPECT_EQ(p.plan.cpuSeconds, frame.qualityPlan->cpuSeconds);
     EXPECT_NEAR(p.meanSamples / frame.qualityReached->meanSamples, 1.0, 0.25);
     EXPECT_TRUE(time->text().startsWith(QStringLiteral("about "))) << time->text().toStdString();
     EXPECT_TRUE(time->text().contains(QStringLiteral(": depth %1, %2 samples per pixel on average")

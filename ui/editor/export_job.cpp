@@ -144,8 +144,9 @@ ExportSettings ExportDialog::settings() const {
     return s;
 }
 
-ExportJob::ExportJob(const Scene& scene, const ExportSettings& settings, QObject* parent)
-    : QObject(parent), scene_(scene), settings_(settings) {
+ExportJob::ExportJob(const Scene& scene, const ExportSettings& settings, PlanMemo& plans,
+                     QObject* parent)
+    : QObject(parent), scene_(scene), settings_(settings), plans_(plans) {
     scene_.render = settings.render;
 }
 
@@ -183,9 +184,9 @@ bool ExportJob::exportFrame(int frame, const Camera& camera, double& seconds) {
     RenderOptions options = oneShotOptions();
     Scene scene = scene_;
     const StopPredicate cancelled = [this] { return cancelled_.load(); };
-    std::optional<QualityPlan> plan;
+    std::shared_ptr<const QualityPlan> plan;
     if (settings_.quality) {
-        plan = planQuality(scene, *settings_.quality, kDefaultMaxSamples, std::nullopt, cancelled);
+        plan = plans_.plan(scene, *settings_.quality, kDefaultMaxSamples, cancelled);
         applyPlan(*plan, scene, options);
     }
     std::atomic<int> lastPercent{-1};  // tiles report from several threads

@@ -11,6 +11,7 @@
 #include <optional>
 #include <thread>
 
+#include "analysis/plan_memo.h"
 #include "analysis/quality_target.h"
 #include "scene/scene.h"
 
@@ -61,7 +62,10 @@ class ExportDialog : public QDialog {
 class ExportJob : public QObject {
     Q_OBJECT
   public:
-    ExportJob(const Scene& scene, const ExportSettings& settings, QObject* parent = nullptr);
+    // A render to a quality takes its plan from `plans`, which must outlive
+    // the job: at the view's size, the view's plan.
+    ExportJob(const Scene& scene, const ExportSettings& settings, PlanMemo& plans,
+              QObject* parent = nullptr);
     ~ExportJob() override;  // cancels and waits for the thread
     void start();
     void cancel() { cancelled_ = true; }
@@ -80,6 +84,7 @@ class ExportJob : public QObject {
 
     Scene scene_;
     ExportSettings settings_;
+    PlanMemo& plans_;
     std::atomic<bool> cancelled_{false};
     std::thread thread_;
     QString reached_;  // the last frame's qualityReached(), empty without a target

@@ -250,7 +250,7 @@ void MainWindow::exportDialog() {
 void MainWindow::startExport(const ExportSettings& settings) {
     if (export_) return;  // one at a time
     rememberDirectory(settings.path);
-    export_ = std::make_unique<ExportJob>(doc_.scene(), settings);
+    export_ = std::make_unique<ExportJob>(doc_.scene(), settings, plans_);
     exportProgress_ = new QProgressDialog(
         tr("Rendering %1…").arg(QFileInfo(settings.path).fileName()), tr("Cancel"), 0, 100, this);
     exportProgress_->setWindowModality(Qt::WindowModal);

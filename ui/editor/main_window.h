@@ -129,8 +129,9 @@ class MainWindow : public QMainWindow {
     TradeoffRecord record_;
     std::uint64_t renderedRevision_ = 0;  // the document's content the record's renders are of
     QualityChoice quality_;
-    ProbePredictor predictor_;  // the Render tab's predictions for scenes never measured
-    RenderWorker worker_;
+    PlanMemo plans_;  // made once for the view, its prediction and an export alike
+    ProbePredictor predictor_{plans_};  // the Render tab's predictions for scenes never measured
+    RenderWorker worker_{plans_};
     RenderView* view_ = nullptr;
     ScenePanel* scenePanel_ = nullptr;
     PropertyPanel* propertyPanel_ = nullptr;

@@ -6,8 +6,9 @@
 
 namespace whitted::ui {
 
-ProbePredictor::ProbePredictor(QObject* parent)
+ProbePredictor::ProbePredictor(PlanMemo& plans, QObject* parent)
     : QObject(parent),
+      plans_(plans),
       requests_(
           RequestThread<ProbeRequest>::Policy::LatestWins,
           [this](ProbeRequest&& request, quint64 ticket) { predict(std::move(request), ticket); },
@@ -28,10 +29,12 @@ void ProbePredictor::predict(ProbeRequest&& request, quint64 ticket) {
     auto result = std::make_shared<ProbePrediction>();
     const auto stale = [&] { return requests_.stale(ticket); };
     // As the view renders to a target (render_worker.cpp): at most
-    // kDefaultMaxSamples a pixel, the depth chosen.
+    // kDefaultMaxSamples a pixel, the depth chosen, and the same plan when
+    // the view renders the same picture.
     if (request.target)
-        result->toTarget =
-            predictRenderTo(request.scene, *request.target, kDefaultMaxSamples, stale);
+        result->toTarget = predictRenderTo(
+            request.scene, *plans_.plan(request.scene, *request.target, kDefaultMaxSamples, stale),
+            stale);
     else
         result->prediction = predictRender(request.scene, stale);
     result->scene = std::move(request.scene);

@@ -20,6 +20,7 @@
 
 #include <optional>
 
+#include "analysis/plan_memo.h"
 #include "analysis/render_prediction.h"
 #include "analysis/target_prediction.h"
 #include "base/request_thread.h"
@@ -42,7 +43,9 @@ struct ProbePrediction {
 class ProbePredictor : public QObject {
     Q_OBJECT
   public:
-    explicit ProbePredictor(QObject* parent = nullptr);
+    // A prediction to a target takes its plan from `plans` (shared with the
+    // view's render), which must outlive the predictor.
+    explicit ProbePredictor(PlanMemo& plans, QObject* parent = nullptr);
     ~ProbePredictor() override = default;  // finishes the running prediction and joins
 
     // How long after the last edit the prediction starts.
@@ -65,6 +68,7 @@ class ProbePredictor : public QObject {
     std::mutex outboxMutex_;
     std::shared_ptr<const ProbePrediction> outbox_;  // guarded by outboxMutex_
 
+    PlanMemo& plans_;
     ProbeRequest waiting_;
     QTimer quiet_;
     RequestThread<ProbeRequest> requests_;

@@ -12,8 +12,9 @@
 
 namespace whitted::ui {
 
-RenderWorker::RenderWorker(QObject* parent)
+RenderWorker::RenderWorker(PlanMemo& plans, QObject* parent)
     : QObject(parent),
+      plans_(plans),
       requests_(RequestThread<RenderRequest>::Policy::LatestWins,
                 [this](RenderRequest&& request, quint64 generation) {
                     renderOne(std::move(request), generation);
@@ -191,9 +192,8 @@ void RenderWorker::renderOne(RenderRequest requested, quint64 generation) {
     std::shared_ptr<const QualityPlan> plan;
     if (requested.quality) {
         // Chosen for the picture the view shows: its size, the scene's precision.
-        plan = std::make_shared<const QualityPlan>(
-            planQuality(scene, *requested.quality, kDefaultMaxSamples, std::nullopt, shouldStop));
-        if (shouldStop()) return;
+        plan = plans_.plan(scene, *requested.quality, kDefaultMaxSamples, shouldStop);
+        if (plan->stopped || shouldStop()) return;
         applyPlan(*plan, scene, options);
     }
     FrameAssembler frames(scene, plan, generation, shouldStop,

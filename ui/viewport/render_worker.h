@@ -21,6 +21,7 @@
 #include <mutex>
 #include <optional>
 
+#include "analysis/plan_memo.h"
 #include "analysis/quality_target.h"
 #include "base/request_thread.h"
 #include "scene/scene.h"
@@ -73,7 +74,9 @@ struct RenderFrame {
 class RenderWorker : public QObject {
     Q_OBJECT
   public:
-    explicit RenderWorker(QObject* parent = nullptr);
+    // A render to a quality takes its plan from `plans` (shared with the
+    // Render tab's prediction), which must outlive the worker.
+    explicit RenderWorker(PlanMemo& plans, QObject* parent = nullptr);
     ~RenderWorker() override = default;  // stops the current render and joins the thread
 
     // Starts rendering `scene` as soon as the current render has stopped;
@@ -109,6 +112,7 @@ class RenderWorker : public QObject {
     std::mutex outboxMutex_;
     std::deque<RenderFrame> outbox_;  // guarded by outboxMutex_
 
+    PlanMemo& plans_;
     // Only the render thread touches the cache; the counts are copied out.
     BvhCache bvhCache_;
     std::atomic<int> bvhBuilds_{0}, bvhRefits_{0};

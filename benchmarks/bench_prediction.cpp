@@ -12,10 +12,12 @@
 // and 640 pixels across, depth 5, 1, 8 and 32 samples: the seconds its
 // probes of the picture's tiles predict for the rays each render traced,
 // over the render's (the faster of two).
-// bench_prediction --targets [WIDTH HEIGHT]: renders to Draft, Preview and
-// Final (target_prediction.h): the samples, estimate, rays and seconds
+// bench_prediction --targets [WIDTH HEIGHT [ONLY]]: renders to Draft, Preview
+// and Final (target_prediction.h): the samples, estimate, rays and seconds
 // predictRenderTo() expects against what the plan and render then take (the
-// faster of three when under a second).
+// faster of three when under a second). ONLY, e.g. "150 balls:Preview",
+// keeps the scenes whose name holds the part before the colon and the
+// targets the part after it names.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -75,7 +77,12 @@ TargetRender fastestRenderTo(const Scene& scene, const QualityTarget& target) {
     return best;
 }
 
-void targetTable(int width, int height) {
+// `only`: scenes whose name holds it, and targets whose name it names
+// ("150 balls" or "150 balls:Preview"); empty, all.
+void targetTable(int width, int height, const std::string& only) {
+    const std::string sceneOnly = only.substr(0, only.find(':'));
+    const std::string targetOnly =
+        only.find(':') == std::string::npos ? "" : only.substr(only.find(':') + 1);
     std::printf(
         "| scene | target | depth | spp predicted / rendered | estimate predicted / render's | "
         "rays predicted / traced | seconds predicted / measured | predicting took |\n"
@@ -83,6 +90,9 @@ void targetTable(int width, int height) {
     int total = 0, dbWithin = 0, raysWithin = 0, secondsWithin = 0;
     for (const NamedScene& n : scenes(width, height))
         for (const QualityTarget& target : {draftQuality(), previewQuality(), finalQuality()}) {
+            if (n.name.find(sceneOnly) == std::string::npos ||
+                target.name.find(targetOnly) == std::string::npos)
+                continue;
             const TargetPrediction p = predictRenderTo(n.scene, target);
             if (!p.predicted) {
                 std::printf("| %s | %s | not predicted: %s |\n", n.name.c_str(),
@@ -117,7 +127,8 @@ int main(int argc, char** argv) {
         return 0;
     }
     if (argc > 1 && std::string(argv[1]) == "--targets") {
-        targetTable(argc > 3 ? std::atoi(argv[2]) : 320, argc > 3 ? std::atoi(argv[3]) : 240);
+        targetTable(argc > 3 ? std::atoi(argv[2]) : 320, argc > 3 ? std::atoi(argv[3]) : 240,
+                    argc > 4 ? argv[4] : "");
         return 0;
     }
     const int width = argc > 2 ? std::atoi(argv[1]) : 320;

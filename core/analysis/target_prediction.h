@@ -8,7 +8,10 @@
 // grid of kAdaptiveTileEdge), each pixel's samples bit for bit the render's,
 // the tiles judged among themselves (RenderOptions::regions). Their mean
 // samples and estimated error stand for the picture's; their rays and CPU
-// time, scaled by the picture's pixels over theirs, for the render's. As
+// time for the render's, scaled by the rays of a coarse one-sample picture
+// over those of its pixels under the tiles (a ratio estimate: glass that
+// traps light in a few tiles makes them dearer than their share of the
+// pixels, and the coarse picture sees where they lie). As
 // for fixed settings (speed_probe.h), the seconds are CPU time shared among
 // the render's threads, so a prediction made beside the view's render is
 // not slowed by it; the planning's seconds are the CPU time of the thread

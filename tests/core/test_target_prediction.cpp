@@ -45,7 +45,10 @@ TEST(TargetPrediction, GeneratedFields_SamplesRaysAndEstimateOfTheRenderItPredic
             EXPECT_EQ(p.plan.why, r.plan.why);
             EXPECT_NEAR(p.meanSamples / reached.meanSamples, 1.0, 0.25);
             EXPECT_NEAR(p.psnrDb, rendered, 2.0);
-            EXPECT_NEAR(rays, 1.0, 0.25);
+            // Within the 25%, and closer: scaled by the pixels' ratio the
+            // tiles' rays were 0.86 to 1.09 of the render's, by the coarse
+            // picture's rays 1.01 to 1.07.
+            EXPECT_NEAR(rays, 1.0, 0.1);
             EXPECT_GT(p.seconds(), p.planSeconds);
         }
     }

@@ -46,11 +46,9 @@ constexpr int kCoarsePixels = 4 * kSpeedProbePixels;
 
 double tilesToPicture(const Scene& planned, const std::vector<PixelRect>& tiles, double pixelsRatio,
                       std::uint64_t& rays, const StopPredicate& stop) {
+    const double pixels = double(planned.render.width) * planned.render.height;
     int factor = 4;  // divides the tiles' side and corners, multiples of 16
-    while (factor<kSpeedProbeTileSide&& double(planned.render.width) * planned.render.height /
-                  (double(factor) * factor)>
-               kCoarsePixels)
-        factor *= 2;
+    while (factor < kSpeedProbeTileSide && pixels / (factor * factor) > kCoarsePixels) factor *= 2;
     auto coarse = [&](int size) { return (size + factor - 1) / factor; };
     Scene scene = planned;
     scene.render.width = coarse(planned.render.width);

@@ -187,6 +187,10 @@ bool ExportJob::exportFrame(int frame, const Camera& camera, double& seconds) {
     std::shared_ptr<const QualityPlan> plan;
     if (settings_.quality) {
         plan = plans_.plan(scene, *settings_.quality, kDefaultMaxSamples, cancelled);
+        if (plan->stopped) {  // cancelled while planning: the plan means nothing
+            emit finished(false, tr("Export cancelled."));
+            return false;
+        }
         applyPlan(*plan, scene, options);
     }
     std::atomic<int> lastPercent{-1};  // tiles report from several threads

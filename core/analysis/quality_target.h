@@ -28,7 +28,7 @@
 #include <string>
 #include <string_view>
 
-#include "image/image_io.h"
+#include "image/image_metadata.h"
 #include "scene/scene.h"
 #include "tracer/adaptive_sampling.h"
 #include "tracer/renderer.h"

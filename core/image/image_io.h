@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "image/image.h"
+#include "image/image_metadata.h"
 #include "scene/scene.h"
 
 namespace whitted {
@@ -28,24 +29,6 @@ const std::vector<ImageFormatInfo>& imageFormats();
 
 // The format for a file name's extension (case-insensitive), or nothing.
 std::optional<ImageFormatInfo> imageFormatFor(const std::filesystem::path& file);
-
-// What the file records about how it was made.
-struct ImageMetadata {
-    std::string software = "whitted";
-    std::string description;  // human-readable render settings and time
-    RenderSettings settings;
-    double renderSeconds = 0.0;
-    // A render to a quality (analysis/quality_target.h): its target and what
-    // it reached, in words ("whitted:quality"); empty for a render of the
-    // scene's own samples. settings.samplesPerPixel then holds the most
-    // samples any pixel took.
-    std::string quality;
-};
-
-// Builds the description line from the settings and time (and the quality,
-// if given, in place of the samples and depth).
-ImageMetadata makeImageMetadata(const RenderSettings& settings, double renderSeconds,
-                                std::string software, std::string quality = {});
 
 class ImageIoError : public std::runtime_error {
   public:

@@ -14,15 +14,11 @@ constexpr std::size_t kPlansKept = 4;
 // How often a waiting asker looks whether it should stop.
 constexpr std::chrono::milliseconds kStopPoll{20};
 
-bool sameTarget(const QualityTarget& a, const QualityTarget& b) {
-    return a.psnrDb == b.psnrDb && a.largestCodes == b.largestCodes && a.name == b.name;
-}
-
 }  // namespace
 
 PlanMemo::Entry* PlanMemo::find(const Scene& scene, const QualityTarget& target, int maxSamples) {
     for (const std::unique_ptr<Entry>& e : entries_)
-        if (e->maxSamples == maxSamples && sameTarget(e->target, target) && e->scene == scene)
+        if (e->maxSamples == maxSamples && e->target == target && plannedAlike(e->scene, scene))
             return e.get();
     return nullptr;
 }

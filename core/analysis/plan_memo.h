@@ -1,7 +1,8 @@
 // Plans kept for the next asker of the same plan (issue 15). In the editor the
 // view's render to a target, the Render tab's prediction of it and an export
 // at the scene's size each plan the same render, and planning is
-// deterministic: the same scene, target and sample limit give the same plan.
+// deterministic: the same scene, target and sample limit give the same plan
+// (whatever the scene's own samples per pixel and depth, which it chooses).
 // On a field of 150 glass balls at Final it takes up to 27 s, so the second
 // asker takes the first one's plan, and one that comes while it is being made
 // waits for it instead of making it again beside it.

@@ -591,6 +591,11 @@ double estimatedPsnr(const QualityPlan& plan, const AdaptiveOutcome& outcome) {
     return mse > 0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : 999.0;
 }
 
+bool plannedAlike(const Scene& a, const Scene& b) {
+    return a.render.width == b.render.width && a.render.height == b.render.height &&
+           a.render.precision == b.render.precision && sameSceneContent(a, b);
+}
+
 QualityPlan planQuality(const Scene& scene, const QualityTarget& target, int maxSamples,
                         std::optional<int> depth, const StopPredicate& stop) {
     const double start = threadCpuSeconds();

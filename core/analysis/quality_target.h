@@ -39,6 +39,8 @@ struct QualityTarget {
     std::string name;  // "Draft", "Preview", "Final", or empty for a stated target
     double psnrDb = 35.0;
     std::optional<double> largestCodes;  // no pixel off by more than this many codes
+
+    bool operator==(const QualityTarget&) const = default;
 };
 
 // The editor's and whitted-render's presets: Draft 20 dB; Preview 35 dB and
@@ -118,5 +120,10 @@ double estimatedPsnr(const QualityPlan& plan, const AdaptiveOutcome& outcome);
 QualityPlan planQuality(const Scene& scene, const QualityTarget& target,
                         int maxSamples = kDefaultMaxSamples,
                         std::optional<int> depth = std::nullopt, const StopPredicate& stop = {});
+
+// Whether planQuality() plans both scenes alike: they differ at most in the
+// samples per pixel and the depth, which it chooses. So choosing a preset,
+// which sets both, keeps the plan made for the prediction in its tooltip.
+bool plannedAlike(const Scene& a, const Scene& b);
 
 }  // namespace whitted

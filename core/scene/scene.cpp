@@ -14,6 +14,13 @@ std::optional<Precision> parsePrecision(std::string_view name) {
     return std::nullopt;
 }
 
+bool sameSceneContent(const Scene& a, const Scene& b) {
+    // Field by field rather than comparing a copy with a's settings: the
+    // editor asks on every edit, and a scene may hold 100,000 spheres.
+    return a.camera == b.camera && a.background == b.background && a.ambient == b.ambient &&
+           a.materials == b.materials && a.lights == b.lights && a.spheres == b.spheres;
+}
+
 int findMaterial(const Scene& scene, std::string_view name) {
     for (size_t i = 0; i < scene.materials.size(); ++i)
         if (scene.materials[i].name == name) return static_cast<int>(i);

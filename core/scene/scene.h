@@ -95,6 +95,9 @@ inline constexpr int kMaxImageSize = 16384;
 inline constexpr int kMaxDepth = 64;
 inline constexpr int kMaxSamplesPerPixel = 65536;
 
+// Whether two scenes differ at most in their render settings.
+bool sameSceneContent(const Scene& a, const Scene& b);
+
 // Index of the named material, or -1.
 int findMaterial(const Scene& scene, std::string_view name);
 

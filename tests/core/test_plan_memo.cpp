@@ -44,6 +44,27 @@ TEST(PlanMemo, AnotherCameraTargetOrLimit_PlannedAgain) {
     EXPECT_EQ(memo.plansMade(), 4);
 }
 
+// Choosing a preset sets the samples per pixel and the depth, which a plan
+// chooses itself: the plan made before stays. The precision and the
+// picture's size are planned again.
+TEST(PlanMemo, OtherSamplesOrDepth_TheSamePlan_OtherPrecisionOrSize_PlannedAgain) {
+    PlanMemo memo;
+    const Scene scene = pictured();
+    const auto final = memo.plan(scene, finalQuality(), kDefaultMaxSamples);
+    Scene preset = scene;
+    preset.render.samplesPerPixel = 128;
+    preset.render.maxDepth = 8;
+    EXPECT_EQ(memo.plan(preset, finalQuality(), kDefaultMaxSamples).get(), final.get());
+    EXPECT_EQ(planQuality(preset, finalQuality()).why, final->why);  // what it would have made
+    Scene doubled = scene;
+    doubled.render.precision = Precision::Double;
+    EXPECT_NE(memo.plan(doubled, finalQuality(), kDefaultMaxSamples).get(), final.get());
+    Scene wider = scene;
+    wider.render.width = 200;
+    EXPECT_NE(memo.plan(wider, finalQuality(), kDefaultMaxSamples).get(), final.get());
+    EXPECT_EQ(memo.plansMade(), 3);
+}
+
 TEST(PlanMemo, StoppedPlan_IsNotKept_TheNextAskerPlans) {
     PlanMemo memo;
     const Scene scene = pictured();

@@ -21,6 +21,7 @@
 #include "support/gui_test_main.h"
 #include "support/main_window_fixture.h"
 #include "support/test_support.h"
+#include "tradeoff_dock/tradeoff_points.h"
 
 namespace whitted::ui {
 namespace {
@@ -153,6 +154,50 @@ TEST_F(QualityEditorTest, RenderTab_PredictsARenderToTheTarget_TheDepthAndSample
     EXPECT_TRUE(error.startsWith(
         QStringLiteral("about %1 dB, no pixel off by more than about ").arg(p.psnrDb, 0, 'f', 1)))
         << error.toStdString();
+}
+
+// The presets not chosen are predicted too, for their tooltips: before
+// choosing Final a user reads what a render to it will take, and the view's
+// render to Final then starts from the plan that prediction made.
+TEST_F(QualityEditorTest, PresetTooltip_PredictsATargetNotChosen_ChoosingItKeepsThePlan) {
+    ASSERT_TRUE(pressAndWait("Ctrl+2"));
+    ASSERT_TRUE(editAndWait([](Scene& s) {
+        s.render.width = 320;
+        s.render.height = 240;
+    }));
+    const auto finalPredicted = [&] {
+        return window->tradeoffRecord()->targetPrediction(doc->scene(), finalQuality());
+    };
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] {
+            const TargetPrediction* p = finalPredicted();
+            return p && p->predicted;
+        },
+        60000));
+    const TargetPrediction ahead = *finalPredicted();
+    const QString tip = child<QComboBox>("renderPreset")->itemData(3, Qt::ToolTipRole).toString();
+    EXPECT_TRUE(
+        tip.contains(QStringLiteral("\nTime: about %1 (%2 of it choosing the settings)")
+                         .arg(secondsText(ahead.seconds()), secondsText(ahead.planSeconds))))
+        << tip.toStdString();
+    EXPECT_TRUE(tip.contains(QStringLiteral(": depth %1, %2 samples per pixel on average")
+                                 .arg(ahead.plan.maxDepth)
+                                 .arg(ahead.meanSamples, 0, 'f', 1)))
+        << tip.toStdString();
+    EXPECT_TRUE(
+        tip.contains(QStringLiteral("\nError: about %1 dB, no pixel off by more than about ")
+                         .arg(ahead.psnrDb, 0, 'f', 1)))
+        << tip.toStdString();
+
+    ASSERT_TRUE(pressAndWait("Ctrl+3"));  // sets Final's samples and depth as well
+    const RenderFrame& frame = log->lastComplete;
+    ASSERT_TRUE(frame.qualityPlan && frame.qualityReached);
+    EXPECT_EQ(frame.qualityPlan->cpuSeconds, ahead.plan.cpuSeconds);  // the same planning
+    EXPECT_EQ(frame.qualityPlan->maxDepth, ahead.plan.maxDepth);
+    EXPECT_NEAR(ahead.meanSamples / frame.qualityReached->meanSamples, 1.0, 0.25);
+    // And the Render tab has it at once, though the samples and depth changed.
+    EXPECT_TRUE(child<QLabel>("predictedTime")->text().startsWith(QStringLiteral("about ")))
+        << child<QLabel>("predictedTime")->text().toStdString();
 }
 
 // The status bar and the export message: a range where tiles stopped at

@@ -4,18 +4,8 @@
 
 namespace whitted::ui {
 
-namespace {
-
-bool sameTarget(const std::optional<QualityTarget>& a, const std::optional<QualityTarget>& b) {
-    if (a.has_value() != b.has_value()) return false;
-    return !a ||
-           (a->name == b->name && a->psnrDb == b->psnrDb && a->largestCodes == b->largestCodes);
-}
-
-}  // namespace
-
 void QualityChoice::setTarget(std::optional<QualityTarget> target) {
-    if (sameTarget(target, target_)) return;
+    if (target == target_) return;
     target_ = std::move(target);
     emit changed();
 }
@@ -42,7 +32,7 @@ std::vector<QualityTarget> QualityChoice::offered() {
 int QualityChoice::indexOf(const std::optional<QualityTarget>& target) {
     const std::vector<QualityTarget> all = offered();
     for (std::size_t i = 0; i < all.size(); ++i)
-        if (sameTarget(all[i], target)) return int(i) + 1;
+        if (target == all[i]) return int(i) + 1;
     return 0;
 }
 

@@ -188,20 +188,24 @@ void PresetControls::refresh() {
         error_->setText(errorText(now));
     }
     // Where the user hovers before choosing: the target the view will render
-    // to, what the last render to it here took, and the prediction for the
-    // preset's own settings (what "Render to: the settings" renders).
+    // to, the probes' prediction of a render to it, what the last one here
+    // took, and the prediction for the preset's own settings (what "Render
+    // to: the settings" renders).
     for (std::size_t i = 0; i < kRenderPresets.size(); ++i) {
         const RenderPreset& preset = kRenderPresets[i];
         RenderSettings with = scene.render;
         applyPreset(preset, with);
         const Prediction p = record_->predict(scene, &with);
         const std::optional<QualityTarget> itsTarget = qualityPreset(preset.name);
+        const TargetPrediction* ahead = record_->targetPrediction(scene, *itsTarget);
         const QString reached = quality_->lastReached(std::string(preset.name));
         const QString tip =
-            tr("Renders to %1, choosing the depth and samples for this scene.\n%2\n"
+            tr("Renders to %1, choosing the depth and samples for this scene.\n"
+               "Time: %2\nError: %3\n%4\n"
                "Its settings, when rendering to the samples per pixel and max depth set "
-               "here:\nTime: %3\nError: %4")
-                .arg(QualityChoice::describe(itsTarget),
+               "here:\nTime: %5\nError: %6")
+                .arg(QualityChoice::describe(itsTarget), targetTimeText(ahead, QString()),
+                     targetErrorText(ahead, itsTarget),
                      reached.isEmpty()
                          ? tr("Not yet rendered to it on this scene: the status bar will "
                               "show what it takes.")

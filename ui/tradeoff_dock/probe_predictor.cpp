@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "base/thread_priority.h"
+#include "document/quality_choice.h"
 
 namespace whitted::ui {
 
@@ -26,34 +27,49 @@ void ProbePredictor::sceneChanged(const Scene& scene, const std::optional<Qualit
 }
 
 void ProbePredictor::predict(ProbeRequest&& request, quint64 ticket) {
+    auto asked = predictOne(request.scene, request.target, ticket);
+    if (requests_.stale(ticket)) return;
+    post(std::move(asked));
+    for (const QualityTarget& preset : QualityChoice::offered()) {
+        if (request.target == preset) continue;
+        auto other = predictOne(request.scene, preset, ticket);
+        if (requests_.stale(ticket)) return;
+        post(std::move(other));
+    }
+}
+
+std::shared_ptr<ProbePrediction> ProbePredictor::predictOne(
+    const Scene& scene, const std::optional<QualityTarget>& target, quint64 ticket) {
     auto result = std::make_shared<ProbePrediction>();
     const auto stale = [&] { return requests_.stale(ticket); };
     // As the view renders to a target (render_worker.cpp): at most
     // kDefaultMaxSamples a pixel, the depth chosen, and the same plan when
     // the view renders the same picture.
-    if (request.target)
-        result->toTarget = predictRenderTo(
-            request.scene, *plans_.plan(request.scene, *request.target, kDefaultMaxSamples, stale),
-            stale);
+    if (target)
+        result->toTarget =
+            predictRenderTo(scene, *plans_.plan(scene, *target, kDefaultMaxSamples, stale), stale);
     else
-        result->prediction = predictRender(request.scene, stale);
-    result->scene = std::move(request.scene);
-    result->target = std::move(request.target);
-    if (requests_.stale(ticket)) return;
+        result->prediction = predictRender(scene, stale);
+    result->scene = scene;
+    result->target = target;
+    return result;
+}
+
+void ProbePredictor::post(std::shared_ptr<const ProbePrediction> result) {
     {
         std::lock_guard lock(outboxMutex_);
-        outbox_ = std::move(result);
+        outbox_.push_back(std::move(result));
     }
     emit posted();
 }
 
 void ProbePredictor::deliver() {
-    std::shared_ptr<const ProbePrediction> result;
+    std::vector<std::shared_ptr<const ProbePrediction>> results;
     {
         std::lock_guard lock(outboxMutex_);
-        result = std::move(outbox_);
+        results.swap(outbox_);
     }
-    if (result) emit predicted(std::move(result));
+    for (std::shared_ptr<const ProbePrediction>& r : results) emit predicted(std::move(r));
 }
 
 }  // namespace whitted::ui

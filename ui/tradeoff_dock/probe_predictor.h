@@ -6,7 +6,10 @@
 // Its thread runs at a lower priority (base/thread_priority.h): the probes
 // then wait while the view renders instead of slowing it, and their figures,
 // CPU time (analysis/speed_probe.h), do not mind the wait.
-// The newest scene wins (core/base/request_thread.h); a result comes back
+// After what the view renders, it predicts renders to the presets' other
+// targets for their tooltips, each plan then kept for the view should the
+// user choose that preset (PlanMemo).
+// The newest scene wins (core/base/request_thread.h); each result comes back
 // with the scene it was made for, through an outbox under a mutex of our own
 // (as RenderWorker's frames do: ThreadSanitizer cannot see Qt's event queue
 // hand a shared_ptr over, and reported the hand-over as a race).
@@ -17,8 +20,8 @@
 
 #include <memory>
 #include <mutex>
-
 #include <optional>
+#include <vector>
 
 #include "analysis/plan_memo.h"
 #include "analysis/render_prediction.h"
@@ -51,8 +54,8 @@ class ProbePredictor : public QObject {
     // How long after the last edit the prediction starts.
     static constexpr int kQuietMs = 400;
 
-    // Predicts a render of `scene`, to `target` if set, once edits have
-    // paused for kQuietMs.
+    // Predicts a render of `scene`, to `target` if set, then to each preset's
+    // target, once edits have paused for kQuietMs.
     void sceneChanged(const Scene& scene, const std::optional<QualityTarget>& target);
 
   signals:
@@ -63,10 +66,14 @@ class ProbePredictor : public QObject {
 
   private:
     void predict(ProbeRequest&& request, quint64 ticket);
-    void deliver();  // GUI thread: takes the result and emits predicted()
+    std::shared_ptr<ProbePrediction> predictOne(const Scene& scene,
+                                                const std::optional<QualityTarget>& target,
+                                                quint64 ticket);
+    void post(std::shared_ptr<const ProbePrediction> result);
+    void deliver();  // GUI thread: takes the results and emits predicted() for each
 
     std::mutex outboxMutex_;
-    std::shared_ptr<const ProbePrediction> outbox_;  // guarded by outboxMutex_
+    std::vector<std::shared_ptr<const ProbePrediction>> outbox_;  // guarded by outboxMutex_
 
     PlanMemo& plans_;
     ProbeRequest waiting_;

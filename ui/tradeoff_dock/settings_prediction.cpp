@@ -179,13 +179,6 @@ double viewExtraSeconds(const RenderSettings& settings, ViewPace pace) {
     return pace.secondsAPixelPass * pixelPasses(settings);
 }
 
-bool sameSceneContent(const Scene& a, const Scene& b) {
-    // Field by field rather than comparing a copy with a's settings: the
-    // editor asks on every edit, and a scene may hold 100,000 spheres.
-    return a.camera == b.camera && a.background == b.background && a.ambient == b.ambient &&
-           a.materials == b.materials && a.lights == b.lights && a.spheres == b.spheres;
-}
-
 Prediction predictSettings(const Scene& scene, const std::vector<EditorRender>& renders,
                            const MeasureResults* measure, const RenderSettings* settings,
                            const ProbePrediction* probe, ViewPace pace) {

@@ -68,10 +68,6 @@ double pixelPasses(const RenderSettings& settings);
 // The view's seconds beyond one pass, for a render of these settings.
 double viewExtraSeconds(const RenderSettings& settings, ViewPace pace);
 
-// Whether two scenes differ at most in their render settings: Measure's errors
-// hold for any settings of the scene it measured, and for nothing else.
-bool sameSceneContent(const Scene& a, const Scene& b);
-
 // Predicts time and error of rendering `scene` with `settings` (its own when
 // not given; a preset's without a copy of the scene).
 // `renders` is the editor's history, newest last; `measure` may be null.

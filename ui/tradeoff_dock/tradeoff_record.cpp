@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <utility>
 
+#include "analysis/quality_target.h"
+
 namespace whitted::ui {
 
 void TradeoffRecord::addRender(const EditorRender& render) {
@@ -24,20 +26,33 @@ void TradeoffRecord::setMeasure(std::optional<MeasureResults> results) {
     emit changed();
 }
 
+namespace {
+
+bool sameScene(const Scene& a, const Scene& b) {
+    return a.render == b.render && sameSceneContent(a, b);
+}
+
+}  // namespace
+
 void TradeoffRecord::setProbePrediction(std::shared_ptr<const ProbePrediction> probe) {
-    probe_ = std::move(probe);
-    pace();
+    if (!probe->target) {
+        probe_ = std::move(probe);
+        pace();
+    } else {
+        // A render to a target chooses its own samples and depth (plannedAlike).
+        std::erase_if(toTargets_, [&](const auto& p) {
+            return p->target == probe->target || !plannedAlike(p->scene, probe->scene);
+        });
+        toTargets_.push_back(std::move(probe));
+    }
     emit changed();
 }
 
 const TargetPrediction* TradeoffRecord::targetPrediction(const Scene& scene,
                                                          const QualityTarget& target) const {
-    if (!probe_ || !probe_->target || probe_->target->name != target.name ||
-        probe_->target->psnrDb != target.psnrDb ||
-        probe_->target->largestCodes != target.largestCodes ||
-        !(probe_->scene.render == scene.render) || !sameSceneContent(probe_->scene, scene))
-        return nullptr;
-    return &probe_->toTarget;
+    for (const auto& p : toTargets_)
+        if (p->target == target && plannedAlike(p->scene, scene)) return &p->toTarget;
+    return nullptr;
 }
 
 void TradeoffRecord::addViewRender(const Scene& scene, double seconds) {
@@ -51,8 +66,7 @@ void TradeoffRecord::addViewRender(const Scene& scene, double seconds) {
 // render ends before the probes start, a long one after they are done.
 void TradeoffRecord::pace() {
     if (!lastView_ || !probe_ || !probe_->prediction.predicted ||
-        probe_->prediction.seconds <= 0.0 || !(probe_->scene.render == lastView_->scene.render) ||
-        !sameSceneContent(probe_->scene, lastView_->scene))
+        probe_->prediction.seconds <= 0.0 || !sameScene(probe_->scene, lastView_->scene))
         return;
     paces_.push_back((lastView_->seconds - probe_->prediction.seconds) /
                      pixelPasses(lastView_->scene.render));
@@ -75,6 +89,7 @@ void TradeoffRecord::clear() {
     renders_.clear();
     measure_.reset();
     probe_.reset();
+    toTargets_.clear();
     lastView_.reset();
     emit changed();
 }

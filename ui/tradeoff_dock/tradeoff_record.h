@@ -31,12 +31,15 @@ class TradeoffRecord : public QObject {
     void setMeasure(std::optional<MeasureResults> results);
     const MeasureResults* measure() const { return measure_ ? &*measure_ : nullptr; }
 
-    // The newest probe prediction (probe_predictor.h); it speaks for its scene only.
+    // A probe prediction (probe_predictor.h); it speaks for its scene only.
+    // Of the settings: the newest. To a target: the newest scene's, one per target.
     void setProbePrediction(std::shared_ptr<const ProbePrediction> probe);
+    // The newest prediction of a render to the scene's own settings.
     const ProbePrediction* probePrediction() const { return probe_.get(); }
 
     // The probes' prediction of a render of `scene` to `target`, once made
-    // for that very scene (content and settings) and target; null until then.
+    // for that scene (but for the samples per pixel and depth, which a render
+    // to a target chooses) and target; null until then.
     const TargetPrediction* targetPrediction(const Scene& scene, const QualityTarget& target) const;
 
     // The view's pace is the median of this many renders' (settings_prediction.h).
@@ -77,7 +80,8 @@ class TradeoffRecord : public QObject {
     // The view's seconds beyond the prediction, a pixel and a pass; newest last.
     std::deque<double> paces_;
     std::optional<MeasureResults> measure_;
-    std::shared_ptr<const ProbePrediction> probe_;
+    std::shared_ptr<const ProbePrediction> probe_;                   // of the settings
+    std::vector<std::shared_ptr<const ProbePrediction>> toTargets_;  // of one scene
 };
 
 }  // namespace whitted::ui

@@ -195,7 +195,7 @@ TEST_F(QualityEditorTest, PresetTooltip_PredictsATargetNotChosen_ChoosingItKeeps
     EXPECT_EQ(frame.qualityPlan->cpuSeconds, ahead.plan.cpuSeconds);  // the same planning
     EXPECT_EQ(frame.qualityPlan->maxDepth, ahead.plan.maxDepth);
     EXPECT_NEAR(ahead.meanSamples / frame.qualityReached->meanSamples, 1.0, 0.25);
-    // And the Render tab has it at once, though the samples and depth changed.
+    // The Render tab predicts the render to Final, though its samples and depth changed.
     EXPECT_TRUE(child<QLabel>("predictedTime")->text().startsWith(QStringLiteral("about ")))
         << child<QLabel>("predictedTime")->text().toStdString();
 }

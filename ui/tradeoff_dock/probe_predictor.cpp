@@ -27,14 +27,14 @@ void ProbePredictor::sceneChanged(const Scene& scene, const std::optional<Qualit
 }
 
 void ProbePredictor::predict(ProbeRequest&& request, quint64 ticket) {
-    auto asked = predictOne(request.scene, request.target, ticket);
-    if (requests_.stale(ticket)) return;
-    post(std::move(asked));
-    for (const QualityTarget& preset : QualityChoice::offered()) {
-        if (request.target == preset) continue;
-        auto other = predictOne(request.scene, preset, ticket);
+    // What the view renders first, then the presets' other targets.
+    std::vector<std::optional<QualityTarget>> targets{request.target};
+    for (const QualityTarget& preset : QualityChoice::offered())
+        if (request.target != preset) targets.push_back(preset);
+    for (const std::optional<QualityTarget>& target : targets) {
+        auto result = predictOne(request.scene, target, ticket);
         if (requests_.stale(ticket)) return;
-        post(std::move(other));
+        post(std::move(result));
     }
 }
 

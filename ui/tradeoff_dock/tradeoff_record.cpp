@@ -26,14 +26,6 @@ void TradeoffRecord::setMeasure(std::optional<MeasureResults> results) {
     emit changed();
 }
 
-namespace {
-
-bool sameScene(const Scene& a, const Scene& b) {
-    return a.render == b.render && sameSceneContent(a, b);
-}
-
-}  // namespace
-
 void TradeoffRecord::setProbePrediction(std::shared_ptr<const ProbePrediction> probe) {
     if (!probe->target) {
         probe_ = std::move(probe);
@@ -66,7 +58,7 @@ void TradeoffRecord::addViewRender(const Scene& scene, double seconds) {
 // render ends before the probes start, a long one after they are done.
 void TradeoffRecord::pace() {
     if (!lastView_ || !probe_ || !probe_->prediction.predicted ||
-        probe_->prediction.seconds <= 0.0 || !sameScene(probe_->scene, lastView_->scene))
+        probe_->prediction.seconds <= 0.0 || probe_->scene != lastView_->scene)
         return;
     paces_.push_back((lastView_->seconds - probe_->prediction.seconds) /
                      pixelPasses(lastView_->scene.render));

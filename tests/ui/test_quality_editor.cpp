@@ -11,17 +11,21 @@
 #include <QStatusBar>
 #include <QTest>
 
+#include <cmath>
+
 #include "analysis/quality_check.h"
 #include "analysis/target_prediction.h"
 #include "document/quality_choice.h"
 #include "editor/main_window.h"
 #include "image/image_error.h"
 #include "image/image_io.h"
+#include "panels/preset_controls.h"
 #include "support/export_support.h"
 #include "support/gui_test_main.h"
 #include "support/main_window_fixture.h"
 #include "support/test_support.h"
 #include "tradeoff_dock/tradeoff_points.h"
+#include "tradeoff_dock/tradeoff_record.h"
 
 namespace whitted::ui {
 namespace {
@@ -202,6 +206,47 @@ TEST_F(QualityEditorTest, PresetTooltip_PredictsATargetNotChosen_ChoosingItKeeps
     // The Render tab predicts the render to Final, though its samples and depth changed.
     EXPECT_TRUE(child<QLabel>("predictedTime")->text().startsWith(QStringLiteral("about ")))
         << child<QLabel>("predictedTime")->text().toStdString();
+}
+
+// With a target chosen, the scene's own settings are predicted too: the
+// item of "Render to" that goes back to them, and the preset whose settings
+// they are, say what a render with them takes before the user chooses it.
+TEST_F(QualityEditorTest, RenderToTooltip_WithATargetChosen_PredictsTheScenesOwnSettingsToo) {
+    // Preview: 16 spp, depth 5, float, and its target. The fixture's 160x120
+    // is large enough for the probes to predict (render_prediction.h).
+    ASSERT_TRUE(pressAndWait("Ctrl+2"));
+    ASSERT_EQ(window->qualityChoice()->target(), previewQuality());
+    const Scene scene = doc->scene();
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] {
+            const ProbePrediction* p = window->tradeoffRecord()->probePrediction();
+            return p && p->scene == scene;
+        },
+        60000));
+    const RenderPrediction& p = window->tradeoffRecord()->probePrediction()->prediction;
+    ASSERT_TRUE(p.predicted) << p.cannot;
+    const QString time =
+        QStringLiteral("\nTime: %1")
+            .arg(PresetControls::timeText(window->tradeoffRecord()->predict(scene)));
+    EXPECT_TRUE(time.contains(QStringLiteral("predicted from small timed probe renders: %1 Mrays")
+                                  .arg(p.rays / 1e6, 0, 'f', 1)))
+        << time.toStdString();
+    const QString error = QStringLiteral("\nError: RMSE %1 of 255, PSNR %2 dB")
+                              .arg(std::sqrt(p.mseCodes2), 0, 'f', 2)
+                              .arg(p.psnrDb, 0, 'f', 1);
+
+    const QString renderTo =
+        child<QComboBox>("qualityTarget")->itemData(0, Qt::ToolTipRole).toString();
+    EXPECT_TRUE(renderTo.startsWith(
+        QStringLiteral("Renders 16 samples per pixel to max depth 5 in float, as set here.")))
+        << renderTo.toStdString();
+    EXPECT_TRUE(renderTo.contains(time)) << renderTo.toStdString();
+    EXPECT_TRUE(renderTo.contains(error)) << renderTo.toStdString();
+    const QString preview =
+        child<QComboBox>("renderPreset")->itemData(2, Qt::ToolTipRole).toString();
+    EXPECT_TRUE(preview.contains(QStringLiteral("max depth set here:") + time))
+        << preview.toStdString();
+    EXPECT_TRUE(preview.contains(error)) << preview.toStdString();
 }
 
 // The status bar and the export message: a range where tiles stopped at

@@ -196,23 +196,37 @@ void PresetControls::refresh() {
         RenderSettings with = scene.render;
         applyPreset(preset, with);
         const Prediction p = record_->predict(scene, &with);
-        const std::optional<QualityTarget> itsTarget = qualityPreset(preset.name);
-        const TargetPrediction* ahead = record_->targetPrediction(scene, *itsTarget);
-        const QString reached = quality_->lastReached(std::string(preset.name));
         const QString tip =
-            tr("Renders to %1, choosing the depth and samples for this scene.\n"
-               "Time: %2\nError: %3\n%4\n"
-               "Its settings, when rendering to the samples per pixel and max depth set "
-               "here:\nTime: %5\nError: %6")
-                .arg(QualityChoice::describe(itsTarget), targetTimeText(ahead, QString()),
-                     targetErrorText(ahead, itsTarget),
-                     reached.isEmpty()
-                         ? tr("Not yet rendered to it on this scene: the status bar will "
-                              "show what it takes.")
-                         : tr("The last render to it here: %1.").arg(reached),
-                     timeText(p), errorText(p));
+            tr("%1\nIts settings, when rendering to the samples per pixel and "
+               "max depth set here:\nTime: %2\nError: %3")
+                .arg(targetTip(scene, *qualityPreset(preset.name)), timeText(p), errorText(p));
         combo_->setItemData(int(i) + 1, tip, Qt::ToolTipRole);
     }
+    // The same for "Render to": the settings, predicted also while a target
+    // is chosen (probe_predictor.h), and each target.
+    target_->setItemData(
+        0,
+        tr("Renders %1 samples per pixel to max depth %2 in %3, as set here.\n"
+           "Time: %4\nError: %5")
+            .arg(scene.render.samplesPerPixel)
+            .arg(scene.render.maxDepth)
+            .arg(viewText(precisionName(scene.render.precision)), timeText(now), errorText(now)),
+        Qt::ToolTipRole);
+    const std::vector<QualityTarget> targets = QualityChoice::offered();
+    for (std::size_t i = 0; i < targets.size(); ++i)
+        target_->setItemData(int(i) + 1, targetTip(scene, targets[i]), Qt::ToolTipRole);
+}
+
+QString PresetControls::targetTip(const Scene& scene, const QualityTarget& target) const {
+    const TargetPrediction* ahead = record_->targetPrediction(scene, target);
+    const QString reached = quality_->lastReached(target.name);
+    return tr("Renders to %1, choosing the depth and samples for this scene.\n"
+              "Time: %2\nError: %3\n%4")
+        .arg(QualityChoice::describe(target), targetTimeText(ahead, QString()),
+             targetErrorText(ahead, target),
+             reached.isEmpty() ? tr("Not yet rendered to it on this scene: the status bar will "
+                                    "show what it takes.")
+                               : tr("The last render to it here: %1.").arg(reached));
 }
 
 }  // namespace whitted::ui

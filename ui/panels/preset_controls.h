@@ -8,9 +8,10 @@
 // the preset the scene's settings match, else Custom. The predictions are for
 // the settings; they follow every edit, every finished render and every
 // Measure result, and say where they come from, or that a target has none.
-// Each preset's tooltip names the target it renders to, what the view's last
-// render to it on this scene took (QualityChoice::lastReached()), and the
-// prediction for its settings.
+// Each preset's tooltip names the target it renders to, the prediction of a
+// render to it, what the view's last render to it on this scene took
+// (QualityChoice::lastReached()), and the prediction for its settings. The
+// items of "Render to" say the same of each target, and of the settings.
 #pragma once
 
 #include <QObject>
@@ -59,6 +60,9 @@ class PresetControls : public QObject {
     void choose(int index);
     void chooseTarget(int index);
     void refresh();
+    // A preset's or "Render to"'s tooltip for `target`: what it is, the
+    // probes' prediction of a render to it, and what the last one here took.
+    QString targetTip(const Scene& scene, const QualityTarget& target) const;
 
     SceneDocument* doc_;
     TradeoffRecord* record_;

@@ -27,8 +27,11 @@ void ProbePredictor::sceneChanged(const Scene& scene, const std::optional<Qualit
 }
 
 void ProbePredictor::predict(ProbeRequest&& request, quint64 ticket) {
-    // What the view renders first, then the presets' other targets.
+    // What the view renders first. With a target, then the scene's own
+    // settings: what "Render to" would go back to, and the samples and depth
+    // a preset sets along with its target. Then the presets' other targets.
     std::vector<std::optional<QualityTarget>> targets{request.target};
+    if (request.target) targets.push_back(std::nullopt);
     for (const QualityTarget& preset : QualityChoice::offered())
         if (request.target != preset) targets.push_back(preset);
     for (const std::optional<QualityTarget>& target : targets) {

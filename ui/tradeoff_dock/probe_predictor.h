@@ -6,9 +6,10 @@
 // Its thread runs at a lower priority (base/thread_priority.h): the probes
 // then wait while the view renders instead of slowing it, and their figures,
 // CPU time (analysis/speed_probe.h), do not mind the wait.
-// After what the view renders, it predicts renders to the presets' other
-// targets for their tooltips, each plan then kept for the view should the
-// user choose that preset (PlanMemo).
+// After what the view renders (and, when that is a target, the scene's own
+// settings), it predicts renders to the presets' other targets for their
+// tooltips, each plan then kept for the view should the user choose that
+// preset (PlanMemo).
 // The newest scene wins (core/base/request_thread.h); each result comes back
 // with the scene it was made for, through an outbox under a mutex of our own
 // (as RenderWorker's frames do: ThreadSanitizer cannot see Qt's event queue
@@ -54,8 +55,9 @@ class ProbePredictor : public QObject {
     // How long after the last edit the prediction starts.
     static constexpr int kQuietMs = 400;
 
-    // Predicts a render of `scene`, to `target` if set, then to each preset's
-    // target, once edits have paused for kQuietMs.
+    // Predicts a render of `scene`, to `target` if set (then to its own
+    // settings too), then to each preset's target, once edits have paused
+    // for kQuietMs.
     void sceneChanged(const Scene& scene, const std::optional<QualityTarget>& target);
 
   signals:

@@ -1,7 +1,10 @@
 // whitted-farm: renders a scene on a Slurm cluster (issue 14). The image's
 // regions (--tiles N) or a turntable's frames (--turntable N) become an array
 // job of whitted-render commands, and the regions a merge job that depends on
-// it (afterok); --wait follows them to the end. Re-running the same command
+// it (afterok); --wait follows them to the end. With a quality (--quality,
+// --target-psnr), each task plans the whole picture as whitted-render does
+// (the same plan on every node: planning renders only deterministic probes)
+// and samples its own region until that region meets the target. Re-running the same command
 // renders only what is missing. No scheduler of our own: sbatch, squeue and
 // scancel do it (app/farm/slurm.h).
 // Exit codes: 0 submitted (or, with --wait, rendered); 2 bad input; 1 a job
@@ -44,7 +47,8 @@ namespace {
 struct Options {
     std::string scene, output, workDir;
     int tiles = 0, turntable = 0, maxRunning = 0;
-    RenderFlags render;  // passed on to every task
+    RenderFlags render;    // passed on to every task
+    QualityFlags quality;  // likewise: each task renders its part to the target
     std::vector<std::string> sbatchArgs;
     bool wait = false, quiet = false;
 };
@@ -61,7 +65,9 @@ std::string renderProgram() {
 }
 
 RenderCommand renderCommand(const Options& o) {
-    return {renderProgram(), fs::absolute(o.scene).string(), renderFlagArguments(o.render)};
+    std::vector<std::string> overrides = renderFlagArguments(o.render);
+    for (std::string& flag : qualityFlagArguments(o.quality)) overrides.push_back(std::move(flag));
+    return {renderProgram(), fs::absolute(o.scene).string(), std::move(overrides)};
 }
 
 // What the tasks of this command are, with the scene file's size and time:
@@ -192,6 +198,12 @@ int run(const Options& o) {
     Scene& scene = *loaded;
     applyRenderFlags(o.render, scene.render);
     const int width = scene.render.width, height = scene.render.height;
+    try {
+        qualityTargetOf(o.quality);  // contradicting flags: refused here, not by every task
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "whitted-farm: " << e.what() << "\n";
+        return kExitBadInput;
+    }
     if (o.tiles > width * height) {
         std::cerr << "whitted-farm: --tiles " << o.tiles << ": more than the image's pixels\n";
         return kExitBadInput;
@@ -250,6 +262,7 @@ int main(int argc, char** argv) {
     app.add_flag("--wait", o.wait,
                  "Follow the jobs to the end; exit 1, showing the log, if a task fails");
     addRenderFlags(app, o.render);
+    addQualityFlags(app, o.quality);
     app.add_option("--max-running", o.maxRunning, "At most K tasks at once (sbatch --array=...%K)")
         ->check(CLI::Range(1, 100000));
     app.add_option("--sbatch-arg", o.sbatchArgs,

@@ -3,6 +3,7 @@
 // merge` puts regions back together (issue 14).
 // Exit codes: 0 success; 2 bad input (scene or flags); 1 any other failure.
 // On failure no output file is left behind (frames already finished stay).
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -48,8 +49,7 @@ struct Options {
     std::vector<int> region;  // X0, Y0, X1, Y1
     int turntable = 0;        // frames of one full turn; 0: a still
     std::string frames;       // A-B of the turntable's frames; empty: all
-    std::string quality;      // draft, preview or final; empty: none
-    std::optional<double> targetPsnr, maxError;
+    QualityFlags quality;     // a target instead of the scene's samples
 };
 
 struct MergeOptions {
@@ -170,17 +170,6 @@ std::pair<int, int> framesOf(const Options& o) {
     return {first, last};
 }
 
-// The target the flags ask for, if any.
-std::optional<QualityTarget> targetOf(const Options& o) {
-    if (!o.quality.empty() && o.targetPsnr)
-        throw BadInput("--quality and --target-psnr: give one or the other");
-    if (o.maxError && !o.targetPsnr)
-        throw BadInput("--max-error needs --target-psnr (a preset brings its own)");
-    if (!o.quality.empty()) return qualityPreset(o.quality);
-    if (o.targetPsnr) return QualityTarget{"", *o.targetPsnr, o.maxError};
-    return std::nullopt;
-}
-
 // One image: the scene as given (at the plan's depth, if there is a plan),
 // rendered (only its region, if any) and written with its stats. Returns the
 // exit code.
@@ -264,9 +253,8 @@ int run(const Options& o) {
     }
     std::optional<QualityTarget> target;
     try {
-        target = targetOf(o);
-        if (target && region) throw BadInput("--region renders fixed samples: not with a quality");
-    } catch (const BadInput& e) {
+        target = qualityTargetOf(o.quality);
+    } catch (const std::invalid_argument& e) {
         std::cerr << "whitted-render: " << e.what() << "\n";
         return kExitBadInput;
     }
@@ -285,25 +273,63 @@ int run(const Options& o) {
     return kExitOk;
 }
 
+// What the merged picture records of a render to a quality: the parts'
+// target and what each part reached ("Final: ...; 4 regions, each rendered
+// to it: depth 6, ...; depth 6, ..."); empty for fixed samples. Parts of
+// other targets, or some of fixed samples, are another render's: refused.
+std::string mergedQuality(const std::vector<ImagePart>& parts,
+                          const std::vector<std::string>& names) {
+    const auto targetOf = [](const std::string& quality) {
+        return quality.substr(0, quality.find("; "));
+    };
+    const std::string target = targetOf(parts[0].metadata.quality);
+    std::string reached;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        const std::string& q = parts[i].metadata.quality;
+        if (targetOf(q) != target) {
+            const auto what = [](const std::string& t) {
+                return t.empty() ? std::string("fixed samples") : "a quality (" + t + ")";
+            };
+            throw std::invalid_argument(names[i] + " was rendered to " + what(targetOf(q)) + ", " +
+                                        names[0] + " to " + what(target) +
+                                        ": parts of different renders");
+        }
+        if (q.size() > target.size()) reached += "; " + q.substr(target.size() + 2);
+    }
+    if (target.empty()) return {};
+    return target + "; " + std::to_string(parts.size()) + " regions, each rendered to it" +
+           (reached.empty() ? "" : ":" + reached.substr(1));
+}
+
 // `whitted-render merge`: the parts read, checked to tile one picture, and
 // written as one image.
 int runMerge(const MergeOptions& o) {
     if (!outputFormatOrSay("whitted-render", o.output)) return kExitBadInput;
     std::vector<ImagePart> parts;
     Image whole;
+    std::string quality;
     try {
         for (const std::string& file : o.parts) parts.push_back(readImagePart(file));
         whole = mergeParts(parts, o.parts);
+        quality = mergedQuality(parts, o.parts);
     } catch (const std::exception& e) {
         std::cerr << "whitted-render: merge: " << e.what() << "\n";
         return kExitBadInput;
     }
-    // The settings the parts record; the time, all of theirs together.
+    // The settings the parts record (rendered to a quality, each part's
+    // depth and most samples its own: the largest of them); the time, all of
+    // theirs together.
     RenderSettings settings = parts[0].metadata.settings;
     double seconds = 0.0;
-    for (const ImagePart& p : parts) seconds += p.metadata.renderSeconds;
+    for (const ImagePart& p : parts) {
+        seconds += p.metadata.renderSeconds;
+        settings.samplesPerPixel =
+            std::max(settings.samplesPerPixel, p.metadata.settings.samplesPerPixel);
+        settings.maxDepth = std::max(settings.maxDepth, p.metadata.settings.maxDepth);
+    }
     try {
-        writeImage(whole, o.output, makeImageMetadata(settings, seconds, "whitted-render"));
+        writeImage(whole, o.output,
+                   makeImageMetadata(settings, seconds, "whitted-render", quality));
     } catch (const std::exception& e) {
         std::cerr << "whitted-render: " << e.what() << "\n";
         return kExitFailure;
@@ -339,19 +365,7 @@ int main(int argc, char** argv) {
                    "Render N frames, the eye turning about look_at once around the up axis")
         ->check(CLI::Range(1, 99999));
     app.add_option("--frames", o.frames, "Render only frames A-B of the turntable (1-based)");
-    app.add_option("--quality", o.quality,
-                   "Render to a quality: draft (20 dB), preview (35 dB, no pixel off by more "
-                   "than 64 codes) or final (50 dB, 16 codes); the depth is chosen for the scene "
-                   "and each tile sampled until its error is under the target (--spp: at most "
-                   "that many samples a pixel, default 1024; --depth: fix the depth)")
-        ->transform(CLI::IsMember({"draft", "preview", "final"}, CLI::ignore_case));
-    app.add_option("--target-psnr", o.targetPsnr,
-                   "Render to this PSNR in dB of the 8-bit picture against a converged render, "
-                   "as --quality does")
-        ->check(CLI::Range(1.0, 100.0));
-    app.add_option("--max-error", o.maxError,
-                   "With --target-psnr: no pixel off by more than this many 8-bit codes")
-        ->check(CLI::Range(0.5, 255.0));
+    addQualityFlags(app, o.quality);
 
     MergeOptions m;
     CLI::App* merge = app.add_subcommand(

@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "image/image_error.h"
 #include "image/image_io.h"
 #include "support/test_support.h"
 
@@ -150,6 +151,38 @@ TEST(WhittedFarm, TilesOnSlurmEqualTheLocalRender_PathsReachTheJobsIntact) {
         test::appended({scene.string(), "-o", out.string(), "--tiles", "4", "--wait"}, kSmall));
     EXPECT_EQ(again.exitCode, 0) << again.out;
     EXPECT_NE(again.out.find("already done"), std::string::npos) << again.out;
+}
+
+// A quality on the farm: each task renders its region to the target, and
+// the merged picture meets it against a converged render. Flags that
+// contradict are refused before anything is submitted.
+TEST(WhittedFarm, TilesToAQualityOnSlurm_MeetTheTarget) {
+    TempDir dir;
+    const std::vector<std::string> size = {"--width", "64", "--height", "48"};
+    const fs::path out = dir / "preview.exr", ref = dir / "ref.exr";
+    const ProgramRun r = farm(test::appended({test::kSeedScenePath, "-o", out.string(), "--tiles",
+                                              "4", "--quality", "preview", "--wait"},
+                                             size));
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    renderLocally(test::appended({test::kSeedScenePath, "-o", ref.string(), "--spp", "1024",
+                                  "--depth", "12", "--precision", "double"},
+                                 size));
+    const ErrorStats e = measureError(readImage(out), readImage(ref));
+    EXPECT_GE(e.psnrSrgb8, 35.0);
+    EXPECT_LE(e.largest, 64.0);
+    EXPECT_EQ(readImagePart(out).metadata.quality.rfind(
+                  "Preview: 35 dB, no pixel off by more than 64 codes; 4 regions, each rendered "
+                  "to it: depth ",
+                  0),
+              0u)
+        << readImagePart(out).metadata.quality;
+
+    const fs::path refused = dir / "refused.exr";
+    const ProgramRun bad = farm(test::appended(
+        {test::kSeedScenePath, "-o", refused.string(), "--tiles", "4", "--max-error", "8"}, size));
+    EXPECT_EQ(bad.exitCode, 2) << bad.out;
+    EXPECT_NE(bad.out.find("--max-error needs --target-psnr"), std::string::npos) << bad.out;
+    EXPECT_FALSE(fs::exists(refused.string() + ".farm"));
 }
 
 TEST(WhittedFarm, TurntableFramesOnSlurmEqualTheLocalFrames) {

@@ -436,6 +436,60 @@ TEST(WhittedRender, TargetPsnr_IsMetAndAGivenDepthIsKept) {
     EXPECT_TRUE(j["quality"]["target_max_error_codes"].is_null());
 }
 
+// A farm renders a quality in regions (whitted-farm --quality): each region
+// planned as the whole picture is, and sampled until it meets the target
+// itself, so that the merged picture meets it too; the merged file says what
+// each part reached. A part of fixed samples is another render's.
+TEST(WhittedRender, RegionsToAQuality_MergeIntoAPictureThatMeetsIt) {
+    TempDir dir;
+    const std::vector<std::string> size = {"--width", "96", "--height", "72"};
+    std::vector<std::string> parts;
+    int mostSamples = 0;
+    for (const char* region : {"0,0,48,36", "48,0,96,36", "0,36,48,72", "48,36,96,72"}) {
+        const fs::path part = dir / (std::string("part ") + region + ".exr");
+        const ProgramRun r =
+            runRender(test::appended({test::kSeedScenePath, "-o", part.string(), "--quality",
+                                      "final", "--region", region, "--quiet"},
+                                     size));
+        ASSERT_EQ(r.exitCode, 0) << region << "\n" << describe(r);
+        parts.push_back(part.string());
+        mostSamples = std::max(mostSamples, readImagePart(part).metadata.settings.samplesPerPixel);
+    }
+    const fs::path merged = dir / "merged.exr", ref = dir / "ref.exr";
+    ProgramRun r =
+        runRender(test::appended({"merge"}, test::appended(parts, {"-o", merged.string()})));
+    ASSERT_EQ(r.exitCode, 0) << describe(r);
+    ASSERT_EQ(runRender(test::appended({test::kSeedScenePath, "-o", ref.string(), "--spp", "1024",
+                                        "--depth", "12", "--precision", "double", "--quiet"},
+                                       size))
+                  .exitCode,
+              0);
+    const ErrorStats e = measureError(readImage(merged), readImage(ref));
+    EXPECT_GE(e.psnrSrgb8, 50.0);
+    EXPECT_LE(e.largest, 16.0);
+    const ImageMetadata m = readImagePart(merged).metadata;
+    EXPECT_EQ(m.quality.rfind("Final: 50 dB, no pixel off by more than 16 codes; 4 regions, each "
+                              "rendered to it: depth ",
+                              0),
+              0u)
+        << m.quality;
+    EXPECT_EQ(m.settings.samplesPerPixel, mostSamples);
+
+    const fs::path fixed = dir / "fixed.exr", mixed = dir / "mixed.exr";
+    ASSERT_EQ(runRender(test::appended({test::kSeedScenePath, "-o", fixed.string(), "--region",
+                                        "48,36,96,72", "--quiet"},
+                                       size))
+                  .exitCode,
+              0);
+    r = runRender({"merge", parts[0], parts[1], parts[2], fixed.string(), "-o", mixed.string()});
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_NE(r.err.find(fixed.string() + " was rendered to fixed samples, " + parts[0] +
+                         " to a quality (Final: 50 dB, no pixel off by more than 16 codes)"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(mixed));
+}
+
 TEST(WhittedRender, QualityFlagsThatContradict_ExitTwoAndWriteNothing) {
     const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
         {{"--quality", "best"}, "--quality"},

@@ -2,11 +2,10 @@
 // regions (--tiles N) or a turntable's frames (--turntable N) become an array
 // job of whitted-render commands, and the regions a merge job that depends on
 // it (afterok); --wait follows them to the end. With a quality (--quality,
-// --target-psnr), each task plans the whole picture as whitted-render does
-// (the same plan on every node: planning renders only deterministic probes)
-// and samples its own region until that region meets the target. Re-running the same command
-// renders only what is missing. No scheduler of our own: sbatch, squeue and
-// scancel do it (app/farm/slurm.h).
+// --target-psnr), the whole picture is planned here, once, and each task
+// reads the plan (--plan) and samples its own region until that region meets
+// the target. Re-running the same command renders only what is missing. No
+// scheduler of our own: sbatch, squeue and scancel do it (app/farm/slurm.h).
 // Exit codes: 0 submitted (or, with --wait, rendered); 2 bad input; 1 a job
 // failed or Slurm refused; 130 interrupted (the jobs are cancelled).
 #include <algorithm>
@@ -34,7 +33,9 @@
 #include "farm/plan.h"
 #include "farm/slurm.h"
 #include "image/image_io.h"
+#include "plan_file.h"
 #include "render_flags.h"
+#include "render_quality.h"
 #include "scene/scene.h"
 #include "scene/scene_io.h"
 
@@ -64,9 +65,11 @@ std::string renderProgram() {
     return (fs::read_symlink("/proc/self/exe").parent_path() / "whitted-render").string();
 }
 
-RenderCommand renderCommand(const Options& o) {
+// `planFile`, if not empty: the plan every task of a render to a quality reads.
+RenderCommand renderCommand(const Options& o, const fs::path& planFile) {
     std::vector<std::string> overrides = renderFlagArguments(o.render);
     for (std::string& flag : qualityFlagArguments(o.quality)) overrides.push_back(std::move(flag));
+    if (!planFile.empty()) overrides.insert(overrides.end(), {"--plan", planFile.string()});
     return {renderProgram(), fs::absolute(o.scene).string(), std::move(overrides)};
 }
 
@@ -198,8 +201,10 @@ int run(const Options& o) {
     Scene& scene = *loaded;
     applyRenderFlags(o.render, scene.render);
     const int width = scene.render.width, height = scene.render.height;
+    std::optional<QualityTarget> target;
     try {
-        qualityTargetOf(o.quality);  // contradicting flags: refused here, not by every task
+        // Contradicting flags: refused here, not by every task.
+        target = qualityTargetOf(o.quality);
     } catch (const std::invalid_argument& e) {
         std::cerr << "whitted-farm: " << e.what() << "\n";
         return kExitBadInput;
@@ -211,7 +216,10 @@ int run(const Options& o) {
     const fs::path output = fs::absolute(o.output);
     const fs::path work =
         o.workDir.empty() ? fs::path(output.string() + ".farm") : fs::absolute(o.workDir);
-    const RenderCommand command = renderCommand(o);
+    // The regions of a render to a quality share one plan, made here once
+    // (plan_file.h); a turntable's frames each plan their own.
+    const fs::path planFile = target && o.turntable == 0 ? work / "plan.json" : fs::path();
+    const RenderCommand command = renderCommand(o, planFile);
     const Plan plan = o.turntable > 0
                           ? turntablePlan(command, output, o.turntable)
                           : regionPlan(command, output, work, width, height, std::max(1, o.tiles));
@@ -219,6 +227,18 @@ int run(const Options& o) {
     if (!fresh && fs::exists(output) && plan.merge) {
         if (!o.quiet) std::cerr << "whitted-farm: " << output.string() << " is already done\n";
         return kExitOk;
+    }
+    if (!planFile.empty()) {
+        if (fresh) fs::remove(planFile);  // another command's, or another scene's
+        try {
+            const QualityPlan quality =
+                sharedPlan(planFile, scene, *target, o.render.spp.value_or(kDefaultMaxSamples),
+                           o.render.depth);
+            if (!o.quiet) sayQualityPlan(quality);
+        } catch (const std::exception& e) {
+            std::cerr << "whitted-farm: " << e.what() << "\n";
+            return kExitFailure;
+        }
     }
     SubmitOptions submitOptions{work, o.sbatchArgs, o.maxRunning};
     Jobs jobs;

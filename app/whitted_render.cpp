@@ -15,6 +15,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <utility>
 #include <vector>
 
@@ -28,6 +29,7 @@
 #include "cli_main.h"
 #include "image/image_io.h"
 #include "image/image_parts.h"
+#include "plan_file.h"
 #include "render_flags.h"
 #include "render_quality.h"
 #include "scene/scene_io.h"
@@ -50,6 +52,7 @@ struct Options {
     int turntable = 0;        // frames of one full turn; 0: a still
     std::string frames;       // A-B of the turntable's frames; empty: all
     QualityFlags quality;     // a target instead of the scene's samples
+    std::string planFile;     // the plan shared with other regions (plan_file.h); empty: none
 };
 
 struct MergeOptions {
@@ -211,17 +214,21 @@ int renderFrame(Scene& scene, const Options& o, const std::optional<PixelRect>& 
         }
     }
     if (!o.quiet && plan && result.adaptive) sayQualityReached(*plan, *result.adaptive);
+    // "640x480", or "region 0,0,320,240 of 640x480".
+    const std::string picture =
+        (region ? "region " + cornersText(*region) + " of " : std::string()) +
+        std::to_string(scene.render.width) + "x" + std::to_string(scene.render.height);
     if (!o.quiet && !plan) {
         std::fprintf(
-            stderr, "wrote %s: %dx%d, %d spp, depth %d, %s, %.3f s, %.1f Mrays/s, %s kernel\n",
-            output.c_str(), scene.render.width, scene.render.height, scene.render.samplesPerPixel,
-            scene.render.maxDepth, std::string(precisionName(scene.render.precision)).c_str(),
-            result.seconds, result.seconds > 0 ? result.rays.total() / result.seconds / 1e6 : 0.0,
+            stderr, "wrote %s: %s, %d spp, depth %d, %s, %.3f s, %.1f Mrays/s, %s kernel\n",
+            output.c_str(), picture.c_str(), scene.render.samplesPerPixel, scene.render.maxDepth,
+            std::string(precisionName(scene.render.precision)).c_str(), result.seconds,
+            result.seconds > 0 ? result.rays.total() / result.seconds / 1e6 : 0.0,
             activeKernelName().c_str());
     } else if (!o.quiet) {
-        std::fprintf(stderr, "wrote %s: %dx%d, %.1f spp on average, depth %d, %s, %.3f s\n",
-                     output.c_str(), scene.render.width, scene.render.height,
-                     result.adaptive->meanSamples, scene.render.maxDepth,
+        std::fprintf(stderr, "wrote %s: %s, %.1f spp on average, depth %d, %s, %.3f s\n",
+                     output.c_str(), picture.c_str(), result.adaptive->meanSamples,
+                     scene.render.maxDepth,
                      std::string(precisionName(scene.render.precision)).c_str(), result.seconds);
     }
     return kExitOk;
@@ -254,19 +261,36 @@ int run(const Options& o) {
     std::optional<QualityTarget> target;
     try {
         target = qualityTargetOf(o.quality);
+        if (!o.planFile.empty() && !target)
+            throw std::invalid_argument("--plan needs --quality or --target-psnr");
+        if (!o.planFile.empty() && o.turntable > 0)
+            throw std::invalid_argument("--plan: each frame of a turntable has a plan of its own");
     } catch (const std::invalid_argument& e) {
         std::cerr << "whitted-render: " << e.what() << "\n";
         return kExitBadInput;
     }
     const Camera camera = scene.camera;
+    const int maxSamples = o.render.spp.value_or(kDefaultMaxSamples);
     for (int frame = frames.first; frame <= frames.second; ++frame) {
         if (frame > 0) scene.camera = turntableCamera(camera, frame, o.turntable);
         std::optional<QualityPlan> plan;
-        if (target) {
-            plan = planQuality(scene, *target, o.render.spp.value_or(kDefaultMaxSamples),
-                               o.render.depth);
-            if (!o.quiet) sayQualityPlan(*plan);
+        if (target && o.planFile.empty())
+            plan = planQuality(scene, *target, maxSamples, o.render.depth);
+        else if (target) {
+            try {
+                if (!o.quiet && fs::exists(o.planFile))
+                    std::fprintf(stderr, "the plan in %s, made before for this picture:\n",
+                                 o.planFile.c_str());
+                plan = sharedPlan(o.planFile, scene, *target, maxSamples, o.render.depth);
+            } catch (const std::system_error& e) {  // written, not read
+                std::cerr << "whitted-render: " << o.planFile << ": " << e.what() << "\n";
+                return kExitFailure;
+            } catch (const std::runtime_error& e) {
+                std::cerr << "whitted-render: " << e.what() << "\n";
+                return kExitBadInput;
+            }
         }
+        if (plan && !o.quiet) sayQualityPlan(*plan);
         if (const int code = renderFrame(scene, o, region, frame, plan); code != kExitOk)
             return code;
     }
@@ -366,6 +390,10 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 99999));
     app.add_option("--frames", o.frames, "Render only frames A-B of the turntable (1-based)");
     addQualityFlags(app, o.quality);
+    app.add_option("--plan", o.planFile,
+                   "With a quality: render to the plan in this file, or plan and write it there "
+                   "if there is none, so that the regions of one picture share one plan "
+                   "(whitted-farm makes it once for all its tasks)");
 
     MergeOptions m;
     CLI::App* merge = app.add_subcommand(

@@ -153,9 +153,9 @@ TEST(WhittedFarm, TilesOnSlurmEqualTheLocalRender_PathsReachTheJobsIntact) {
     EXPECT_NE(again.out.find("already done"), std::string::npos) << again.out;
 }
 
-// A quality on the farm: each task renders its region to the target, and
-// the merged picture meets it against a converged render. Flags that
-// contradict are refused before anything is submitted.
+// A quality on the farm: planned once, then each task renders its region to
+// the plan, and the merged picture meets the target against a converged
+// render. Flags that contradict are refused before anything is submitted.
 TEST(WhittedFarm, TilesToAQualityOnSlurm_MeetTheTarget) {
     TempDir dir;
     const std::vector<std::string> size = {"--width", "64", "--height", "48"};
@@ -164,6 +164,17 @@ TEST(WhittedFarm, TilesToAQualityOnSlurm_MeetTheTarget) {
                                               "4", "--quality", "preview", "--wait"},
                                              size));
     ASSERT_EQ(r.exitCode, 0) << r.out;
+    // Planned once, here, and every task given the plan.
+    EXPECT_NE(r.out.find("quality Preview: 35 dB, no pixel off by more than 64 codes\n  depth "),
+              std::string::npos)
+        << r.out;
+    const fs::path work = out.string() + ".farm";
+    EXPECT_TRUE(fs::exists(work / "plan.json"));
+    for (const char* args : {"task-0.args", "task-3.args"})
+        EXPECT_NE(test::readFile(work / args)
+                      .find(std::string("--plan", 7) + (work / "plan.json").string()),
+                  std::string::npos)
+            << args;
     renderLocally(test::appended({test::kSeedScenePath, "-o", ref.string(), "--spp", "1024",
                                   "--depth", "12", "--precision", "double"},
                                  size));

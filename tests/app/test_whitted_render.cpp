@@ -490,6 +490,62 @@ TEST(WhittedRender, RegionsToAQuality_MergeIntoAPictureThatMeetsIt) {
     EXPECT_FALSE(fs::exists(mixed));
 }
 
+// --plan: the first region plans and writes the file, the others render to
+// it without planning (a plan edited by hand shows that it is read); a plan
+// for another picture, or without a quality, is refused.
+TEST(WhittedRender, PlanFile_MadeOnceThenReadByEachRegion) {
+    TempDir dir;
+    const fs::path planFile = dir / "plan.json";
+    const auto region = [&](const char* corners, const std::vector<std::string>& more = {}) {
+        const fs::path part = dir / (std::string("part ") + corners + ".exr");
+        return runRender(
+            test::appended({test::kSeedScenePath, "-o", part.string(), "--width", "96", "--height",
+                            "72", "--quality", "preview", "--region", corners, "--plan",
+                            planFile.string(), "--stats", (dir / "stats.json").string()},
+                           more));
+    };
+    ProgramRun r = region("0,0,48,72");
+    ASSERT_EQ(r.exitCode, 0) << describe(r);
+    EXPECT_EQ(r.err.find("the plan in "), std::string::npos) << r.err;  // made, not read
+    nlohmann::json plan = nlohmann::json::parse(test::readFile(planFile));
+    EXPECT_EQ(plan["target"]["name"], "Preview");
+    EXPECT_EQ(plan["max_depth"],
+              nlohmann::json::parse(test::readFile(dir / "stats.json"))["max_depth"]);
+    plan["max_depth"] = 1;
+    test::writeFile(planFile, plan.dump());
+    r = region("48,0,96,72");
+    ASSERT_EQ(r.exitCode, 0) << describe(r);
+    EXPECT_NE(r.err.find("the plan in " + planFile.string() + ", made before for this picture:"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(nlohmann::json::parse(test::readFile(dir / "stats.json"))["max_depth"], 1);
+    EXPECT_NE(r.err.find(": region 48,0,96,72 of 96x72, "), std::string::npos) << r.err;
+
+    r = runRender({test::kSeedScenePath, "-o", (dir / "small.exr").string(), "--width", "64",
+                   "--height", "48", "--quality", "preview", "--region", "0,0,8,8", "--plan",
+                   planFile.string()});
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_NE(r.err.find(planFile.string() +
+                         ": the plan is for a picture of 96x72 in float, this one is 64x48 in "
+                         "float"),
+              std::string::npos)
+        << r.err;
+    r = runRender({test::kSeedScenePath, "-o", (dir / "other.exr").string(), "--width", "96",
+                   "--height", "72", "--target-psnr", "40", "--region", "0,0,8,8", "--plan",
+                   planFile.string()});
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_NE(r.err.find(": the plan is for Preview: 35 dB, no pixel off by more than 64 codes, "
+                         "not 40 dB"),
+              std::string::npos)
+        << r.err;
+    r = runRender(
+        {test::kSeedScenePath, "-o", (dir / "fixed.png").string(), "--plan", planFile.string()});
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_NE(r.err.find("--plan needs --quality or --target-psnr"), std::string::npos) << r.err;
+    for (const char* refused : {"small.exr", "other.exr", "fixed.png"})
+        EXPECT_FALSE(fs::exists(dir / refused)) << refused;
+}
+
 TEST(WhittedRender, QualityFlagsThatContradict_ExitTwoAndWriteNothing) {
     const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
         {{"--quality", "best"}, "--quality"},

@@ -9,24 +9,36 @@
 #include <filesystem>
 #include <optional>
 
+#include <nlohmann/json.hpp>
+
 #include "analysis/quality_target.h"
 #include "scene/scene.h"
 
 namespace whitted {
 
-// The plan as a file (JSON), with the picture's size and precision it was made for.
-void writePlanFile(const std::filesystem::path& file, const QualityPlan& plan,
-                   const RenderSettings& planned);
+// Every field of the plan, under the names --stats gives them in its
+// "quality" block; planFromJson() reads them back.
+nlohmann::ordered_json planJson(const QualityPlan& plan);
+QualityPlan planFromJson(const nlohmann::json& j);
+
+// The plan as a file (JSON), with the scene (its content, picture size and
+// precision) it was made for.
+void writePlanFile(const std::filesystem::path& file, const QualityPlan& plan, const Scene& scene);
 
 // The plan in `file`; std::runtime_error naming the file and what is wrong
-// where it is no plan, or one made for another picture size, precision or
-// target than `settings` and `target`.
-QualityPlan readPlanFile(const std::filesystem::path& file, const RenderSettings& settings,
+// where it is no plan, or one made for another scene, picture size,
+// precision or target than `scene` and `target`.
+QualityPlan readPlanFile(const std::filesystem::path& file, const Scene& scene,
                          const QualityTarget& target);
+
+struct SharedPlan {
+    QualityPlan plan;
+    bool read = false;  // from the file; else made here, and written there
+};
 
 // The plan in `file` if there is one, else planQuality()'s, written there
 // for the renders that follow.
-QualityPlan sharedPlan(const std::filesystem::path& file, const Scene& scene,
-                       const QualityTarget& target, int maxSamples, std::optional<int> depth);
+SharedPlan sharedPlan(const std::filesystem::path& file, const Scene& scene,
+                      const QualityTarget& target, int maxSamples, std::optional<int> depth);
 
 }  // namespace whitted

@@ -4,24 +4,15 @@
 #include <cstdio>
 #include <sstream>
 
+#include "plan_file.h"
+
 namespace whitted {
 
-// What a render to a quality chose and reached, for --stats.
+// What a render to a quality chose and reached, for --stats: the plan's
+// fields as its file has them, then what the render reached, then why.
 nlohmann::ordered_json qualityJson(const QualityPlan& plan, const AdaptiveOutcome& outcome) {
-    nlohmann::ordered_json q;
-    q["target"] = plan.target.name.empty() ? "custom" : plan.target.name;
-    q["target_psnr_db"] = plan.target.psnrDb;
-    q["target_max_error_codes"] =
-        plan.target.largestCodes ? nlohmann::ordered_json(*plan.target.largestCodes) : nullptr;
-    q["depth_chosen"] = !plan.depthGiven;
-    q["reference_depth"] = plan.referenceDepth;
-    q["depth_mse_codes2"] = plan.depthMse;
-    q["depth_max_error_codes"] = plan.depthLargest;
-    q["depth_measured_at_picture_size"] = plan.depthAtPictureSize;
-    q["precision_mse_codes2"] = plan.precisionMse;
-    q["sampling_mse_limit_codes2"] = plan.sampling.allowedMse;
-    q["sampling_max_error_limit_codes"] = plan.sampling.allowedLargest;
-    q["max_samples_per_pixel"] = plan.sampling.maxSamples;
+    nlohmann::ordered_json q = planJson(plan);
+    q.erase("why");
     q["samples_per_pixel_mean"] = outcome.meanSamples;
     q["samples_per_pixel_fewest"] = outcome.fewestSamples;
     q["samples_per_pixel_most"] = outcome.mostSamples;

@@ -21,6 +21,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -63,6 +64,22 @@ extern "C" void onSignal(int) {
 // whitted-render beside this program: the same path must work on every node.
 std::string renderProgram() {
     return (fs::read_symlink("/proc/self/exe").parent_path() / "whitted-render").string();
+}
+
+// The plan the tasks share: made here, or read when the same render goes on.
+// One the farm cannot use (an older whitted-farm's, or a broken file) is made
+// again: the work directory is the farm's own.
+QualityPlan farmPlan(const fs::path& planFile, const Scene& scene, const QualityTarget& target,
+                     const RenderFlags& flags) {
+    const int maxSamples = flags.spp.value_or(kDefaultMaxSamples);
+    try {
+        return sharedPlan(planFile, scene, target, maxSamples, flags.depth).plan;
+    } catch (const std::system_error&) {
+        throw;
+    } catch (const std::runtime_error&) {
+        fs::remove(planFile);
+        return sharedPlan(planFile, scene, target, maxSamples, flags.depth).plan;
+    }
 }
 
 // `planFile`, if not empty: the plan every task of a render to a quality reads.
@@ -231,9 +248,7 @@ int run(const Options& o) {
     if (!planFile.empty()) {
         if (fresh) fs::remove(planFile);  // another command's, or another scene's
         try {
-            const QualityPlan quality =
-                sharedPlan(planFile, scene, *target, o.render.spp.value_or(kDefaultMaxSamples),
-                           o.render.depth);
+            const QualityPlan quality = farmPlan(planFile, scene, *target, o.render);
             if (!o.quiet) sayQualityPlan(quality);
         } catch (const std::exception& e) {
             std::cerr << "whitted-farm: " << e.what() << "\n";

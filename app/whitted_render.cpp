@@ -278,10 +278,12 @@ int run(const Options& o) {
             plan = planQuality(scene, *target, maxSamples, o.render.depth);
         else if (target) {
             try {
-                if (!o.quiet && fs::exists(o.planFile))
+                const SharedPlan shared =
+                    sharedPlan(o.planFile, scene, *target, maxSamples, o.render.depth);
+                if (!o.quiet && shared.read)
                     std::fprintf(stderr, "the plan in %s, made before for this picture:\n",
                                  o.planFile.c_str());
-                plan = sharedPlan(o.planFile, scene, *target, maxSamples, o.render.depth);
+                plan = shared.plan;
             } catch (const std::system_error& e) {  // written, not read
                 std::cerr << "whitted-render: " << o.planFile << ": " << e.what() << "\n";
                 return kExitFailure;
@@ -297,31 +299,27 @@ int run(const Options& o) {
     return kExitOk;
 }
 
-// What the merged picture records of a render to a quality: the parts'
-// target and what each part reached ("Final: ...; 4 regions, each rendered
-// to it: depth 6, ...; depth 6, ..."); empty for fixed samples. Parts of
-// other targets, or some of fixed samples, are another render's: refused.
-std::string mergedQuality(const std::vector<ImagePart>& parts,
+// What the merged picture of a render to a quality reached: what each part
+// reached ("4 regions, each rendered to it: depth 6, ...; depth 6, ..."),
+// under the target they share; empty for fixed samples. Parts of other
+// targets, or some of fixed samples, are another render's: refused.
+std::string mergedReached(const std::vector<ImagePart>& parts,
                           const std::vector<std::string>& names) {
-    const auto targetOf = [](const std::string& quality) {
-        return quality.substr(0, quality.find("; "));
+    const std::string& target = parts[0].metadata.qualityTarget;
+    const auto what = [](const std::string& t) {
+        return t.empty() ? std::string("fixed samples") : "a quality (" + t + ")";
     };
-    const std::string target = targetOf(parts[0].metadata.quality);
     std::string reached;
     for (std::size_t i = 0; i < parts.size(); ++i) {
-        const std::string& q = parts[i].metadata.quality;
-        if (targetOf(q) != target) {
-            const auto what = [](const std::string& t) {
-                return t.empty() ? std::string("fixed samples") : "a quality (" + t + ")";
-            };
-            throw std::invalid_argument(names[i] + " was rendered to " + what(targetOf(q)) + ", " +
-                                        names[0] + " to " + what(target) +
+        const ImageMetadata& m = parts[i].metadata;
+        if (m.qualityTarget != target)
+            throw std::invalid_argument(names[i] + " was rendered to " + what(m.qualityTarget) +
+                                        ", " + names[0] + " to " + what(target) +
                                         ": parts of different renders");
-        }
-        if (q.size() > target.size()) reached += "; " + q.substr(target.size() + 2);
+        if (!m.qualityReached.empty()) reached += "; " + m.qualityReached;
     }
     if (target.empty()) return {};
-    return target + "; " + std::to_string(parts.size()) + " regions, each rendered to it" +
+    return std::to_string(parts.size()) + " regions, each rendered to it" +
            (reached.empty() ? "" : ":" + reached.substr(1));
 }
 
@@ -331,11 +329,11 @@ int runMerge(const MergeOptions& o) {
     if (!outputFormatOrSay("whitted-render", o.output)) return kExitBadInput;
     std::vector<ImagePart> parts;
     Image whole;
-    std::string quality;
+    std::string reached;
     try {
         for (const std::string& file : o.parts) parts.push_back(readImagePart(file));
         whole = mergeParts(parts, o.parts);
-        quality = mergedQuality(parts, o.parts);
+        reached = mergedReached(parts, o.parts);
     } catch (const std::exception& e) {
         std::cerr << "whitted-render: merge: " << e.what() << "\n";
         return kExitBadInput;
@@ -353,7 +351,8 @@ int runMerge(const MergeOptions& o) {
     }
     try {
         writeImage(whole, o.output,
-                   makeImageMetadata(settings, seconds, "whitted-render", quality));
+                   makeImageMetadata(settings, seconds, "whitted-render",
+                                     parts[0].metadata.qualityTarget, reached));
     } catch (const std::exception& e) {
         std::cerr << "whitted-render: " << e.what() << "\n";
         return kExitFailure;

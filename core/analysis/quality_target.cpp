@@ -575,10 +575,9 @@ ImageMetadata qualityMetadata(const Scene& scene, const QualityPlan& plan,
     RenderSettings settings = scene.render;
     settings.maxDepth = plan.maxDepth;
     settings.samplesPerPixel = reached.mostSamples;
-    return makeImageMetadata(settings, seconds, std::move(software),
-                             describeTarget(plan.target) + "; depth " +
-                                 std::to_string(plan.maxDepth) + ", " +
-                                 describeReached(plan, reached));
+    return makeImageMetadata(
+        settings, seconds, std::move(software), describeTarget(plan.target),
+        "depth " + std::to_string(plan.maxDepth) + ", " + describeReached(plan, reached));
 }
 
 void applyPlan(const QualityPlan& plan, Scene& scene, RenderOptions& options) {

@@ -66,7 +66,12 @@ OIIO::ImageSpec imageSpec(const Image& image, const fs::path& file, const ImageF
     spec.attribute("whitted:max_depth", metadata.settings.maxDepth);
     spec.attribute("whitted:precision", std::string(precisionName(metadata.settings.precision)));
     spec.attribute("whitted:render_seconds", float(metadata.renderSeconds));
-    if (!metadata.quality.empty()) spec.attribute("whitted:quality", metadata.quality);
+    if (!metadata.qualityTarget.empty()) {
+        spec.attribute("whitted:quality", qualityLine(metadata));
+        spec.attribute("whitted:quality_target", metadata.qualityTarget);
+        if (!metadata.qualityReached.empty())
+            spec.attribute("whitted:quality_reached", metadata.qualityReached);
+    }
     spec.attribute("oiio:ColorSpace", format.isFloat ? "Linear" : "sRGB");
     if (format.format == ImageFormat::Jpeg) spec.attribute("CompressionQuality", 95);
     return spec;
@@ -150,7 +155,8 @@ ImagePart readImagePart(const fs::path& file) {
     r.precision =
         parsePrecision(spec.get_string_attribute("whitted:precision")).value_or(r.precision);
     m.renderSeconds = spec.get_float_attribute("whitted:render_seconds", 0.0f);
-    m.quality = spec.get_string_attribute("whitted:quality");
+    m.qualityTarget = spec.get_string_attribute("whitted:quality_target");
+    m.qualityReached = spec.get_string_attribute("whitted:quality_reached");
     const bool eightBit = spec.format == OIIO::TypeDesc::UINT8;
     std::vector<float> all(size_t(spec.width) * spec.height * spec.nchannels);
     std::vector<std::uint8_t> codes(eightBit ? all.size() : 0);

@@ -6,21 +6,27 @@
 namespace whitted {
 
 ImageMetadata makeImageMetadata(const RenderSettings& s, double renderSeconds, std::string software,
-                                std::string quality) {
+                                std::string qualityTarget, std::string qualityReached) {
     ImageMetadata m;
     m.software = std::move(software);
     m.settings = s;
     m.renderSeconds = renderSeconds;
-    m.quality = std::move(quality);
+    m.qualityTarget = std::move(qualityTarget);
+    m.qualityReached = std::move(qualityReached);
     std::ostringstream d;
     d << "Whitted ray tracer: " << s.width << "x" << s.height << ", ";
-    if (m.quality.empty())
+    if (m.qualityTarget.empty())
         d << s.samplesPerPixel << " samples per pixel, max depth " << s.maxDepth;
     else
-        d << "to a quality, " << m.quality;
+        d << "to a quality, " << qualityLine(m);
     d << ", " << precisionName(s.precision) << " precision, rendered in " << renderSeconds << " s";
     m.description = d.str();
     return m;
+}
+
+std::string qualityLine(const ImageMetadata& m) {
+    if (m.qualityReached.empty()) return m.qualityTarget;
+    return m.qualityTarget + "; " + m.qualityReached;
 }
 
 }  // namespace whitted

@@ -18,15 +18,22 @@ struct ImageMetadata {
     RenderSettings settings;
     double renderSeconds = 0.0;
     // A render to a quality (analysis/quality_target.h): its target and what
-    // it reached, in words ("whitted:quality"); empty for a render of the
-    // scene's own samples. settings.samplesPerPixel then holds the most
+    // it reached, in words ("whitted:quality_target", "whitted:quality_reached",
+    // and the two as one line in "whitted:quality"); both empty for a render of
+    // the scene's own samples. settings.samplesPerPixel then holds the most
     // samples any pixel took.
-    std::string quality;
+    std::string qualityTarget;
+    std::string qualityReached;
 };
 
 // Builds the description line from the settings and time (and the quality,
 // if given, in place of the samples and depth).
 ImageMetadata makeImageMetadata(const RenderSettings& settings, double renderSeconds,
-                                std::string software, std::string quality = {});
+                                std::string software, std::string qualityTarget = {},
+                                std::string qualityReached = {});
+
+// The target and what was reached as one line: "Final: ...; depth 6, ...";
+// empty for a render of the scene's own samples.
+std::string qualityLine(const ImageMetadata& metadata);
 
 }  // namespace whitted

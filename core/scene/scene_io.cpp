@@ -4,6 +4,8 @@
 #include "scene/scene_io.h"
 
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <sstream>
 #include <string_view>
 #include <system_error>
@@ -320,6 +322,16 @@ std::string sceneToJson(const Scene& s) {
             .append(top[i].second)
             .append(i + 1 < top.size() ? ",\n" : "\n");
     return out + "}\n";
+}
+
+std::string sceneContentDigest(const Scene& scene) {
+    Scene content = scene;
+    content.render = RenderSettings{};
+    std::uint64_t hash = 0xcbf29ce484222325ull;  // FNV-1a's offset basis and prime
+    for (const unsigned char byte : sceneToJson(content)) hash = (hash ^ byte) * 0x100000001b3ull;
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+    return hex;
 }
 
 void saveScene(const Scene& scene, const fs::path& file) {

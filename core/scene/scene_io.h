@@ -78,6 +78,12 @@ std::optional<SceneProblem> validateMaterialEdit(const Scene& after, std::size_t
 // lists, numbers in shortest round-trip form. Equal scenes give equal bytes.
 std::string sceneToJson(const Scene& scene);
 
+// A digest of sceneToJson() without the render settings (16 hex digits,
+// FNV-1a): equal for scenes that sameSceneContent() finds equal, and, but
+// for a collision, different for any others. For files that record which
+// scene they were made for.
+std::string sceneContentDigest(const Scene& scene);
+
 // Writes sceneToJson() to a temporary file beside `file`, then renames it over
 // `file`, so the old file stays whole if anything fails. Throws std::runtime_error.
 void saveScene(const Scene& scene, const std::filesystem::path& file);

@@ -373,11 +373,11 @@ TEST(WhittedRender, QualityFinal_MeetsItsTargetAgainstAConvergedRenderAndSaysWhy
     const std::string samples = std::to_string(q["samples_per_pixel_fewest"].get<int>()) + " to " +
                                 std::to_string(q["samples_per_pixel_most"].get<int>()) +
                                 " samples a pixel";
-    EXPECT_EQ(m.quality.rfind("Final: 50 dB, no pixel off by more than 16 codes; depth " +
-                                  std::to_string(j["max_depth"].get<int>()) + ", " + samples,
-                              0),
+    EXPECT_EQ(m.qualityTarget, "Final: 50 dB, no pixel off by more than 16 codes");
+    EXPECT_EQ(m.qualityReached.rfind(
+                  "depth " + std::to_string(j["max_depth"].get<int>()) + ", " + samples, 0),
               0u)
-        << m.quality;
+        << m.qualityReached;
     EXPECT_NE(m.description.find("to a quality, Final: 50 dB"), std::string::npos) << m.description;
 }
 
@@ -468,11 +468,13 @@ TEST(WhittedRender, RegionsToAQuality_MergeIntoAPictureThatMeetsIt) {
     EXPECT_GE(e.psnrSrgb8, 50.0);
     EXPECT_LE(e.largest, 16.0);
     const ImageMetadata m = readImagePart(merged).metadata;
-    EXPECT_EQ(m.quality.rfind("Final: 50 dB, no pixel off by more than 16 codes; 4 regions, each "
-                              "rendered to it: depth ",
-                              0),
-              0u)
-        << m.quality;
+    EXPECT_EQ(m.qualityTarget, "Final: 50 dB, no pixel off by more than 16 codes");
+    EXPECT_EQ(m.qualityReached.rfind("4 regions, each rendered to it: depth ", 0), 0u)
+        << m.qualityReached;
+    EXPECT_NE(m.description.find("to a quality, Final: 50 dB, no pixel off by more than 16 "
+                                 "codes; 4 regions"),
+              std::string::npos)
+        << m.description;
     EXPECT_EQ(m.settings.samplesPerPixel, mostSamples);
 
     const fs::path fixed = dir / "fixed.exr", mixed = dir / "mixed.exr";
@@ -508,7 +510,7 @@ TEST(WhittedRender, PlanFile_MadeOnceThenReadByEachRegion) {
     ASSERT_EQ(r.exitCode, 0) << describe(r);
     EXPECT_EQ(r.err.find("the plan in "), std::string::npos) << r.err;  // made, not read
     nlohmann::json plan = nlohmann::json::parse(test::readFile(planFile));
-    EXPECT_EQ(plan["target"]["name"], "Preview");
+    EXPECT_EQ(plan["target"], "Preview");
     EXPECT_EQ(plan["max_depth"],
               nlohmann::json::parse(test::readFile(dir / "stats.json"))["max_depth"]);
     plan["max_depth"] = 1;
@@ -538,11 +540,18 @@ TEST(WhittedRender, PlanFile_MadeOnceThenReadByEachRegion) {
                          "not 40 dB"),
               std::string::npos)
         << r.err;
+    // The same size and target, another scene: its plan would be the seed's.
+    r = runRender({WHITTED_SCENES_DIR "/glass.json", "-o", (dir / "glass.exr").string(), "--width",
+                   "96", "--height", "72", "--quality", "preview", "--region", "0,0,8,8", "--plan",
+                   planFile.string()});
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_NE(r.err.find(planFile.string() + ": the plan is for another scene"), std::string::npos)
+        << r.err;
     r = runRender(
         {test::kSeedScenePath, "-o", (dir / "fixed.png").string(), "--plan", planFile.string()});
     EXPECT_EQ(r.exitCode, 2) << describe(r);
     EXPECT_NE(r.err.find("--plan needs --quality or --target-psnr"), std::string::npos) << r.err;
-    for (const char* refused : {"small.exr", "other.exr", "fixed.png"})
+    for (const char* refused : {"small.exr", "other.exr", "glass.exr", "fixed.png"})
         EXPECT_FALSE(fs::exists(dir / refused)) << refused;
 }
 

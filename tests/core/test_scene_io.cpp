@@ -530,6 +530,25 @@ TEST(SceneIo, SpecExample_SavesInCanonicalFormThatIsStable) {
     EXPECT_LT(once.find("\"up\""), once.find("\"vfov_degrees\""));
 }
 
+// A plan file's record of its scene (app/plan_file.h): the render settings
+// do not change it, the least move of a ball or the camera does.
+TEST(SceneIo, ContentDigest_IgnoresRenderSettingsAndSeesTheLeastEdit) {
+    const Scene s = parseScene(kSpecExample, "example.json");
+    const std::string digest = sceneContentDigest(s);
+    EXPECT_EQ(digest.size(), 16u);
+    Scene other = s;
+    other.render.width = 1920;
+    other.render.samplesPerPixel = 256;
+    other.render.precision = Precision::Double;
+    EXPECT_EQ(sceneContentDigest(other), digest);
+    other = s;
+    other.spheres[0].center.x = std::nextafter(other.spheres[0].center.x, 2.0);
+    EXPECT_NE(sceneContentDigest(other), digest);
+    other = s;
+    other.camera.vfovDegrees += 1.0;
+    EXPECT_NE(sceneContentDigest(other), digest);
+}
+
 TEST(SceneIo, RandomNumbersAndOddNames_SurviveSaveAndLoadExactly) {
     const unsigned seed = std::random_device{}();
     std::printf("seed %u\n", seed);

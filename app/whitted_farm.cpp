@@ -15,13 +15,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <numeric>
 #include <optional>
 #include <sstream>
 #include <string>
-#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -66,20 +66,23 @@ std::string renderProgram() {
     return (fs::read_symlink("/proc/self/exe").parent_path() / "whitted-render").string();
 }
 
-// The plan the tasks share: made here, or read when the same render goes on.
-// One the farm cannot use (an older whitted-farm's, or a broken file) is made
-// again: the work directory is the farm's own.
-QualityPlan farmPlan(const fs::path& planFile, const Scene& scene, const QualityTarget& target,
-                     const RenderFlags& flags) {
-    const int maxSamples = flags.spp.value_or(kDefaultMaxSamples);
+// Whether the plan file left in the work directory is this render's: one an
+// older whitted-farm wrote, or a broken one, is made again by the plan job.
+bool usablePlan(const fs::path& planFile, const Scene& scene, const QualityTarget& target) {
     try {
-        return sharedPlan(planFile, scene, target, maxSamples, flags.depth).plan;
-    } catch (const std::system_error&) {
-        throw;
+        readPlanFile(planFile, scene, target);
+        return true;
     } catch (const std::runtime_error&) {
-        fs::remove(planFile);
-        return sharedPlan(planFile, scene, target, maxSamples, flags.depth).plan;
+        return false;
     }
+}
+
+// The job that makes the plan every region's task renders to, before them:
+// whitted-render without --output only plans (its log shows the plan).
+Task planTask(const RenderCommand& command, const fs::path& planFile) {
+    std::vector<std::string> argv = {command.program, command.scene};
+    argv.insert(argv.end(), command.overrides.begin(), command.overrides.end());
+    return {argv, planFile};
 }
 
 // `planFile`, if not empty: the plan every task of a render to a quality reads.
@@ -155,8 +158,9 @@ std::string readLog(const fs::path& file) {
 // Follows the jobs until the render is done (0) or a task fails (1), or the
 // user interrupts (130: the jobs are cancelled).
 int follow(const Jobs& jobs, const Plan& plan, const fs::path& work, const fs::path& output,
-           bool quiet) {
+           bool quiet, const std::function<void()>& sayPlan) {
     const int total = static_cast<int>(jobs.indices.size());
+    bool planSaid = jobs.prepare.empty();
     int shown = -1;
     for (;;) {
         if (interrupted) {
@@ -165,6 +169,19 @@ int follow(const Jobs& jobs, const Plan& plan, const fs::path& work, const fs::p
             return kExitInterrupted;
         }
         const auto states = jobStates(jobs);
+        if (const auto p = states.find(jobs.prepare); p != states.end()) {
+            if (failedState(p->second)) {
+                std::cerr << "\nwhitted-farm: the plan job (" << jobs.prepare << ") " << p->second
+                          << "; its log, " << (work / "prepare.log").string() << ":\n"
+                          << readLog(work / "prepare.log");
+                cancelJobs(jobs);
+                return kExitFailure;
+            }
+            if (p->second == "COMPLETED" && !planSaid) {
+                if (!quiet) sayPlan();
+                planSaid = true;
+            }
+        }
         int done = 0;
         for (const auto& [id, state] : states) {
             const std::size_t underscore = id.find('_');
@@ -237,24 +254,17 @@ int run(const Options& o) {
     // (plan_file.h); a turntable's frames each plan their own.
     const fs::path planFile = target && o.turntable == 0 ? work / "plan.json" : fs::path();
     const RenderCommand command = renderCommand(o, planFile);
-    const Plan plan = o.turntable > 0
-                          ? turntablePlan(command, output, o.turntable)
-                          : regionPlan(command, output, work, width, height, std::max(1, o.tiles));
+    Plan plan = o.turntable > 0
+                    ? turntablePlan(command, output, o.turntable)
+                    : regionPlan(command, output, work, width, height, std::max(1, o.tiles));
+    if (!planFile.empty()) plan.prepare = planTask(command, planFile);
     const bool fresh = startOverIfChanged(plan, work, fingerprint(plan, o.scene));
     if (!fresh && fs::exists(output) && plan.merge) {
         if (!o.quiet) std::cerr << "whitted-farm: " << output.string() << " is already done\n";
         return kExitOk;
     }
-    if (!planFile.empty()) {
-        if (fresh) fs::remove(planFile);  // another command's, or another scene's
-        try {
-            const QualityPlan quality = farmPlan(planFile, scene, *target, o.render);
-            if (!o.quiet) sayQualityPlan(quality);
-        } catch (const std::exception& e) {
-            std::cerr << "whitted-farm: " << e.what() << "\n";
-            return kExitFailure;
-        }
-    }
+    // Another command's, or another scene's, or one this whitted-farm cannot use.
+    if (!planFile.empty() && (fresh || !usablePlan(planFile, scene, *target))) fs::remove(planFile);
     SubmitOptions submitOptions{work, o.sbatchArgs, o.maxRunning};
     Jobs jobs;
     try {
@@ -268,12 +278,23 @@ int run(const Options& o) {
         return kExitOk;
     }
     if (!o.quiet)
-        std::cerr << "whitted-farm: " << jobs.indices.size() << " of " << plan.tasks.size()
+        std::cerr << "whitted-farm: "
+                  << (jobs.prepare.empty() ? "" : "the plan, job " + jobs.prepare + "; ")
+                  << jobs.indices.size() << " of " << plan.tasks.size()
                   << (o.turntable > 0 ? " frames" : " regions") << " to render"
                   << (jobs.tasks.empty() ? "" : ", job " + jobs.tasks)
                   << (jobs.merge.empty() ? "" : "; merge, job " + jobs.merge) << "\n";
     if (!o.wait) return kExitOk;
-    return follow(jobs, plan, work, output, o.quiet);
+    // What the plan job chose, once it has (from the file, in the user's words).
+    const auto sayPlan = [&] {
+        try {
+            std::fputc('\n', stderr);
+            sayQualityPlan(readPlanFile(planFile, scene, *target));
+        } catch (const std::runtime_error& e) {
+            std::cerr << "whitted-farm: " << e.what() << "\n";
+        }
+    };
+    return follow(jobs, plan, work, output, o.quiet, sayPlan);
 }
 
 }  // namespace

@@ -234,7 +234,54 @@ int renderFrame(Scene& scene, const Options& o, const std::optional<PixelRect>& 
     return kExitOk;
 }
 
+// A WHITTED_KERNEL this CPU cannot run, or a WHITTED_ACCEL that names no
+// structure, is refused before rendering (or planning), as bad input.
+void checkTracerChoice(const Scene& scene) {
+    activeKernel();
+    bvhChosen(static_cast<int>(scene.spheres.size()));
+}
+
+// `--plan FILE` without -o: the plan made and written there (or found there
+// already), nothing rendered. whitted-farm's plan job runs this before its
+// tasks.
+int runPlanOnly(const Options& o) {
+    std::optional<Scene> loaded = sceneOrSay("whitted-render", o.scene);
+    if (!loaded) return kExitBadInput;
+    Scene& scene = *loaded;
+    applyRenderFlags(o.render, scene.render);
+    std::optional<QualityTarget> target;
+    try {
+        target = qualityTargetOf(o.quality);
+        if (!target) throw BadInput("--plan needs --quality or --target-psnr");
+        if (!o.region.empty() || o.turntable > 0 || !o.stats.empty())
+            throw BadInput(
+                "--plan without --output only plans: --region, --turntable and "
+                "--stats need an image to render");
+        checkTracerChoice(scene);
+    } catch (const std::exception& e) {
+        std::cerr << "whitted-render: " << e.what() << "\n";
+        return kExitBadInput;
+    }
+    try {
+        const SharedPlan shared = sharedPlan(
+            o.planFile, scene, *target, o.render.spp.value_or(kDefaultMaxSamples), o.render.depth);
+        if (!o.quiet) {
+            sayQualityPlan(shared.plan);
+            std::fprintf(stderr, shared.read ? "the plan in %s was made before\n" : "wrote %s\n",
+                         o.planFile.c_str());
+        }
+    } catch (const std::system_error& e) {  // written, not read
+        std::cerr << "whitted-render: " << o.planFile << ": " << e.what() << "\n";
+        return kExitFailure;
+    } catch (const std::runtime_error& e) {
+        std::cerr << "whitted-render: " << e.what() << "\n";
+        return kExitBadInput;
+    }
+    return kExitOk;
+}
+
 int run(const Options& o) {
+    if (o.output.empty()) return runPlanOnly(o);
     const auto format = outputFormatOrSay("whitted-render", o.output);
     if (!format) return kExitBadInput;
     std::optional<Scene> loaded = sceneOrSay("whitted-render", o.scene);
@@ -250,10 +297,7 @@ int run(const Options& o) {
                            ": --region writes OpenEXR (.exr), which records where "
                            "the region belongs");
         frames = framesOf(o);
-        // A WHITTED_KERNEL this CPU cannot run, or a WHITTED_ACCEL that names
-        // no structure, is refused before rendering, as bad input.
-        activeKernel();
-        bvhChosen(static_cast<int>(scene.spheres.size()));
+        checkTracerChoice(scene);
     } catch (const std::runtime_error& e) {
         std::cerr << "whitted-render: " << e.what() << "\n";
         return kExitBadInput;
@@ -392,7 +436,7 @@ int main(int argc, char** argv) {
     app.add_option("--plan", o.planFile,
                    "With a quality: render to the plan in this file, or plan and write it there "
                    "if there is none, so that the regions of one picture share one plan "
-                   "(whitted-farm makes it once for all its tasks)");
+                   "(whitted-farm makes it once for all its tasks); without --output, only plan");
 
     MergeOptions m;
     CLI::App* merge = app.add_subcommand(
@@ -406,7 +450,8 @@ int main(int argc, char** argv) {
 
     if (const auto code = parseFlags(app, "whitted-render", argc, argv, [&] {
             if (!*merge && o.scene.empty()) throw CLI::RequiredError("scene");
-            if (!*merge && o.output.empty()) throw CLI::RequiredError("--output");
+            if (!*merge && o.output.empty() && o.planFile.empty())
+                throw CLI::RequiredError("--output");
         }))
         return *code;
     return runOrSay("whitted-render", [&] { return *merge ? runMerge(m) : run(o); });

@@ -18,8 +18,9 @@ struct Task {
 };
 
 struct Plan {
-    std::vector<Task> tasks;    // one array task each, finished or not
-    std::optional<Task> merge;  // after every task: the regions put together
+    std::optional<Task> prepare;  // before every task: what they share (a render's plan)
+    std::vector<Task> tasks;      // one array task each, finished or not
+    std::optional<Task> merge;    // after every task: the regions put together
 };
 
 // `tiles` regions covering a width x height image: a grid of about square

@@ -1,5 +1,7 @@
-// A plan's tasks as Slurm jobs (whitted-farm, issue 14): an array job of the
-// tasks not yet done and a merge job that depends on it (afterok), submitted
+// A plan's tasks as Slurm jobs (whitted-farm, issue 14): a job that prepares
+// what the tasks share, if the plan has one still to do, an array job of the
+// tasks not yet done that depends on it, and a merge job that depends on the
+// array (each afterok, and cancelled if what it waits for fails), submitted
 // with sbatch; their states read back from squeue; scancel. Every command
 // runs without a shell (process.h), and the tasks' own command lines are
 // read from files, NUL-separated, so no path is ever parsed as shell.
@@ -21,6 +23,7 @@ struct SubmitOptions {
 };
 
 struct Jobs {
+    std::string prepare;       // empty: none, or done before
     std::string tasks;         // the array job's id; empty: every task was done
     std::vector<int> indices;  // the tasks it runs (indices into Plan::tasks)
     std::string merge;         // empty: no merge

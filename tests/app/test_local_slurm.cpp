@@ -153,9 +153,10 @@ TEST(WhittedFarm, TilesOnSlurmEqualTheLocalRender_PathsReachTheJobsIntact) {
     EXPECT_NE(again.out.find("already done"), std::string::npos) << again.out;
 }
 
-// A quality on the farm: planned once, then each task renders its region to
-// the plan, and the merged picture meets the target against a converged
-// render. Flags that contradict are refused before anything is submitted.
+// A quality on the farm: planned once, in a job the tasks wait for, then
+// each task renders its region to the plan, and the merged picture meets the
+// target against a converged render. Flags that contradict are refused
+// before anything is submitted.
 TEST(WhittedFarm, TilesToAQualityOnSlurm_MeetTheTarget) {
     TempDir dir;
     const std::vector<std::string> size = {"--width", "64", "--height", "48"};
@@ -164,17 +165,25 @@ TEST(WhittedFarm, TilesToAQualityOnSlurm_MeetTheTarget) {
                                               "4", "--quality", "preview", "--wait"},
                                              size));
     ASSERT_EQ(r.exitCode, 0) << r.out;
-    // Planned once, here, and every task given the plan.
-    EXPECT_NE(r.out.find("quality Preview: 35 dB, no pixel off by more than 64 codes\n  depth "),
-              std::string::npos)
-        << r.out;
-    const fs::path work = out.string() + ".farm";
-    EXPECT_TRUE(fs::exists(work / "plan.json"));
-    for (const char* args : {"task-0.args", "task-3.args"})
-        EXPECT_NE(test::readFile(work / args)
-                      .find(std::string("--plan", 7) + (work / "plan.json").string()),
+    // Planned once, in the plan job, and shown once it was made.
+    const std::string said = "quality Preview: 35 dB, no pixel off by more than 64 codes\n  depth ";
+    EXPECT_NE(r.out.find("whitted-farm: the plan, job "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(said), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find(said), r.out.rfind(said)) << r.out;
+    const fs::path work = out.string() + ".farm", planFile = work / "plan.json";
+    EXPECT_NE(test::readFile(work / "prepare.log").find(said), std::string::npos);
+    ASSERT_TRUE(fs::exists(planFile));
+    // Every task was given the plan, and started after it was written: their
+    // logs (empty: the tasks are quiet) were made when they started.
+    for (const char* task : {"task-0", "task-1", "task-2", "task-3"}) {
+        EXPECT_NE(test::readFile(work / (std::string(task) + ".args"))
+                      .find(std::string("--plan", 7) + planFile.string()),
                   std::string::npos)
-            << args;
+            << task;
+        EXPECT_GE(fs::last_write_time(work / (std::string(task) + ".log")),
+                  fs::last_write_time(planFile))
+            << task;
+    }
     renderLocally(test::appended({test::kSeedScenePath, "-o", ref.string(), "--spp", "1024",
                                   "--depth", "12", "--precision", "double"},
                                  size));
@@ -192,6 +201,27 @@ TEST(WhittedFarm, TilesToAQualityOnSlurm_MeetTheTarget) {
     EXPECT_EQ(bad.exitCode, 2) << bad.out;
     EXPECT_NE(bad.out.find("--max-error needs --target-psnr"), std::string::npos) << bad.out;
     EXPECT_FALSE(fs::exists(refused.string() + ".farm"));
+}
+
+// The plan job fails (a tracer kernel no CPU has: sbatch passes the
+// environment on): its log is shown, and no task runs without a plan.
+TEST(WhittedFarm, AFailedPlanJob_ShowsItsLogAndRunsNoTask) {
+    TempDir dir;
+    const fs::path out = dir / "never.png";
+    const ProgramRun r = farm(test::appended({test::kSeedScenePath, "-o", out.string(), "--tiles",
+                                              "2", "--quality", "draft", "--wait"},
+                                             kSmall),
+                              "WHITTED_KERNEL=no-such-kernel");
+    EXPECT_EQ(r.exitCode, 1) << r.out;
+    const fs::path work = out.string() + ".farm";
+    EXPECT_NE(r.out.find("the plan job ("), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("its log, " + (work / "prepare.log").string() + ":\n"), std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("no tracer kernel is named \"no-such-kernel\""), std::string::npos)
+        << r.out;
+    for (const char* log : {"task-0.log", "task-1.log", "merge.log"})
+        EXPECT_FALSE(fs::exists(work / log)) << log;
+    EXPECT_FALSE(fs::exists(out));
 }
 
 TEST(WhittedFarm, TurntableFramesOnSlurmEqualTheLocalFrames) {

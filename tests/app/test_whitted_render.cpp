@@ -540,6 +540,20 @@ TEST(WhittedRender, PlanFile_MadeOnceThenReadByEachRegion) {
                          "not 40 dB"),
               std::string::npos)
         << r.err;
+    // Without --output it only plans (whitted-farm's plan job).
+    const fs::path planOnly = dir / "plan only.json";
+    r = runRender({test::kSeedScenePath, "--width", "96", "--height", "72", "--quality", "preview",
+                   "--plan", planOnly.string()});
+    ASSERT_EQ(r.exitCode, 0) << describe(r);
+    EXPECT_NE(r.err.find("quality Preview: 35 dB"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("wrote " + planOnly.string()), std::string::npos) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(test::readFile(planOnly))["target"], "Preview");
+    r = runRender({test::kSeedScenePath, "--quality", "preview", "--region", "0,0,8,8", "--plan",
+                   (dir / "refused plan.json").string()});
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_NE(r.err.find("--plan without --output only plans"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "refused plan.json"));
+
     // The same size and target, another scene: its plan would be the seed's.
     r = runRender({WHITTED_SCENES_DIR "/glass.json", "-o", (dir / "glass.exr").string(), "--width",
                    "96", "--height", "72", "--quality", "preview", "--region", "0,0,8,8", "--plan",

@@ -89,7 +89,10 @@ Scene probeScene(const Scene& scene, double psnrDb) {
 // probe was most of planning a field of 2500 balls; copying and checking
 // 100,000 balls for each, a third of planning them), and the precision is
 // compared at the chosen depth's render in the scene's own precision,
-// already made for the depth.
+// already made for the depth. One render gives the picture at several
+// depths (RenderOptions::alsoAtDepths): the depth search's probe at every
+// depth up to kLookAhead past the one asked, and the picture's check its
+// depth with the deepest.
 class ProbeRenders {
   public:
     ProbeRenders(const Scene& scene, double psnrDb, const StopPredicate& stop)
@@ -100,11 +103,23 @@ class ProbeRenders {
 
     const Scene& scene() const { return probe_; }
 
-    // The probe's centres at `depth`, in the scene's precision.
+    // The probe's centres at `depth`, in the scene's precision. Not yet
+    // traced: traced with those kLookAhead deeper, which the depth search
+    // compares it with (and then goes on to), in one render. It costs what
+    // the deepest of them costs: the search to depth 8 took twelve renders,
+    // now three.
     const Image& at(int depth, QualityPlan& plan) {
         auto found = byDepth_.find(depth);
         if (found != byDepth_.end()) return found->second;
-        return byDepth_.emplace(depth, trace(depth, plan)).first->second;
+        const int deepest = std::min(kMaxDepth, depth + kLookAhead);
+        std::vector<int> shallower;
+        for (int d = depth; d < deepest; ++d)
+            if (!byDepth_.count(d)) shallower.push_back(d);
+        RenderResult r = trace(deepest, plan, {}, 0.0, shallower);
+        for (std::size_t k = 0; k < shallower.size(); ++k)
+            byDepth_.emplace(shallower[k], std::move(r.atDepths[k]));
+        byDepth_.emplace(deepest, std::move(r.image));
+        return byDepth_.at(depth);
     }
 
     // The probe at `depth` with `samples` a pixel (1: its centres), in `precision`.
@@ -112,7 +127,7 @@ class ProbeRenders {
         const RenderSettings own = probe_.render;
         probe_.render.precision = precision;
         probe_.render.samplesPerPixel = samples;
-        Image image = trace(depth, plan);
+        Image image = std::move(trace(depth, plan).image);
         probe_.render = own;
         return image;
     }
@@ -131,27 +146,48 @@ class ProbeRenders {
         return pictureByDepth_.emplace(key, atRenderSize(depth, plan, samples, {})).first->second;
     }
 
+    // The picture's centres at `depth` and at the deeper `reference`, in one
+    // render where neither was made before. Each is pictureAt(depth, plan, 1).
+    // Not the depths past `depth` too, in case the check goes on to them:
+    // keeping twelve more pictures of 640x480 cost seed.json's Preview more
+    // than the renders they would save.
+    std::pair<const Image*, const Image*> picturesAt(int depth, int reference, QualityPlan& plan) {
+        if (!pictureByDepth_.count({depth, 1}) && !pictureByDepth_.count({reference, 1})) {
+            RenderResult r = atRenderSize(reference, plan, 1, {}, {depth});
+            pictureByDepth_.emplace(std::pair{depth, 1}, std::move(r.atDepths.front()));
+            pictureByDepth_.emplace(std::pair{reference, 1}, std::move(r.image));
+        }
+        return {&pictureAt(depth, plan, 1), &pictureAt(reference, plan, 1)};
+    }
+
     // The `regions` of the picture at its own size, at `depth` with `samples`
     // a pixel in the scene's precision; zero elsewhere. Rays lighter than
     // kPictureCheckPruneWeight are not followed.
     Image atRenderSize(int depth, QualityPlan& plan, int samples,
                        const std::vector<PixelRect>& regions) {
+        return std::move(atRenderSize(depth, plan, samples, regions, {}).image);
+    }
+
+  private:
+    RenderResult atRenderSize(int depth, QualityPlan& plan, int samples,
+                              const std::vector<PixelRect>& regions,
+                              const std::vector<int>& alsoAtDepths) {
         const RenderSettings own = probe_.render;
         probe_.render.width = renderWidth_;
         probe_.render.height = renderHeight_;
         probe_.render.samplesPerPixel = samples;
-        Image image = trace(depth, plan, regions, kPictureCheckPruneWeight);
+        RenderResult r = trace(depth, plan, regions, kPictureCheckPruneWeight, alsoAtDepths);
         probe_.render = own;
-        return image;
+        return r;
     }
 
-  private:
-    Image trace(int depth, QualityPlan& plan, const std::vector<PixelRect>& regions = {},
-                double pruneBelowWeight = 0.0) {
+    RenderResult trace(int depth, QualityPlan& plan, const std::vector<PixelRect>& regions = {},
+                       double pruneBelowWeight = 0.0, const std::vector<int>& alsoAtDepths = {}) {
         probe_.render.maxDepth = depth;
         RenderOptions options = oneShotOptions();
         options.regions = regions;
         options.pruneBelowWeight = pruneBelowWeight;
+        options.alsoAtDepths = alsoAtDepths;
         options.bvhCache = &cache_;
         options.sceneValidated = validated_;  // the first render throws if it is not valid
         options.threads = oneThread_ ? 1 : 0;
@@ -159,7 +195,7 @@ class ProbeRenders {
         validated_ = true;
         oneThread_ = oneThread_ && r.tilesCpuSeconds < kOneThreadProbeSeconds;
         plan.probeRays += r.rays.total();
-        return std::move(r.image);
+        return r;
     }
 
     Scene probe_;
@@ -325,7 +361,8 @@ int pictureCheckSamples(double largestCodes, int maxSamples) {
 // (largestWithSamples()). The MSE is the centres'.
 DepthError pictureDepthError(ProbeRenders& probes, QualityPlan& plan, int depth, int reference,
                              int maxSamples) {
-    DepthPair pair{probes.pictureAt(depth, plan, 1), probes.pictureAt(reference, plan, 1)};
+    const auto [shallow, deep] = probes.picturesAt(depth, reference, plan);
+    DepthPair pair{*shallow, *deep};
     DepthError e = depthError(pair.shallow, pair.deep);
     DepthPair::Apart largest{e.largest};
     pair.samples = pictureCheckSamples(*plan.target.largestCodes, maxSamples);

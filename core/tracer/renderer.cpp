@@ -81,6 +81,18 @@ double pixelsRendered(const RenderSettings& r, const RenderOptions& o) {
     return pixels;
 }
 
+// RenderOptions::alsoAtDepths that the render cannot give, in words.
+std::optional<std::string> alsoAtDepthsProblem(const RenderSettings& r, const RenderOptions& o) {
+    const std::vector<int>& d = o.alsoAtDepths;
+    if (d.empty()) return std::nullopt;
+    if (r.samplesPerPixel != 1 || o.adaptive || o.progressive)
+        return "alsoAtDepths: only for a one-shot render of one sample a pixel";
+    if (d.front() < 0 || d.back() >= r.maxDepth || !std::is_sorted(d.begin(), d.end()))
+        return "alsoAtDepths: depths ascending, from 0 to below max_depth " +
+               std::to_string(r.maxDepth);
+    return std::nullopt;
+}
+
 // Why the regions cannot be rendered, if they cannot: one outside the
 // picture, or two that overlap (their tiles would be rendered twice, by two
 // threads at once).
@@ -144,12 +156,13 @@ class TileRenderer {
         tiles_ = renderTiles(settings_, options_);
         threads_ = threadsForTiles(options_, tiles_.size());
         RenderResult result = options_.adaptive ? runAdaptive() : runFixed();
-        if (image_.rgb.empty()) image_ = Image(s_.width, s_.height);  // stopped in the preview
+        if (image_.rgb.empty()) startImage(PassKind::Samples);  // stopped in the preview
         result.threads = threads_;
         result.completed = !stopped_;
         result.rays = rays_;
         result.tilesCpuSeconds = tilesCpuSeconds_;
         result.image = std::move(image_);
+        result.atDepths = std::move(atDepths_);
         return result;
     }
 
@@ -191,8 +204,11 @@ class TileRenderer {
     void startImage(PassKind kind) {
         if (kind == PassKind::Preview)
             preview_ = Image((s_.width + block_ - 1) / block_, (s_.height + block_ - 1) / block_);
-        else if (image_.rgb.empty())
+        else if (image_.rgb.empty()) {
             image_ = Image(s_.width, s_.height);
+            for (std::size_t k = 0; k < options_.alsoAtDepths.size(); ++k)
+                atDepths_.emplace_back(s_.width, s_.height);
+        }
     }
 
     // The preview, two samples everywhere (or first the centres), then passes
@@ -333,6 +349,7 @@ class TileRenderer {
         std::vector<Vec<T>> radiance;
         std::vector<glm::dvec3> sums;
         std::vector<float> firstHalf;  // an adaptive pass's picture before it
+        std::vector<Vec<T>> atDepths;  // renderRowAtDepths(): pixel by pixel, depth by depth
     };
 
     // The image is float whatever the precision: radiance beyond the largest
@@ -373,7 +390,9 @@ class TileRenderer {
             pass.centres || (pass.firstSample == 0 && pass.lastSample == 1 && sums_.empty());
         for (int y = tile.y; y < tile.y + tile.h; ++y) {
             if (stopRequested()) return false;
-            if (oneSample) {
+            if (oneSample && !options_.alsoAtDepths.empty()) {
+                renderRowAtDepths(tile, y, row, counts);
+            } else if (oneSample) {
                 traceCameraRow(s_, y, tile.x, tile.w, pass.centres ? kPixelCentre : 0,
                                row.radiance.data(), counts);
                 storeSamples(row.radiance.data(), tile.x, y, tile.w);
@@ -384,6 +403,21 @@ class TileRenderer {
         if (pass.centres && estimate)
             *estimate = centreSampleEstimate(image_, {tile.x, tile.y, tile.w, tile.h});
         return true;
+    }
+
+    // A one-sample row, and the same rays' radiance at each of alsoAtDepths.
+    void renderRowAtDepths(const Tile& tile, int y, Row& row, RayCounts& counts) {
+        const std::vector<int>& depths = options_.alsoAtDepths;
+        const int n = int(depths.size());
+        row.atDepths.resize(std::size_t(tile.w) * n);
+        traceCameraRowAtDepths(s_, y, tile.x, tile.w, 0, row.radiance.data(), depths.data(), n,
+                               row.atDepths.data(), counts);
+        storeSamples(row.radiance.data(), tile.x, y, tile.w);
+        for (int k = 0; k < n; ++k) {
+            float* out = atDepths_[k].pixel(tile.x, y);
+            for (int i = 0; i < tile.w; ++i)
+                storePixel(out + 3 * i, 0.0 + glm::dvec3(row.atDepths[std::size_t(i) * n + k]));
+        }
     }
 
     void renderRow(const Pass& pass, const Tile& tile, int y, Row& row, RayCounts& counts,
@@ -441,6 +475,7 @@ class TileRenderer {
     const int block_;  // the preview's block edge
     Image preview_;    // one pixel per block
     Image image_;
+    std::vector<Image> atDepths_;  // RenderOptions::alsoAtDepths
     using Sums = std::vector<glm::dvec3, LargeBufferAllocator<glm::dvec3>>;
     Sums sums_;
     std::atomic<bool> stopped_{false};
@@ -488,6 +523,8 @@ RenderResult render(const Scene& scene, const RenderOptions& options, const Tile
     if (auto problem = options.sceneValidated ? std::nullopt : validateScene(scene))
         throw std::invalid_argument(problem->jsonPath + ": " + problem->reason);
     if (auto problem = regionsProblem(options.regions, scene.render.width, scene.render.height))
+        throw std::invalid_argument(*problem);
+    if (auto problem = alsoAtDepthsProblem(scene.render, options))
         throw std::invalid_argument(*problem);
     // Here, not in a worker: a WHITTED_KERNEL this CPU cannot run throws to the caller.
     activeKernel();

@@ -61,6 +61,13 @@ struct RenderOptions {
     // must be followed and a glass ball's faint inner reflections need not.
     // 0: every ray SPEC spawns.
     double pruneBelowWeight = 0.0;
+    // Besides the picture, the picture as each of these shallower depths
+    // would render it (ascending, each below the scene's max depth), from the
+    // same rays (traceCameraRowAtDepths(); equal to those renders but for
+    // rounding): RenderResult::atDepths. Planning compares depths so, one
+    // render for several. Only for a fixed render of one sample a pixel
+    // without preview (oneShotOptions()); std::invalid_argument otherwise.
+    std::vector<int> alsoAtDepths{};
 };
 
 // For a render nobody watches (a file, a measurement): one pass of all the
@@ -134,6 +141,7 @@ struct RenderResult {
     int samples = 0;
     bool completed = false;                   // false when stopped early
     std::optional<AdaptiveOutcome> adaptive;  // set by adaptive renders
+    std::vector<Image> atDepths;              // one for each of RenderOptions::alsoAtDepths
 };
 
 // Renders the scene with its render settings. Throws std::invalid_argument for a

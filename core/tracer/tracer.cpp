@@ -217,6 +217,14 @@ void traceCameraRow(const PreparedScene<T>& s, int y, int x0, int count, int n, 
 }
 
 template <typename T>
+void traceCameraRowAtDepths(const PreparedScene<T>& s, int y, int x0, int count, int n,
+                            Vec<T>* radiance, const int* depths, int depthCount, Vec<T>* atDepths,
+                            RayCounts& counts) {
+    activeKernel().entryPoints<T>().traceCameraRowAtDepths(s, y, x0, count, n, radiance, depths,
+                                                           depthCount, atDepths, counts);
+}
+
+template <typename T>
 Vec<T> tracePixelSample(const PreparedScene<T>& s, int i, int j, T u, T v, RayCounts& counts) {
     const CameraSample<T> sample{i, j, u, v};
     Vec<T> radiance;
@@ -232,15 +240,17 @@ CameraSample<T> pixelSample(const PreparedScene<T>& s, int i, int j, int n) {
     return {i, j, T(offset.u[0]), T(offset.v[0])};
 }
 
-#define WHITTED_INSTANTIATE(T)                                                                \
-    template PreparedScene<T> prepareScene<T>(const Scene&, BvhCache*);                       \
-    template std::optional<Hit<T>> closestHit<T>(const PreparedScene<T>&, const Ray<T>&, T);  \
-    template Vec<T> traceRay<T>(const PreparedScene<T>&, const Ray<T>&, int, RayCounts&);     \
-    template void traceCameraRow<T>(const PreparedScene<T>&, int, int, int, int, Vec<T>*,     \
-                                    RayCounts&);                                              \
-    template void traceCameraSamples<T>(const PreparedScene<T>&, const CameraSample<T>*, int, \
-                                        Vec<T>*, RayCounts&);                                 \
-    template Vec<T> tracePixelSample<T>(const PreparedScene<T>&, int, int, T, T, RayCounts&); \
+#define WHITTED_INSTANTIATE(T)                                                                    \
+    template PreparedScene<T> prepareScene<T>(const Scene&, BvhCache*);                           \
+    template std::optional<Hit<T>> closestHit<T>(const PreparedScene<T>&, const Ray<T>&, T);      \
+    template Vec<T> traceRay<T>(const PreparedScene<T>&, const Ray<T>&, int, RayCounts&);         \
+    template void traceCameraRow<T>(const PreparedScene<T>&, int, int, int, int, Vec<T>*,         \
+                                    RayCounts&);                                                  \
+    template void traceCameraRowAtDepths<T>(const PreparedScene<T>&, int, int, int, int, Vec<T>*, \
+                                            const int*, int, Vec<T>*, RayCounts&);                \
+    template void traceCameraSamples<T>(const PreparedScene<T>&, const CameraSample<T>*, int,     \
+                                        Vec<T>*, RayCounts&);                                     \
+    template Vec<T> tracePixelSample<T>(const PreparedScene<T>&, int, int, T, T, RayCounts&);     \
     template CameraSample<T> pixelSample<T>(const PreparedScene<T>&, int, int, int);
 WHITTED_INSTANTIATE(float)
 WHITTED_INSTANTIATE(double)

@@ -159,6 +159,18 @@ template <typename T>
 void traceCameraRow(const PreparedScene<T>& s, int y, int x0, int count, int n, Vec<T>* radiance,
                     RayCounts& counts);
 
+// traceCameraRow(), and besides, for each of `depths` (ascending, none past
+// the scene's max depth), the radiance the same ray has at that max depth:
+// SPEC spawns no ray past the depth, so it is the sum of what each bounce
+// level up to it adds, at its path's weight (equal to a render at that depth
+// but for rounding). One render then gives the picture at several depths, as
+// planning compares them (analysis/quality_target.cpp). atDepths holds
+// count * depthCount values, pixel by pixel.
+template <typename T>
+void traceCameraRowAtDepths(const PreparedScene<T>& s, int y, int x0, int count, int n,
+                            Vec<T>* radiance, const int* depths, int depthCount, Vec<T>* atDepths,
+                            RayCounts& counts);
+
 // One camera sample; the same result as traceCameraSamples() gives for it.
 template <typename T>
 Vec<T> tracePixelSample(const PreparedScene<T>& s, int i, int j, T u, T v, RayCounts& counts);

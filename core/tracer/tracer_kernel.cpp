@@ -3,6 +3,7 @@
 // instruction set with WHITTED_ISA naming it; all of it lives in that set's
 // namespace (isa_namespace.h), and only kTracerKernel is visible outside.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -41,7 +42,8 @@ std::optional<Hit<T>> kernelClosestHit(const PreparedScene<T>& s, const Ray<T>& 
 
 template <typename T>
 void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth,
-                 const typename Simd<T>::type& weight, Vec3x<T>& radiance, RayCounts& counts);
+                 const typename Simd<T>::type& weight, Vec3x<T>& radiance, RayCounts& counts,
+                 Vec3x<T>* levels);
 
 // Where the lanes that hit are on their surfaces: the point, the normal
 // facing the ray, and on which side the ray came from.
@@ -120,7 +122,8 @@ template <typename T, typename Mask>
 void addSecondaryRays(const PreparedScene<T>& s, const LaneMaterials<T>& g,
                       const SurfacePoint<T>& sp, const Mask& hit,
                       const typename Simd<T>::type& kHit, int depth,
-                      const typename Simd<T>::type& weight, Vec3x<T>& radiance, RayCounts& counts) {
+                      const typename Simd<T>::type& weight, Vec3x<T>& radiance, RayCounts& counts,
+                      Vec3x<T>* levels) {
     using V = typename Simd<T>::type;
     // The lanes whose ray, passing on `share` of its weight, stays at or above
     // the scene's pruning weight (every lane when it is 0, as SPEC renders).
@@ -146,7 +149,7 @@ void addSecondaryRays(const PreparedScene<T>& s, const LaneMaterials<T>& g,
             const RayPacket<T> refracted = RayPacket<T>::of(sp.p, t, kHit, ~sp.inside, bits);
             counts.refraction += __builtin_popcount(bits);
             Vec3x<T> sub;
-            tracePacket(s, refracted, depth + 1, weight * g.transparency, sub, counts);
+            tracePacket(s, refracted, depth + 1, weight * g.transparency, sub, counts, levels);
             const auto traced = passes & maskFromBits<T>(bits);
             radiance = select(traced, radiance + g.transparency * sub, radiance);
         }
@@ -157,25 +160,41 @@ void addSecondaryRays(const PreparedScene<T>& s, const LaneMaterials<T>& g,
         const RayPacket<T> reflected = RayPacket<T>::of(sp.p, r, kHit, sp.inside, bits);
         counts.reflection += __builtin_popcount(bits);
         Vec3x<T> sub;
-        tracePacket(s, reflected, depth + 1, weight * reflectWeight, sub, counts);
+        tracePacket(s, reflected, depth + 1, weight * reflectWeight, sub, counts, levels);
         const auto traced = mirror & maskFromBits<T>(bits);
         radiance = select(traced, radiance + reflectWeight * sub, radiance);
     }
 }
 
+// What the rays of a packet add at their own level, before their reflected
+// and refracted rays: `local` at the path's weight, into levels[depth] for
+// the lanes traced (none when levels is null, as in every render).
+template <typename T>
+void addToLevel(Vec3x<T>* levels, int depth, const RayPacket<T>& rays,
+                const typename Simd<T>::type& weight, const Vec3x<T>& local) {
+    if (!levels) return;
+    Vec3x<T>& level = levels[depth];
+    level = select(maskFromBits<T>(rays.active), level + weight * local, level);
+}
+
 // Radiance along every ray of a packet at the given depth: the Whitted sum of
 // SPEC §3, computed for all lanes at once, with the shadow, reflected and
-// refracted rays of all lanes traced as packets.
+// refracted rays of all lanes traced as packets. `levels`, if not null, gets
+// each level's share of it (addToLevel()).
 template <typename T>
 void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth,
-                 const typename Simd<T>::type& weight, Vec3x<T>& radiance, RayCounts& counts) {
+                 const typename Simd<T>::type& weight, Vec3x<T>& radiance, RayCounts& counts,
+                 Vec3x<T>* levels) {
     using V = typename Simd<T>::type;
     V tHit, kHit;
     sceneClosestHits(s.spheres, s.useBvh ? s.bvh.get() : nullptr, rays, tHit, kHit);
     radiance = Vec3x<T>::broadcast(s.background);
     const auto hit = (kHit >= T(0)) & maskFromBits<T>(rays.active);
     const unsigned lanes = laneBits(hit);
-    if (!lanes) return;
+    if (!lanes) {
+        addToLevel(levels, depth, rays, weight, radiance);
+        return;
+    }
 
     const LaneMaterials<T> g = gatherMaterials(s, kHit, lanes);
     const SurfacePoint<T> sp = surfacePoint(rays, tHit, g);
@@ -183,7 +202,9 @@ void tracePacket(const PreparedScene<T>& s, const RayPacket<T>& rays, int depth,
     if (laneBits(g.checker & hit)) kd = select(g.checker, checkerLanes(g, sp.p, sp.outward), kd);
     radiance = select(hit, Vec3x<T>::broadcast(s.ambient) * kd, radiance);
     addDirectLight(s, g, sp, hit, kHit, kd, radiance, counts);
-    if (depth < s.maxDepth) addSecondaryRays(s, g, sp, hit, kHit, depth, weight, radiance, counts);
+    addToLevel(levels, depth, rays, weight, radiance);
+    if (depth < s.maxDepth)
+        addSecondaryRays(s, g, sp, hit, kHit, depth, weight, radiance, counts, levels);
 }
 
 template <typename T>
@@ -192,7 +213,8 @@ Vec<T> kernelTraceRay(const PreparedScene<T>& s, const Ray<T>& ray, int depth, R
     packet.set(0, ray.origin, ray.dir, ray.originSphere, ray.intoOrigin);
     packet.fromCamera = ray.fromCamera;
     Vec3x<T> radiance;
-    tracePacket(s, packet, depth, typename Simd<T>::type{} + T(1), radiance, counts);
+    tracePacket(s, packet, depth, typename Simd<T>::type{} + T(1), radiance, counts,
+                static_cast<Vec3x<T>*>(nullptr));
     return radiance.lane(0);
 }
 
@@ -200,7 +222,8 @@ Vec<T> kernelTraceRay(const PreparedScene<T>& s, const Ray<T>& ray, int depth, R
 // first m lanes: cameraDirection() for every lane at once, operation for operation.
 template <typename T>
 void traceCameraPacket(const PreparedScene<T>& s, typename Simd<T>::type x,
-                       typename Simd<T>::type y, int m, Vec3x<T>& radiance, RayCounts& counts) {
+                       typename Simd<T>::type y, int m, Vec3x<T>& radiance, RayCounts& counts,
+                       Vec3x<T>* levels = nullptr) {
     using V = typename Simd<T>::type;
     const CameraBasis<T>& cam = s.camera;
     x = (x / T(cam.width) * T(2) - T(1)) * cam.tanHalfFov * cam.aspect;
@@ -212,7 +235,7 @@ void traceCameraPacket(const PreparedScene<T>& s, typename Simd<T>::type x,
         RayPacket<T>::of(Vec3x<T>::broadcast(cam.origin), dir, V{} - T(1),
                          typename RayPacket<T>::Mask{}, (1u << m) - 1, true);
     counts.camera += m;
-    tracePacket(s, packet, 0, V{} + T(1), radiance, counts);
+    tracePacket(s, packet, 0, V{} + T(1), radiance, counts, levels);
 }
 
 // Camera rays for `count` samples in packets; place(first, m, x, y) puts the
@@ -245,9 +268,11 @@ void kernelCameraSamples(const PreparedScene<T>& s, const CameraSample<T>* sampl
     });
 }
 
+// Where sample n of the pixels x0, x0+1, ... of row y lies, as pixelSample()
+// gives it: place(first, m, px, py) fills the lanes of pixels first ..
+// first+m-1 (counted from x0).
 template <typename T>
-void kernelCameraRow(const PreparedScene<T>& s, int y, int x0, int count, int n, Vec<T>* radiance,
-                     RayCounts& counts) {
+auto rowPlacer(const PreparedScene<T>& s, int y, int x0, int n) {
     using V = typename Simd<T>::type;
     using U = typename LaneWords<T>::type;
     V laneIndex{};
@@ -256,7 +281,7 @@ void kernelCameraRow(const PreparedScene<T>& s, int y, int x0, int count, int n,
         laneIndex[l] = T(l);
         laneWord[l] = std::uint32_t(l);
     }
-    traceCameraPackets(s, count, radiance, counts, [&](int first, int m, V& px, V& py) {
+    return [&s, y, x0, n, laneIndex, laneWord](int first, int m, V& px, V& py) {
         if (s.samplesPerPixel == 1 || n == kPixelCentre) {  // as pixelSample() gives them
             px = (laneIndex + T(x0 + first)) + T(0.5);
             py = V{} + (T(y) + T(0.5));
@@ -269,7 +294,42 @@ void kernelCameraRow(const PreparedScene<T>& s, int y, int x0, int count, int n,
             px[l] = T(x0 + first + l) + T(offset.u[l]);
             py[l] = T(y) + T(offset.v[l]);
         }
-    });
+    };
+}
+
+template <typename T>
+void kernelCameraRow(const PreparedScene<T>& s, int y, int x0, int count, int n, Vec<T>* radiance,
+                     RayCounts& counts) {
+    traceCameraPackets(s, count, radiance, counts, rowPlacer(s, y, x0, n));
+}
+
+// kernelCameraRow(), each packet's levels kept and summed up to each of the
+// shallower depths (ascending, none past the scene's max depth).
+template <typename T>
+void kernelCameraRowAtDepths(const PreparedScene<T>& s, int y, int x0, int count, int n,
+                             Vec<T>* radiance, const int* depths, int depthCount, Vec<T>* atDepths,
+                             RayCounts& counts) {
+    constexpr int W = RayPacket<T>::kWidth;
+    using V = typename Simd<T>::type;
+    const auto place = rowPlacer(s, y, x0, n);
+    std::array<Vec3x<T>, kMaxDepth + 1> levels;
+    for (int first = 0; first < count; first += W) {
+        const int m = std::min(W, count - first);
+        V px{}, py{};
+        place(first, m, px, py);
+        std::fill_n(levels.begin(), s.maxDepth + 1, Vec3x<T>::broadcast(Vec<T>(T(0))));
+        Vec3x<T> out;
+        traceCameraPacket(s, px, py, m, out, counts, levels.data());
+        for (int l = 0; l < m; ++l) {
+            radiance[first + l] = out.lane(l);
+            Vec<T> sum(T(0));
+            int level = 0;
+            for (int j = 0; j < depthCount; ++j) {
+                for (; level <= depths[j]; ++level) sum += levels[level].lane(l);
+                atDepths[std::size_t(first + l) * depthCount + j] = sum;
+            }
+        }
+    }
 }
 
 }  // namespace
@@ -283,9 +343,9 @@ constinit const TracerKernel kTracerKernel{
     .tune = WHITTED_ISA_TUNE,
     .vectorBytes = kSimdBytes,
     .floats = {kernelClosestHit<float>, kernelTraceRay<float>, kernelCameraSamples<float>,
-               kernelCameraRow<float>},
+               kernelCameraRow<float>, kernelCameraRowAtDepths<float>},
     .doubles = {kernelClosestHit<double>, kernelTraceRay<double>, kernelCameraSamples<double>,
-                kernelCameraRow<double>},
+                kernelCameraRow<double>, kernelCameraRowAtDepths<double>},
 };
 
 }  // namespace WHITTED_ISA_NAMESPACE

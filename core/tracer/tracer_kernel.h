@@ -17,6 +17,9 @@ struct KernelEntryPoints {
                                Vec<T>* radiance, RayCounts&);
     void (*traceCameraRow)(const PreparedScene<T>&, int y, int x0, int count, int n,
                            Vec<T>* radiance, RayCounts&);
+    void (*traceCameraRowAtDepths)(const PreparedScene<T>&, int y, int x0, int count, int n,
+                                   Vec<T>* radiance, const int* depths, int depthCount,
+                                   Vec<T>* atDepths, RayCounts&);
 };
 
 struct TracerKernel {

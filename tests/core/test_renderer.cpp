@@ -135,6 +135,58 @@ TEST(Renderer, PruningWeight_GlassAtDepth16_FewerRaysAndNoPixelOffByACode) {
     EXPECT_LT(share, 0.8);
 }
 
+// One render gives the picture at shallower depths too (planning compares
+// depths so): the sum of what each bounce level adds, equal to a render at
+// that depth but for rounding, with the render's own picture and rays those
+// of a plain render. Pruned alike, as the planner's deep check renders.
+TEST(Renderer, AlsoAtDepths_EqualRendersAtThoseDepths) {
+    for (const Precision precision : {Precision::Float, Precision::Double}) {
+        for (const double prune : {0.0, 1e-4}) {
+            SCOPED_TRACE(std::string(precisionName(precision)) + ", prune " +
+                         std::to_string(prune));
+            Scene scene = loadScene(std::filesystem::path(WHITTED_SCENES_DIR) / "glass.json");
+            scene.render.width = 96;
+            scene.render.height = 72;
+            scene.render.samplesPerPixel = 1;
+            scene.render.precision = precision;
+            scene.render.maxDepth = 12;
+            RenderOptions options = oneShotOptions();
+            options.pruneBelowWeight = prune;
+            const RenderResult plain = render(scene, options);
+            options.alsoAtDepths = {0, 1, 3, 6, 11};
+            const RenderResult deep = render(scene, options);
+            EXPECT_TRUE(deep.image.rgb == plain.image.rgb);
+            EXPECT_EQ(deep.rays.total(), plain.rays.total());
+            ASSERT_EQ(deep.atDepths.size(), options.alsoAtDepths.size());
+            for (std::size_t k = 0; k < options.alsoAtDepths.size(); ++k) {
+                scene.render.maxDepth = options.alsoAtDepths[k];
+                RenderOptions alone = oneShotOptions();
+                alone.pruneBelowWeight = prune;
+                const Image at = render(scene, alone).image;
+                float largest = 0.0f;
+                for (std::size_t i = 0; i < at.rgb.size(); ++i)
+                    largest = std::max(largest, std::fabs(at.rgb[i] - deep.atDepths[k].rgb[i]));
+                EXPECT_LE(largest, 1e-5f) << "depth " << options.alsoAtDepths[k];
+                // Depth 6 differs from 12 (light among the glass balls).
+                if (options.alsoAtDepths[k] == 6) {
+                    EXPECT_FALSE(at.rgb == plain.image.rgb) << options.alsoAtDepths[k];
+                }
+            }
+        }
+    }
+    Scene scene = test::seedScene(32, 24, Precision::Float);
+    scene.render.maxDepth = 4;
+    for (const std::vector<int>& refused : {std::vector<int>{4}, {3, 1}, {-1}}) {
+        RenderOptions options = oneShotOptions();
+        options.alsoAtDepths = refused;
+        EXPECT_THROW(render(scene, options), std::invalid_argument);
+    }
+    scene.render.samplesPerPixel = 2;
+    RenderOptions options = oneShotOptions();
+    options.alsoAtDepths = {1};
+    EXPECT_THROW(render(scene, options), std::invalid_argument);
+}
+
 TEST(Renderer, RayCounts_SameForOneAndTwoThreadsAndProgressive) {
     const Scene scene = smallSeed(5, Precision::Float);
     const RayCounts one = render(scene, options(1, 16, false)).rays;

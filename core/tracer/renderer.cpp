@@ -347,7 +347,7 @@ class TileRenderer {
     // A worker's buffers for one row of a tile, kept from tile to tile.
     struct Row {
         std::vector<Vec<T>> radiance;
-        std::vector<glm::dvec3> sums;
+        std::vector<glm::dvec3> sums;  // where the render keeps none
         std::vector<float> firstHalf;  // an adaptive pass's picture before it
         std::vector<Vec<T>> atDepths;  // renderRowAtDepths(): pixel by pixel, depth by depth
     };
@@ -422,13 +422,11 @@ class TileRenderer {
 
     void renderRow(const Pass& pass, const Tile& tile, int y, Row& row, RayCounts& counts,
                    TileErrorEstimate* estimate) {
-        std::vector<glm::dvec3>& sums = row.sums;
         const Vec<T>* radiance = row.radiance.data();
         const size_t at = size_t(y) * s_.width + tile.x;
-        if (pass.firstSample > 0)
-            std::copy_n(sums_.begin() + at, tile.w, sums.begin());
-        else
-            std::fill(sums.begin(), sums.end(), glm::dvec3(0.0));
+        // In place where they survive the pass, not copied in and out.
+        glm::dvec3* sums = sums_.empty() ? row.sums.data() : sums_.data() + at;
+        if (pass.firstSample == 0) std::fill_n(sums, tile.w, glm::dvec3(0.0));
         // Sample by sample across the row: each pixel still sums its samples
         // in index order, as a one-shot render does.
         for (int n = pass.firstSample; n < pass.lastSample; ++n) {
@@ -440,7 +438,6 @@ class TileRenderer {
                 for (int i = 0; i < tile.w; ++i)
                     storePixel(image_.pixel(tile.x + i, y), radiance[i]);
         }
-        if (!sums_.empty()) std::copy_n(sums.begin(), tile.w, sums_.begin() + at);
         const bool estimating = estimate && pass.lastSample > 1;
         float* out = image_.pixel(tile.x, y);
         // The picture after the tile's last pass is the first half.

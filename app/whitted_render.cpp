@@ -241,6 +241,24 @@ void checkTracerChoice(const Scene& scene) {
     bvhChosen(static_cast<int>(scene.spheres.size()));
 }
 
+// sharedPlan() for `--plan` into `shared`, or what went wrong said: exit 1
+// when the file cannot be written, 2 when it holds no plan for this picture.
+int sharedPlanOrSay(const Options& o, const Scene& scene, const QualityTarget& target,
+                    SharedPlan& shared) {
+    try {
+        shared = sharedPlan(o.planFile, scene, target, o.render.spp.value_or(kDefaultMaxSamples),
+                            o.render.depth);
+        return kExitOk;
+    } catch (const std::system_error& e) {  // written, not read; what() names the temporary file
+        std::cerr << "whitted-render: " << o.planFile
+                  << ": cannot write the plan: " << e.code().message() << "\n";
+        return kExitFailure;
+    } catch (const std::runtime_error& e) {
+        std::cerr << "whitted-render: " << e.what() << "\n";
+        return kExitBadInput;
+    }
+}
+
 // `--plan FILE` without -o: the plan made and written there (or found there
 // already), nothing rendered. whitted-farm's plan job runs this before its
 // tasks.
@@ -262,20 +280,12 @@ int runPlanOnly(const Options& o) {
         std::cerr << "whitted-render: " << e.what() << "\n";
         return kExitBadInput;
     }
-    try {
-        const SharedPlan shared = sharedPlan(
-            o.planFile, scene, *target, o.render.spp.value_or(kDefaultMaxSamples), o.render.depth);
-        if (!o.quiet) {
-            sayQualityPlan(shared.plan);
-            std::fprintf(stderr, shared.read ? "the plan in %s was made before\n" : "wrote %s\n",
-                         o.planFile.c_str());
-        }
-    } catch (const std::system_error& e) {  // written, not read
-        std::cerr << "whitted-render: " << o.planFile << ": " << e.what() << "\n";
-        return kExitFailure;
-    } catch (const std::runtime_error& e) {
-        std::cerr << "whitted-render: " << e.what() << "\n";
-        return kExitBadInput;
+    SharedPlan shared;
+    if (const int code = sharedPlanOrSay(o, scene, *target, shared); code != kExitOk) return code;
+    if (!o.quiet) {
+        sayQualityPlan(shared.plan);
+        std::fprintf(stderr, shared.read ? "the plan in %s was made before\n" : "wrote %s\n",
+                     o.planFile.c_str());
     }
     return kExitOk;
 }
@@ -321,20 +331,13 @@ int run(const Options& o) {
         if (target && o.planFile.empty())
             plan = planQuality(scene, *target, maxSamples, o.render.depth);
         else if (target) {
-            try {
-                const SharedPlan shared =
-                    sharedPlan(o.planFile, scene, *target, maxSamples, o.render.depth);
-                if (!o.quiet && shared.read)
-                    std::fprintf(stderr, "the plan in %s, made before for this picture:\n",
-                                 o.planFile.c_str());
-                plan = shared.plan;
-            } catch (const std::system_error& e) {  // written, not read
-                std::cerr << "whitted-render: " << o.planFile << ": " << e.what() << "\n";
-                return kExitFailure;
-            } catch (const std::runtime_error& e) {
-                std::cerr << "whitted-render: " << e.what() << "\n";
-                return kExitBadInput;
-            }
+            SharedPlan shared;
+            if (const int code = sharedPlanOrSay(o, scene, *target, shared); code != kExitOk)
+                return code;
+            if (!o.quiet && shared.read)
+                std::fprintf(stderr, "the plan in %s, made before for this picture:\n",
+                             o.planFile.c_str());
+            plan = shared.plan;
         }
         if (plan && !o.quiet) sayQualityPlan(*plan);
         if (const int code = renderFrame(scene, o, region, frame, plan); code != kExitOk)

@@ -565,7 +565,28 @@ TEST(WhittedRender, PlanFile_MadeOnceThenReadByEachRegion) {
         {test::kSeedScenePath, "-o", (dir / "fixed.png").string(), "--plan", planFile.string()});
     EXPECT_EQ(r.exitCode, 2) << describe(r);
     EXPECT_NE(r.err.find("--plan needs --quality or --target-psnr"), std::string::npos) << r.err;
-    for (const char* refused : {"small.exr", "other.exr", "glass.exr", "fixed.png"})
+    // The plan only, for another scene: refused the same way.
+    r = runRender({WHITTED_SCENES_DIR "/glass.json", "--width", "96", "--height", "72", "--quality",
+                   "preview", "--plan", planFile.string()});
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_NE(r.err.find(planFile.string() + ": the plan is for another scene"), std::string::npos)
+        << r.err;
+    // A plan file that cannot be written is the system's failure, not the user's.
+    const fs::path nowhere = dir / "no such folder" / "plan.json";
+    for (const std::string& output : {std::string("--plan"), (dir / "unplanned.exr").string()}) {
+        std::vector<std::string> args{
+            test::kSeedScenePath, "--width", "96",     "--height",      "72",
+            "--quality",          "preview", "--plan", nowhere.string()};
+        if (output != "--plan") args.insert(args.end(), {"-o", output});
+        r = runRender(args);
+        EXPECT_EQ(r.exitCode, 1) << describe(r);
+        EXPECT_NE(r.err.find("whitted-render: " + nowhere.string() +
+                             ": cannot write the plan: No such file or directory\n"),
+                  std::string::npos)
+            << r.err;
+    }
+    for (const char* refused :
+         {"small.exr", "other.exr", "glass.exr", "fixed.png", "unplanned.exr"})
         EXPECT_FALSE(fs::exists(dir / refused)) << refused;
 }
 

@@ -178,7 +178,10 @@ int follow(const Jobs& jobs, const Plan& plan, const fs::path& work, const fs::p
                 return kExitFailure;
             }
             if (p->second == "COMPLETED" && !planSaid) {
-                if (!quiet) sayPlan();
+                if (!quiet) {
+                    std::fputc('\n', stderr);
+                    sayPlan();
+                }
                 planSaid = true;
             }
         }
@@ -288,12 +291,16 @@ int run(const Options& o) {
     // What the plan job chose, once it has (from the file, in the user's words).
     const auto sayPlan = [&] {
         try {
-            std::fputc('\n', stderr);
             sayQualityPlan(readPlanFile(planFile, scene, *target));
         } catch (const std::runtime_error& e) {
             std::cerr << "whitted-farm: " << e.what() << "\n";
         }
     };
+    // A render taken up again has its plan already: no job makes it.
+    if (!o.quiet && !planFile.empty() && jobs.prepare.empty()) {
+        std::cerr << "whitted-farm: the plan, made before, in " << planFile.string() << ":\n";
+        sayPlan();
+    }
     return follow(jobs, plan, work, output, o.quiet, sayPlan);
 }
 

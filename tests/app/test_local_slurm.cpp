@@ -195,6 +195,24 @@ TEST(WhittedFarm, TilesToAQualityOnSlurm_MeetTheTarget) {
     EXPECT_EQ(merged.qualityReached.rfind("4 regions, each rendered to it: depth ", 0), 0u)
         << merged.qualityReached;
 
+    // Taken up again with a region missing: its plan is the one made before,
+    // said once, and no job makes it again.
+    const auto planned = fs::last_write_time(planFile);
+    fs::remove(out);
+    fs::remove(work / "part.1.exr");
+    const ProgramRun again = farm(test::appended({test::kSeedScenePath, "-o", out.string(),
+                                                  "--tiles", "4", "--quality", "preview", "--wait"},
+                                                 size));
+    ASSERT_EQ(again.exitCode, 0) << again.out;
+    EXPECT_NE(again.out.find("1 of 4 regions to render"), std::string::npos) << again.out;
+    EXPECT_EQ(again.out.find("the plan, job "), std::string::npos) << again.out;
+    EXPECT_NE(again.out.find("the plan, made before, in " + planFile.string() + ":\n" + said),
+              std::string::npos)
+        << again.out;
+    EXPECT_EQ(again.out.find(said), again.out.rfind(said)) << again.out;
+    EXPECT_EQ(fs::last_write_time(planFile), planned);
+    EXPECT_TRUE(fs::exists(out));
+
     const fs::path refused = dir / "refused.exr";
     const ProgramRun bad = farm(test::appended(
         {test::kSeedScenePath, "-o", refused.string(), "--tiles", "4", "--max-error", "8"}, size));

@@ -51,12 +51,11 @@ ErrorStats measureError(const Image& image, const Image& reference) {
                 std::isfinite(a[1]) && std::isfinite(a[2]))
                 continue;
             int largestCodes = 0;
-            bool finite = true, same = true;
+            bool finite = true;
             for (int c = 0; c < 3; ++c) {
                 const double d = double(a[c]) - double(b[c]);
                 const bool channelFinite = std::isfinite(d);
                 finite = finite && channelFinite;
-                same = same && a[c] == b[c];
                 sumLinear += channelFinite ? d * d : 1.0;
                 const int d8 = int(srgbEncode8(a[c])) - int(srgbEncode8(b[c]));
                 sumSrgb += double(d8) * d8;
@@ -67,7 +66,7 @@ ErrorStats measureError(const Image& image, const Image& reference) {
             // that cannot beat the largest so far needs no std::pow (most of
             // this function's time, when the planning of a render measures
             // its probes).
-            if (!finite || (!same && (largestCodes + kRoundingSlack) / 255.0f > largest))
+            if (!finite || (largestCodes + kRoundingSlack) / 255.0f > largest)
                 largest = std::max(largest, displayDifference(a, b));
         }
     }

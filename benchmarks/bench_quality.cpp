@@ -8,8 +8,9 @@
 // and the preset together take under a second, they are run again in pairs,
 // one after the other, and the medians are printed with the median of the
 // pairs' ratios.
-// Usage: bench_quality [WIDTH HEIGHT [times]] (default 320 240). Prints a
-// Markdown table; `times` prints only the paired times of Draft and Preview.
+// Usage: bench_quality [WIDTH HEIGHT [times [SCENE]]] (default 320 240).
+// Prints a Markdown table; `times` prints only the paired times of Draft and
+// Preview, of every scene or of the one named (seed, glass, ...).
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -95,7 +96,7 @@ void row(const NamedScene& n, const QualityTarget& target, const RenderPreset& p
 // 3, up to 15 or about 4 s), for Draft and Preview. No reference is
 // rendered, so it runs at sizes where the references would take an hour;
 // the error is measured against the preset's own render and not printed.
-void printTimes(int width, int height) {
+void printTimes(int width, int height, const std::string& only) {
     std::printf("%dx%d, float; times of ours include planning; medians of the pairs\n\n", width,
                 height);
     std::printf(
@@ -103,7 +104,7 @@ void printTimes(int width, int height) {
         "|\n|---|---|---|---|---|---|---|\n");
     const QualityTarget targets[] = {draftQuality(), previewQuality()};
     for (const NamedScene& n : scenes(width, height))
-        for (int i = 0; i < 2; ++i) {
+        for (int i = 0; i < 2 && (only.empty() || n.name == only); ++i) {
             const Scene preset = withPreset(n.scene, kRenderPresets[i]);
             const Image presetImage = render(preset, oneShotOptions()).image;
             const QualityCheck c = checkQuality(n.scene, targets[i], presetImage);
@@ -123,7 +124,7 @@ int main(int argc, char** argv) {
     const int width = argc > 2 ? std::atoi(argv[1]) : 320;
     const int height = argc > 2 ? std::atoi(argv[2]) : 240;
     if (argc > 3 && std::string(argv[3]) == "times") {
-        printTimes(width, height);
+        printTimes(width, height, argc > 4 ? argv[4] : "");
         return 0;
     }
     const QualityTarget targets[] = {draftQuality(), previewQuality(), finalQuality()};

@@ -103,8 +103,9 @@ void printTimes(int width, int height, const std::string& only) {
         "| scene | target | depth | mean spp | ours (plan) | preset | ours / preset (pairs) "
         "|\n|---|---|---|---|---|---|---|\n");
     const QualityTarget targets[] = {draftQuality(), previewQuality()};
-    for (const NamedScene& n : scenes(width, height))
-        for (int i = 0; i < 2 && (only.empty() || n.name == only); ++i) {
+    for (const NamedScene& n : scenes(width, height)) {
+        if (!only.empty() && n.name != only) continue;
+        for (int i = 0; i < 2; ++i) {
             const Scene preset = withPreset(n.scene, kRenderPresets[i]);
             const Image presetImage = render(preset, oneShotOptions()).image;
             const QualityCheck c = checkQuality(n.scene, targets[i], presetImage);
@@ -116,6 +117,7 @@ void printTimes(int width, int height, const std::string& only) {
                         times.ours, c.planSeconds, times.preset, times.ratio, times.pairs);
             std::fflush(stdout);
         }
+    }
 }
 
 }  // namespace

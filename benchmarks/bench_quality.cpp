@@ -96,15 +96,14 @@ void row(const NamedScene& n, const QualityTarget& target, const RenderPreset& p
 // 3, up to 15 or about 4 s), for Draft and Preview. No reference is
 // rendered, so it runs at sizes where the references would take an hour;
 // the error is measured against the preset's own render and not printed.
-void printTimes(int width, int height, const std::string& only) {
+void printTimes(int width, int height, const std::vector<NamedScene>& timed) {
     std::printf("%dx%d, float; times of ours include planning; medians of the pairs\n\n", width,
                 height);
     std::printf(
         "| scene | target | depth | mean spp | ours (plan) | preset | ours / preset (pairs) "
         "|\n|---|---|---|---|---|---|---|\n");
     const QualityTarget targets[] = {draftQuality(), previewQuality()};
-    for (const NamedScene& n : scenes(width, height)) {
-        if (!only.empty() && n.name != only) continue;
+    for (const NamedScene& n : timed) {
         for (int i = 0; i < 2; ++i) {
             const Scene preset = withPreset(n.scene, kRenderPresets[i]);
             const Image presetImage = render(preset, oneShotOptions()).image;
@@ -126,7 +125,18 @@ int main(int argc, char** argv) {
     const int width = argc > 2 ? std::atoi(argv[1]) : 320;
     const int height = argc > 2 ? std::atoi(argv[2]) : 240;
     if (argc > 3 && std::string(argv[3]) == "times") {
-        printTimes(width, height, argc > 4 ? argv[4] : "");
+        std::vector<NamedScene> timed = scenes(width, height);
+        if (argc > 4) {
+            std::string names;
+            for (const NamedScene& n : timed) names += (names.empty() ? "'" : ", '") + n.name + "'";
+            std::erase_if(timed, [&](const NamedScene& n) { return n.name != argv[4]; });
+            if (timed.empty()) {
+                std::fprintf(stderr, "bench_quality: no scene is named '%s'; the scenes: %s\n",
+                             argv[4], names.c_str());
+                return 2;
+            }
+        }
+        printTimes(width, height, timed);
         return 0;
     }
     const QualityTarget targets[] = {draftQuality(), previewQuality(), finalQuality()};

@@ -177,10 +177,11 @@ inline U hashSeed(U seed, std::uint32_t salt) {
 // Sobol's second dimension: the bits of `index` select direction numbers
 // v_0 = 1/2, v_k = v_{k-1} xor v_{k-1}/2 (the first dimension is the index
 // with its bits reversed).
-inline std::uint32_t sobolSecond(std::uint32_t index) {
-    std::uint32_t v = 0x80000000u, x = 0;
-    for (; index != 0; index >>= 1, v ^= v >> 1)
-        if (index & 1u) x ^= v;
+template <typename U>
+inline U sobolSecond(U index) {
+    std::uint32_t v = 0x80000000u;
+    U x = lanesOf<U>(0);
+    for (; anyLane(index != 0); index >>= 1, v ^= v >> 1) x ^= (index & 1u) * v;
     return x;
 }
 
@@ -199,11 +200,12 @@ struct OffsetLanes {
     double u[kLaneCount<U>], v[kLaneCount<U>];
 };
 
-// Sample `s` of Kensler's correlated multi-jittered pattern of pattern.count
-// samples (subPixelSample()), for pixels of the given seeds.
+// Samples `indices` of Kensler's correlated multi-jittered pattern of
+// pattern.count samples (subPixelSample()), for pixels of the given seeds.
 template <typename U>
-inline OffsetLanes<U> patternOffsets(int s, const SamplePattern& pattern, const U& seeds) {
-    const U si = permute(lanesOf<U>(std::uint32_t(s)), pattern.count, U(seeds * 0x51633e2du));
+inline OffsetLanes<U> patternOffsets(const U& indices, const SamplePattern& pattern,
+                                     const U& seeds) {
+    const U si = permute(indices, pattern.count, U(seeds * 0x51633e2du));
     const U sx = permute(remainderOf(si, pattern.columns), pattern.columns, U(seeds * 0x68bc21ebu));
     const U sy = permute(quotientOf(si, pattern.columns), pattern.rows, U(seeds * 0x02e5be93u));
     const U jx = randomBits(si, U(seeds * 0x967a889bu));
@@ -218,14 +220,13 @@ inline OffsetLanes<U> patternOffsets(int s, const SamplePattern& pattern, const 
     return out;
 }
 
-// Sample `s` of the Owen-scrambled Sobol sequence (progressiveSample()), for
-// pixels of the given seeds.
+// Samples `indices` of the Owen-scrambled Sobol sequence
+// (progressiveSample()), for pixels of the given seeds.
 template <typename U>
-inline OffsetLanes<U> sequenceOffsets(int s, const U& seeds) {
-    const auto index = static_cast<std::uint32_t>(s);
-    const U x = owenScrambleReversed(lanesOf<U>(index), hashSeed(seeds, 0x2c1b3c6du));
-    const U y = owenScrambleReversed(lanesOf<U>(reverseBits(sobolSecond(index))),
-                                     hashSeed(seeds, 0x297a2d39u));
+inline OffsetLanes<U> sequenceOffsets(const U& indices, const U& seeds) {
+    const U x = owenScrambleReversed(indices, hashSeed(seeds, 0x2c1b3c6du));
+    const U y =
+        owenScrambleReversed(reverseBits(sobolSecond(indices)), hashSeed(seeds, 0x297a2d39u));
     // The top 24 bits: exact in float too, and below 1.
     constexpr double kUnit = 1.0 / 16777216.0;
     OffsetLanes<U> out;
@@ -236,14 +237,20 @@ inline OffsetLanes<U> sequenceOffsets(int s, const U& seeds) {
     return out;
 }
 
-// Sample `n` of the pixels of the given seeds, as a render draws it: from the
-// open-ended sequence (renders whose tiles stop at counts of their own) or
-// from the pattern of pattern.count samples. The packet's and the single
-// pixel's paths both ask here, so they cannot choose differently.
+// Sample `n` (or each lane's of `indices`) of the pixels of the given seeds,
+// as a render draws it: from the open-ended sequence (renders whose tiles
+// stop at counts of their own) or from the pattern of pattern.count samples. The packet's and the
+// single pixel's paths both ask here, so they cannot choose differently.
+template <typename U>
+inline OffsetLanes<U> sampleOffsets(const U& indices, bool openEnded, const SamplePattern& pattern,
+                                    const U& seeds) {
+    return openEnded ? sequenceOffsets(indices, seeds) : patternOffsets(indices, pattern, seeds);
+}
+
 template <typename U>
 inline OffsetLanes<U> sampleOffsets(int n, bool openEnded, const SamplePattern& pattern,
                                     const U& seeds) {
-    return openEnded ? sequenceOffsets(n, seeds) : patternOffsets(n, pattern, seeds);
+    return sampleOffsets(lanesOf<U>(std::uint32_t(n)), openEnded, pattern, seeds);
 }
 
 }  // namespace WHITTED_ISA_NAMESPACE

@@ -34,7 +34,7 @@ SamplePattern samplePattern(int count) {
 }
 
 SubPixel progressiveSample(int s, std::uint32_t seed) {
-    const OffsetLanes<std::uint32_t> offset = sequenceOffsets(s, seed);
+    const OffsetLanes<std::uint32_t> offset = sequenceOffsets(std::uint32_t(s), seed);
     return {offset.u[0], offset.v[0]};
 }
 
@@ -44,7 +44,7 @@ std::uint32_t pixelSeed(int i, int j) {
 
 SubPixel subPixelSample(int s, int count, std::uint32_t seed) {
     if (count <= 1) return {0.5, 0.5};
-    const OffsetLanes<std::uint32_t> offset = patternOffsets(s, samplePattern(count), seed);
+    const OffsetLanes<std::uint32_t> offset = patternOffsets(std::uint32_t(s), samplePattern(count), seed);
     return {offset.u[0], offset.v[0]};
 }
 

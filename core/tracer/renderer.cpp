@@ -420,23 +420,31 @@ class TileRenderer {
         }
     }
 
+    // A row's samples traced at once, at most: a pass's samples of a tile's
+    // row, 16 pixels of 256 samples, 48 KB of float radiance.
+    static constexpr int kBlockSamples = 256;
+
     void renderRow(const Pass& pass, const Tile& tile, int y, Row& row, RayCounts& counts,
                    TileErrorEstimate* estimate) {
-        const Vec<T>* radiance = row.radiance.data();
+        const Vec<T>* radiance = nullptr;
         const size_t at = size_t(y) * s_.width + tile.x;
         // In place where they survive the pass, not copied in and out.
         glm::dvec3* sums = sums_.empty() ? row.sums.data() : sums_.data() + at;
         if (pass.firstSample == 0) std::fill_n(sums, tile.w, glm::dvec3(0.0));
-        // Sample by sample across the row: each pixel still sums its samples
-        // in index order, as a one-shot render does.
-        for (int n = pass.firstSample; n < pass.lastSample; ++n) {
-            traceCameraRow(s_, y, tile.x, tile.w, n, row.radiance.data(), counts);
-            for (int i = 0; i < tile.w; ++i) sums[i] += glm::dvec3(radiance[i]);
+        // Pixel by pixel, in chunks of kBlockSamples: each pixel still sums
+        // its samples in index order, as a one-shot render does.
+        for (int n0 = pass.firstSample; n0 < pass.lastSample; n0 += kBlockSamples) {
+            const int samples = std::min(kBlockSamples, pass.lastSample - n0);
+            row.radiance.resize(std::size_t(tile.w) * samples);
+            radiance = row.radiance.data();
+            traceCameraBlock(s_, y, tile.x, tile.w, n0, samples, row.radiance.data(), counts);
+            for (int i = 0; i < tile.w; ++i)
+                for (int k = 0; k < samples; ++k) sums[i] += glm::dvec3(radiance[i * samples + k]);
             // An adaptive render's first pass, of two samples: its first
             // half, for the estimate, is the first sample.
-            if (estimate && n == 0)
+            if (estimate && n0 == 0)
                 for (int i = 0; i < tile.w; ++i)
-                    storePixel(image_.pixel(tile.x + i, y), radiance[i]);
+                    storePixel(image_.pixel(tile.x + i, y), radiance[i * samples]);
         }
         const bool estimating = estimate && pass.lastSample > 1;
         float* out = image_.pixel(tile.x, y);

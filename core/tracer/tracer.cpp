@@ -217,6 +217,13 @@ void traceCameraRow(const PreparedScene<T>& s, int y, int x0, int count, int n, 
 }
 
 template <typename T>
+void traceCameraBlock(const PreparedScene<T>& s, int y, int x0, int pixels, int n0, int samples,
+                      Vec<T>* radiance, RayCounts& counts) {
+    activeKernel().entryPoints<T>().traceCameraBlock(s, y, x0, pixels, n0, samples, radiance,
+                                                     counts);
+}
+
+template <typename T>
 void traceCameraRowAtDepths(const PreparedScene<T>& s, int y, int x0, int count, int n,
                             Vec<T>* radiance, const int* depths, int depthCount, Vec<T>* atDepths,
                             RayCounts& counts) {
@@ -246,6 +253,8 @@ CameraSample<T> pixelSample(const PreparedScene<T>& s, int i, int j, int n) {
     template Vec<T> traceRay<T>(const PreparedScene<T>&, const Ray<T>&, int, RayCounts&);         \
     template void traceCameraRow<T>(const PreparedScene<T>&, int, int, int, int, Vec<T>*,         \
                                     RayCounts&);                                                  \
+    template void traceCameraBlock<T>(const PreparedScene<T>&, int, int, int, int, int, Vec<T>*,  \
+                                      RayCounts&);                                                \
     template void traceCameraRowAtDepths<T>(const PreparedScene<T>&, int, int, int, int, Vec<T>*, \
                                             const int*, int, Vec<T>*, RayCounts&);                \
     template void traceCameraSamples<T>(const PreparedScene<T>&, const CameraSample<T>*, int,     \

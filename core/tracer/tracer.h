@@ -159,6 +159,15 @@ template <typename T>
 void traceCameraRow(const PreparedScene<T>& s, int y, int x0, int count, int n, Vec<T>* radiance,
                     RayCounts& counts);
 
+// Samples n0 .. n0+samples-1 of each of the pixels (x0 .. x0+pixels-1, y),
+// pixel by pixel: radiance[p * samples + k] is sample n0 + k of pixel x0 + p.
+// The same results as traceCameraRow() for each sample; a packet holds a
+// pixel's own samples, whose rays part less than those of a row's pixels (a
+// field of glass balls rendered a quarter faster at 128 samples).
+template <typename T>
+void traceCameraBlock(const PreparedScene<T>& s, int y, int x0, int pixels, int n0, int samples,
+                      Vec<T>* radiance, RayCounts& counts);
+
 // traceCameraRow(), and besides, for each of `depths` (ascending, none past
 // the scene's max depth), the radiance the same ray has at that max depth:
 // SPEC spawns no ray past the depth, so it is the sum of what each bounce

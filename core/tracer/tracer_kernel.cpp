@@ -303,6 +303,31 @@ void kernelCameraRow(const PreparedScene<T>& s, int y, int x0, int count, int n,
     traceCameraPackets(s, count, radiance, counts, rowPlacer(s, y, x0, n));
 }
 
+// Samples n0 .. n0+samples-1 of the pixels x0, x0+1, ... of row y, pixel by
+// pixel: lane q holds sample n0 + q % samples of pixel x0 + q / samples.
+template <typename T>
+void kernelCameraBlock(const PreparedScene<T>& s, int y, int x0, int pixels, int n0, int samples,
+                       Vec<T>* radiance, RayCounts& counts) {
+    using V = typename Simd<T>::type;
+    using U = typename LaneWords<T>::type;
+    auto place = [&](int first, int m, V& px, V& py) {
+        U column{}, index{};
+        int pixel = first / samples, sample = first % samples;
+        for (int l = 0; l < m; ++l) {
+            column[l] = std::uint32_t(x0 + pixel);
+            index[l] = std::uint32_t(n0 + sample);
+            if (++sample == samples) sample = 0, ++pixel;
+        }
+        const OffsetLanes<U> offset = sampleOffsets(index, s.openEndedSamples, s.pattern,
+                                                    pixelSeeds(column, std::uint32_t(y)));
+        for (int l = 0; l < m; ++l) {
+            px[l] = T(column[l]) + T(offset.u[l]);
+            py[l] = T(y) + T(offset.v[l]);
+        }
+    };
+    traceCameraPackets(s, pixels * samples, radiance, counts, place);
+}
+
 // kernelCameraRow(), each packet's levels kept and summed up to each of the
 // shallower depths (ascending, none past the scene's max depth).
 template <typename T>
@@ -343,9 +368,10 @@ constinit const TracerKernel kTracerKernel{
     .tune = WHITTED_ISA_TUNE,
     .vectorBytes = kSimdBytes,
     .floats = {kernelClosestHit<float>, kernelTraceRay<float>, kernelCameraSamples<float>,
-               kernelCameraRow<float>, kernelCameraRowAtDepths<float>},
+               kernelCameraRow<float>, kernelCameraRowAtDepths<float>, kernelCameraBlock<float>},
     .doubles = {kernelClosestHit<double>, kernelTraceRay<double>, kernelCameraSamples<double>,
-                kernelCameraRow<double>, kernelCameraRowAtDepths<double>},
+                kernelCameraRow<double>, kernelCameraRowAtDepths<double>,
+                kernelCameraBlock<double>},
 };
 
 }  // namespace WHITTED_ISA_NAMESPACE

@@ -20,6 +20,8 @@ struct KernelEntryPoints {
     void (*traceCameraRowAtDepths)(const PreparedScene<T>&, int y, int x0, int count, int n,
                                    Vec<T>* radiance, const int* depths, int depthCount,
                                    Vec<T>* atDepths, RayCounts&);
+    void (*traceCameraBlock)(const PreparedScene<T>&, int y, int x0, int pixels, int n0,
+                             int samples, Vec<T>* radiance, RayCounts&);
 };
 
 struct TracerKernel {

@@ -3,9 +3,11 @@
 // would depend on which rays happen to share a packet. Seeded random rays, seed
 // printed on failure.
 #include <random>
+#include <string>
 
 #include <gtest/gtest.h>
 
+#include "tracer/kernel_dispatch.h"
 #include "tracer/ray_packet.h"
 #include "tracer/sphere_intersect.h"
 #include "tracer/tracer.h"
@@ -154,6 +156,58 @@ void checkRowMatchesList(int samplesPerPixel, bool openEnded = false) {
                 ASSERT_EQ(row[x], list[x]) << "pixel " << x << "," << y << " sample " << n;
             EXPECT_EQ(a.total(), b.total());
         }
+}
+
+// The renderer's block path (traceCameraBlock: a pixel's samples side by side
+// in a packet) gives, lane for lane, what the list path gives for each pixel
+// and sample: blocks that start mid-pattern, of fewer samples than a packet
+// has lanes and of more, on pixels that are not a multiple of any packet
+// width, in both precisions and with both kinds of sample.
+template <typename T>
+void checkBlockMatchesList(int samplesPerPixel, int n0, int samples, bool openEnded) {
+    Scene scene;
+    scene.camera = Camera{{0, 0.35, -1}, {0, 0.25, 0}, {0, 1, 0}, 73.74};
+    scene.render.width = 37;
+    scene.render.height = 4;
+    scene.render.samplesPerPixel = samplesPerPixel;
+    scene.materials = {Material{"glass", {0, 0, 0}, 1, 200, 0.1, 0.9, 1.5, std::nullopt},
+                       Material{"m", {0.5, 0.2, 0.1}, 1, 50, 0.5, 0, 1.5, Checker{{0, 0, 0}, 0.5}}};
+    scene.lights = {Light{"key", {5, 5, -10}, {1, 1, 1}, 1}};
+    scene.spheres = {Sphere{"ball", {0, 0.2, 2}, 0.6, "glass"},
+                     Sphere{"floor", {0, -99999.5, 0}, 99999, "m"}};
+    PreparedScene<T> s = prepareScene<T>(scene);
+    s.openEndedSamples = openEnded;
+    const int x0 = 3, pixels = 29;
+    for (int y = 0; y < scene.render.height; ++y) {
+        std::vector<Vec<T>> block(std::size_t(pixels) * samples), list(block.size());
+        std::vector<CameraSample<T>> listed;
+        for (int p = 0; p < pixels; ++p)
+            for (int k = 0; k < samples; ++k) listed.push_back(pixelSample(s, x0 + p, y, n0 + k));
+        RayCounts a, b;
+        traceCameraBlock(s, y, x0, pixels, n0, samples, block.data(), a);
+        traceCameraSamples(s, listed.data(), int(listed.size()), list.data(), b);
+        for (std::size_t q = 0; q < block.size(); ++q)
+            ASSERT_EQ(block[q], list[q])
+                << "pixel " << x0 + q / samples << "," << y << " sample " << n0 + q % samples;
+        EXPECT_EQ(a.total(), b.total());
+        EXPECT_EQ(a.camera, std::uint64_t(pixels) * samples);
+    }
+}
+
+// Under every kernel: packets of 2 to 16 lanes, which a block's samples fill
+// whole, in part, or across pixels.
+TEST(RayPacket, CameraBlockEqualsSampleList) {
+    for (const std::string& kernel : supportedKernelNames()) {
+        SCOPED_TRACE("kernel " + kernel);
+        useKernel(kernel);
+        checkBlockMatchesList<float>(64, 5, 6, false);
+        checkBlockMatchesList<double>(64, 5, 6, false);
+        checkBlockMatchesList<float>(64, 0, 33, false);
+        checkBlockMatchesList<float>(1024, 16, 16, true);
+        checkBlockMatchesList<double>(1024, 7, 33, true);
+        checkBlockMatchesList<float>(1024, 0, 2, true);
+    }
+    useKernel("");
 }
 
 TEST(RayPacket, CameraRowEqualsSampleList) {

@@ -420,13 +420,12 @@ class TileRenderer {
         }
     }
 
-    // A row's samples traced at once, at most: a pass's samples of a tile's
-    // row, 16 pixels of 256 samples, 48 KB of float radiance.
+    // The samples a pixel of a tile's row traces at once, at most: a row of
+    // 32 pixels then holds 96 KB of float radiance.
     static constexpr int kBlockSamples = 256;
 
     void renderRow(const Pass& pass, const Tile& tile, int y, Row& row, RayCounts& counts,
                    TileErrorEstimate* estimate) {
-        const Vec<T>* radiance = nullptr;
         const size_t at = size_t(y) * s_.width + tile.x;
         // In place where they survive the pass, not copied in and out.
         glm::dvec3* sums = sums_.empty() ? row.sums.data() : sums_.data() + at;
@@ -436,7 +435,7 @@ class TileRenderer {
         for (int n0 = pass.firstSample; n0 < pass.lastSample; n0 += kBlockSamples) {
             const int samples = std::min(kBlockSamples, pass.lastSample - n0);
             row.radiance.resize(std::size_t(tile.w) * samples);
-            radiance = row.radiance.data();
+            const Vec<T>* radiance = row.radiance.data();
             traceCameraBlock(s_, y, tile.x, tile.w, n0, samples, row.radiance.data(), counts);
             for (int i = 0; i < tile.w; ++i)
                 for (int k = 0; k < samples; ++k) sums[i] += glm::dvec3(radiance[i * samples + k]);

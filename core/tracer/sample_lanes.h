@@ -239,8 +239,9 @@ inline OffsetLanes<U> sequenceOffsets(const U& indices, const U& seeds) {
 
 // Sample `n` (or each lane's of `indices`) of the pixels of the given seeds,
 // as a render draws it: from the open-ended sequence (renders whose tiles
-// stop at counts of their own) or from the pattern of pattern.count samples. The packet's and the
-// single pixel's paths both ask here, so they cannot choose differently.
+// stop at counts of their own) or from the pattern of pattern.count samples.
+// The packet's and the single pixel's paths both ask here, so they cannot
+// choose differently.
 template <typename U>
 inline OffsetLanes<U> sampleOffsets(const U& indices, bool openEnded, const SamplePattern& pattern,
                                     const U& seeds) {

@@ -44,7 +44,8 @@ std::uint32_t pixelSeed(int i, int j) {
 
 SubPixel subPixelSample(int s, int count, std::uint32_t seed) {
     if (count <= 1) return {0.5, 0.5};
-    const OffsetLanes<std::uint32_t> offset = patternOffsets(std::uint32_t(s), samplePattern(count), seed);
+    const OffsetLanes<std::uint32_t> offset =
+        patternOffsets(std::uint32_t(s), samplePattern(count), seed);
     return {offset.u[0], offset.v[0]};
 }
 

@@ -268,49 +268,15 @@ void kernelCameraSamples(const PreparedScene<T>& s, const CameraSample<T>* sampl
     });
 }
 
-// Where sample n of the pixels x0, x0+1, ... of row y lies, as pixelSample()
-// gives it: place(first, m, px, py) fills the lanes of pixels first ..
-// first+m-1 (counted from x0).
+// Where samples n0 .. n0+samples-1 of the pixels x0, x0+1, ... of row y lie,
+// as pixelSample() gives them, pixel by pixel: place(first, m, px, py) fills
+// lanes first .. first+m-1, lane q with sample n0 + q % samples of pixel
+// x0 + q / samples.
 template <typename T>
-auto rowPlacer(const PreparedScene<T>& s, int y, int x0, int n) {
+auto blockPlacer(const PreparedScene<T>& s, int y, int x0, int n0, int samples) {
     using V = typename Simd<T>::type;
     using U = typename LaneWords<T>::type;
-    V laneIndex{};
-    U laneWord{};
-    for (int l = 0; l < RayPacket<T>::kWidth; ++l) {
-        laneIndex[l] = T(l);
-        laneWord[l] = std::uint32_t(l);
-    }
-    return [&s, y, x0, n, laneIndex, laneWord](int first, int m, V& px, V& py) {
-        if (s.samplesPerPixel == 1 || n == kPixelCentre) {  // as pixelSample() gives them
-            px = (laneIndex + T(x0 + first)) + T(0.5);
-            py = V{} + (T(y) + T(0.5));
-            return;
-        }
-        // As pixelSample() gives them, for the packet's pixels at once.
-        const U seeds = pixelSeeds(U(laneWord + std::uint32_t(x0 + first)), std::uint32_t(y));
-        const OffsetLanes<U> offset = sampleOffsets(n, s.openEndedSamples, s.pattern, seeds);
-        for (int l = 0; l < m; ++l) {
-            px[l] = T(x0 + first + l) + T(offset.u[l]);
-            py[l] = T(y) + T(offset.v[l]);
-        }
-    };
-}
-
-template <typename T>
-void kernelCameraRow(const PreparedScene<T>& s, int y, int x0, int count, int n, Vec<T>* radiance,
-                     RayCounts& counts) {
-    traceCameraPackets(s, count, radiance, counts, rowPlacer(s, y, x0, n));
-}
-
-// Samples n0 .. n0+samples-1 of the pixels x0, x0+1, ... of row y, pixel by
-// pixel: lane q holds sample n0 + q % samples of pixel x0 + q / samples.
-template <typename T>
-void kernelCameraBlock(const PreparedScene<T>& s, int y, int x0, int pixels, int n0, int samples,
-                       Vec<T>* radiance, RayCounts& counts) {
-    using V = typename Simd<T>::type;
-    using U = typename LaneWords<T>::type;
-    auto place = [&](int first, int m, V& px, V& py) {
+    return [&s, y, x0, n0, samples](int first, int m, V& px, V& py) {
         U column{}, index{};
         int pixel = first / samples, sample = first % samples;
         for (int l = 0; l < m; ++l) {
@@ -325,7 +291,39 @@ void kernelCameraBlock(const PreparedScene<T>& s, int y, int x0, int pixels, int
             py[l] = T(y) + T(offset.v[l]);
         }
     };
-    traceCameraPackets(s, pixels * samples, radiance, counts, place);
+}
+
+// Where sample n of the pixels x0, x0+1, ... of row y lies, as pixelSample()
+// gives it: place(first, m, px, py) fills the lanes of pixels first ..
+// first+m-1 (counted from x0).
+template <typename T>
+auto rowPlacer(const PreparedScene<T>& s, int y, int x0, int n) {
+    using V = typename Simd<T>::type;
+    V laneIndex{};
+    for (int l = 0; l < RayPacket<T>::kWidth; ++l) laneIndex[l] = T(l);
+    const auto sampled = blockPlacer(s, y, x0, n, 1);
+    return [&s, y, x0, n, laneIndex, sampled](int first, int m, V& px, V& py) {
+        if (s.samplesPerPixel == 1 || n == kPixelCentre) {  // as pixelSample() gives them
+            px = (laneIndex + T(x0 + first)) + T(0.5);
+            py = V{} + (T(y) + T(0.5));
+            return;
+        }
+        sampled(first, m, px, py);
+    };
+}
+
+template <typename T>
+void kernelCameraRow(const PreparedScene<T>& s, int y, int x0, int count, int n, Vec<T>* radiance,
+                     RayCounts& counts) {
+    traceCameraPackets(s, count, radiance, counts, rowPlacer(s, y, x0, n));
+}
+
+// Samples n0 .. n0+samples-1 of the pixels x0, x0+1, ... of row y, pixel by
+// pixel (blockPlacer()).
+template <typename T>
+void kernelCameraBlock(const PreparedScene<T>& s, int y, int x0, int pixels, int n0, int samples,
+                       Vec<T>* radiance, RayCounts& counts) {
+    traceCameraPackets(s, pixels * samples, radiance, counts, blockPlacer(s, y, x0, n0, samples));
 }
 
 // kernelCameraRow(), each packet's levels kept and summed up to each of the

@@ -241,6 +241,7 @@ void checkBranchesTogetherMatchAlone() {
         Sphere{"floor", {0, -99999.5, 0}, 99999, "m"}};
     const PreparedScene<T> s = prepareScene<T>(scene);
     const int depth = scene.render.maxDepth;
+    std::uint64_t refracted = 0;
     for (int y = 0; y < scene.render.height; ++y) {
         std::vector<Vec<T>> together(scene.render.width), alone(scene.render.width),
             atDepth(scene.render.width);
@@ -252,7 +253,9 @@ void checkBranchesTogetherMatchAlone() {
             ASSERT_EQ(together[x], alone[x]) << "pixel " << x << "," << y;
         EXPECT_EQ(a.total(), b.total());
         EXPECT_EQ(a.refraction, b.refraction);
+        refracted += a.refraction;
     }
+    EXPECT_GT(refracted, 0u);  // the rows do go through the glass
 }
 
 TEST(RayPacket, BranchesTracedTogetherEqualBranchesTracedAlone) {

@@ -217,7 +217,8 @@ void addSecondaryRays(const PreparedScene<T>& s, const LaneMaterials<T>& g,
     }
     const auto mirror = hit & (reflectWeight > T(0));
     const unsigned reflectedBits = laneBits(mirror) & heavyEnough(reflectWeight);
-    const Vec3x<T> r = d - (T(2) * dot(d, n)) * n;  // reflect(d, n)
+    if (!refracted.rays.active && !reflectedBits) return;  // matte hits: nothing deeper
+    const Vec3x<T> r = d - (T(2) * dot(d, n)) * n;         // reflect(d, n)
     const Branch<T> reflected{RayPacket<T>::of(sp.p, r, kHit, sp.inside, reflectedBits),
                               weight * reflectWeight};
     counts.reflection += __builtin_popcount(reflectedBits);

@@ -155,11 +155,15 @@ Vec3x<T> checkerLanes(const LaneMaterials<T>& g, const Vec3x<T>& p, const Vec3x<
     const V sign = oAxis >= T(0) ? V{} + T(1) : V{} - T(1);
     // The surface along the axis, centre + sign * (r - drop), as the pair hi + lo,
     // with the centre's and the radius's low terms (a float floor of radius 1e9).
-    V hi, lo, hi2, e, ph, pl;
+    // The sphere's extreme, centre + sign * r, is made a normalised pair before
+    // the drop is taken off: added to an unnormalised low term (the seed's floor
+    // in float: -0.8515625 + 0.0015625) a drop of 1e-11 would be rounded away.
+    V hi, lo, hi2, e, loHi, loLo, ph, pl;
     exact::twoSum<V>(cAxis, sign * g.radius, hi, lo);
-    lo = lo + (cAxisLo + sign * g.radiusLo);
-    exact::twoSum<V>(hi, -sign * drop, hi2, e);
-    exact::twoSum<V>(hi2, lo + e, hi, lo);
+    exact::twoSum<V>(cAxisLo, sign * g.radiusLo, loHi, loLo);
+    exact::twoSum<V>(hi, (lo + loHi) + loLo, hi2, e);
+    exact::twoSum<V>(hi2, -sign * drop, hi, lo);
+    exact::twoSum<V>(hi, lo + e, hi, lo);
     // In cells, plus the frame origin's fraction of a cell.
     const Vec3x<T>& fh = g.checkerFrameFraction;
     const Vec3x<T>& fl = g.checkerFrameFractionLo;

@@ -51,6 +51,28 @@ Acceleration environmentAcceleration() {
     return choice;
 }
 
+// The camera position moved onto a grid of 2^-24 of the camera's distance to
+// its look-at point (a power of two, so scaling the scene by one scales the
+// frame with it, bit for bit). Why not the position itself: a coordinate such
+// as 0.35 has all 53 bits, so a sphere's centre relative to it (the seed's
+// floor: -99999.5 - 0.35) needs 70, and a float pair holds 48. What it drops
+// moved the floor's top by 6e-11, more than the floor falls below the checker's
+// cell boundary near where it touches it, and float coloured a pixel of every
+// 640x480 seed render from the wrong cell. Relative to a point on the grid, a
+// centre on the grid (-99999.5) within 2^24 distances of the camera is exact.
+Vec3 frameOriginNear(const Camera& camera) {
+    const double distance = glm::length(camera.lookAt - camera.position);
+    if (!(distance > 0.0) || !std::isfinite(distance)) return camera.position;
+    const int step = std::ilogb(distance) - 24;  // the grid is 2^step
+    Vec3 origin = camera.position;
+    for (int i = 0; i < 3; ++i) {
+        const double steps = std::ldexp(origin[i], -step);
+        if (std::isfinite(steps) && std::fabs(steps) < 0x1p52)
+            origin[i] = std::ldexp(std::nearbyint(steps), step);
+    }
+    return origin;
+}
+
 }  // namespace
 
 void useAcceleration(Acceleration choice) {
@@ -163,9 +185,9 @@ PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache) {
     // The frame is centred on the camera: what the picture needs is where things
     // are relative to the eye, which T then holds to its full precision however
     // far the scene lies from the world origin.
-    s.frameOrigin = scene.camera.position;
+    s.frameOrigin = frameOriginNear(scene.camera);
     s.camera = makeCameraBasis<T>(scene.camera, r.width, r.height);
-    s.camera.origin = Vec<T>(T(0));
+    s.camera.origin = Vec<T>(scene.camera.position - s.frameOrigin);
     s.width = r.width;
     s.height = r.height;
     s.maxDepth = r.maxDepth;

@@ -26,10 +26,10 @@
 #include <iostream>
 #include <sstream>
 #include <string>
-#include <tuple>
 
 #include <gtest/gtest.h>
 
+#include "camera/view_projection.h"
 #include "image/image_compare.h"
 #include "image/image_io.h"
 #include "scene/scene_transform.h"
@@ -189,30 +189,21 @@ TEST(NumericsInvariance, FloatAgainstDouble_SeedFloorWhereItTouchesACellBoundary
         const Image f = test::renderImage(scene);
         scene.render.precision = Precision::Double;
         const Image d = test::renderImage(scene);
-        // Where the camera sees the tangent point, by SPEC §1's projection.
-        const CameraBasis<double> view = makeCameraBasis<double>(scene.camera, 640, 480);
-        const Vec3 toPoint = Vec3(0.0, -0.5, 0.0) - eye;
-        const double ahead = glm::dot(toPoint, view.forward);
-        const double across = glm::dot(toPoint, view.right) / ahead / view.tanHalfFov / view.aspect;
-        const double upward = glm::dot(toPoint, view.up) / ahead / view.tanHalfFov;
-        const int centreX = int((across + 1.0) / 2.0 * 640),
-                  centreY = int((1.0 - upward) / 2.0 * 480);
+        const auto seen = projectToImage(scene.camera, 640, 480, Vec3(0.0, -0.5, 0.0));
+        ASSERT_TRUE(seen) << "the tangent point is behind the camera";
+        const int centreX = int(seen->x), centreY = int(seen->y);
         ASSERT_TRUE(centreX >= 0 && centreX < 640 && centreY >= 0 && centreY < 480)
             << "the tangent point is out of the picture: (" << centreX << ", " << centreY << ")";
-        float largest = 0.0f;
-        int worstX = 0, worstY = 0;
-        for (int y = std::max(0, centreY - 20); y < std::min(480, centreY + 20); ++y) {
-            for (int x = std::max(0, centreX - 30); x < std::min(640, centreX + 30); ++x) {
-                const float difference = displayDifference(f.pixel(x, y), d.pixel(x, y));
-                if (difference > largest)
-                    std::tie(largest, worstX, worstY) = std::tuple(difference, x, y);
-            }
-        }
-        std::cout << "[ MEASURED ] seed 640x480 from (" << eye.x << ", " << eye.y << ", " << eye.z
-                  << "), around the floor's tangent point (" << centreX << ", " << centreY
-                  << "), float against double: largest " << largest * 255 << "/255 at (" << worstX
-                  << ", " << worstY << ")" << std::endl;
-        EXPECT_LE(largest, 2 * kDisplayStep) << "at pixel (" << worstX << ", " << worstY << ")";
+        test::Worst largest;
+        for (int y = std::max(0, centreY - 20); y < std::min(480, centreY + 20); ++y)
+            for (int x = std::max(0, centreX - 30); x < std::min(640, centreX + 30); ++x)
+                largest.note(displayDifference(f.pixel(x, y), d.pixel(x, y)),
+                             std::to_string(x) + ", " + std::to_string(y));
+        std::cout << "[ MEASURED ] seed 640x480 from " << test::str(eye)
+                  << ", around the floor's tangent point (" << centreX << ", " << centreY
+                  << "), float against double: largest " << largest.value * 255 << "/255 at ("
+                  << largest.where << ")" << std::endl;
+        EXPECT_LE(largest.value, 2 * kDisplayStep) << "at pixel (" << largest.where << ")";
     }
 }
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-#include "image/image_io.h"
+#include "image/image_files.h"
 #include "scene/scene_io.h"
 
 namespace whitted {

@@ -33,7 +33,6 @@
 #include "cli_main.h"
 #include "farm/plan.h"
 #include "farm/slurm.h"
-#include "image/image_io.h"
 #include "plan_file.h"
 #include "render_flags.h"
 #include "render_quality.h"

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "image/image_io.h"
+#include "image/image_files.h"
 
 namespace whitted::farm {
 

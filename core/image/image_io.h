@@ -10,25 +10,11 @@
 #include <vector>
 
 #include "image/image.h"
+#include "image/image_files.h"
 #include "image/image_metadata.h"
 #include "scene/scene.h"
 
 namespace whitted {
-
-enum class ImageFormat { Png, Jpeg, Tiff, Exr, Hdr };
-
-struct ImageFormatInfo {
-    ImageFormat format;
-    std::string_view name;        // for menus and messages
-    std::string_view extensions;  // space-separated, lower case, with the dot
-    bool isFloat;                 // linear float pixels; otherwise 8-bit sRGB
-};
-
-// PNG and JPEG: 8-bit sRGB. TIFF and OpenEXR: 32-bit float. Radiance HDR: RGBE.
-const std::vector<ImageFormatInfo>& imageFormats();
-
-// The format for a file name's extension (case-insensitive), or nothing.
-std::optional<ImageFormatInfo> imageFormatFor(const std::filesystem::path& file);
 
 class ImageIoError : public std::runtime_error {
   public:
@@ -63,10 +49,6 @@ void writeImagePart(const ImagePart& part, const std::filesystem::path& file,
 // readImage() with where the pixels lie: an OpenEXR's data and display windows;
 // for any other file the whole picture.
 ImagePart readImagePart(const std::filesystem::path& file);
-
-// The file of frame `frame` of an animation: out.0007.png for frame 7 of
-// out.png; frame 0 is a still, the file itself.
-std::filesystem::path frameFile(const std::filesystem::path& file, int frame);
 
 // The version of the OpenImageIO library in use, "2.4.7" (for About boxes).
 std::string openImageIOVersion();

@@ -25,6 +25,8 @@ packages=(
   clang libclang-rt-14-dev
   # the render farm's tests: a single-node Slurm (scripts/local-slurm.sh)
   slurmctld slurmd slurm-client munge
+  # whole-process timings in docs (benchmarks/whole_run_presets.sh)
+  hyperfine
 )
 
 missing=()

@@ -47,6 +47,14 @@ constexpr double kMostRenderPixelsJudged = 0.25;
 constexpr double kOneThreadProbeSeconds = 0.5e-3;
 // How much deeper the render a depth is measured against goes.
 constexpr int kLookAhead = 3;
+// Below this PSNR (Draft's 20 dB) the depth search's first probe render
+// reaches 2 * kLookAhead - 1 levels, not kLookAhead: such a target's depth
+// cut was 1 to 3 on every scene measured (docs/quality.md, "One sample where
+// it does"), and depth 1 or 2 took two renders, to 3 and then to 7 (for 1
+// against 4); one render to 5 measures depths 0 to 2 against three deeper.
+// Stricter targets cut deeper, where a longer first render would only add
+// its levels to the one after it.
+constexpr double kLongFirstProbeBelowDb = 30.0;
 // The renders at the picture's own size (checkDepthAtPictureSize(), and the
 // samples of largestWithSamples()) follow no ray whose path passes on less
 // than this weight: at most about a code near black for a ray of radiance 3.
@@ -99,19 +107,21 @@ class ProbeRenders {
         : probe_(probeScene(scene, psnrDb)),
           renderWidth_(scene.render.width),
           renderHeight_(scene.render.height),
+          firstReach_(psnrDb < kLongFirstProbeBelowDb ? 2 * kLookAhead - 1 : kLookAhead),
           stop_(stop) {}
 
     const Scene& scene() const { return probe_; }
 
     // The probe's centres at `depth`, in the scene's precision. Not yet
     // traced: traced with those kLookAhead deeper, which the depth search
-    // compares it with (and then goes on to), in one render. It costs what
-    // the deepest of them costs: the search to depth 8 took twelve renders,
-    // now three.
+    // compares it with (and then goes on to), in one render (the search's
+    // first, from depth 0, with firstReach_). It costs what the deepest of
+    // them costs: the search to depth 8 took twelve renders, now three.
     const Image& at(int depth, QualityPlan& plan) {
         auto found = byDepth_.find(depth);
         if (found != byDepth_.end()) return found->second;
-        const int deepest = std::min(kMaxDepth, depth + kLookAhead);
+        const int reach = depth == 0 && byDepth_.empty() ? firstReach_ : kLookAhead;
+        const int deepest = std::min(kMaxDepth, depth + reach);
         std::vector<int> shallower;
         for (int d = depth; d < deepest; ++d)
             if (!byDepth_.count(d)) shallower.push_back(d);
@@ -222,6 +232,7 @@ class ProbeRenders {
 
     Scene probe_;
     int renderWidth_, renderHeight_;
+    int firstReach_;  // levels past the depth asked that the first render traces
     const StopPredicate& stop_;
     bool validated_ = false;
     bool oneThread_ = true;

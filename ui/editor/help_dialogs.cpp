@@ -1,5 +1,7 @@
 #include "editor/help_dialogs.h"
 
+#include <algorithm>
+
 #include <QAbstractButton>
 #include <QAbstractSlider>
 #include <QAbstractSpinBox>
@@ -15,6 +17,8 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScreen>
+#include <QScrollBar>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -77,6 +81,23 @@ QList<ControlRow> controlRows(QWidget* window, const QList<QPair<QString, QStrin
     return rows;
 }
 
+namespace {
+
+// Wide enough for every row's text (the mouse's rows are long), so that none
+// of it hides behind a horizontal scroll bar, as far as the screen allows;
+// at least 620 pixels.
+int keyboardHelpWidth(const QWidget* window, const QTableWidget* table, const QLayout* layout,
+                      int columnsWidth) {
+    const QMargins margins = layout->contentsMargins();
+    int width = columnsWidth + table->verticalScrollBar()->sizeHint().width() +
+                2 * table->frameWidth() + margins.left() + margins.right();
+    if (const QScreen* screen = window ? window->screen() : nullptr)
+        width = std::min(width, screen->availableGeometry().width() * 9 / 10);
+    return std::max(620, width);
+}
+
+}  // namespace
+
 QDialog* showKeyboardHelp(QWidget* window, const QList<ControlRow>& rows) {
     auto* dialog = new QDialog(window);
     dialog->setObjectName(QStringLiteral("keyboardHelp"));
@@ -94,13 +115,14 @@ QDialog* showKeyboardHelp(QWidget* window, const QList<ControlRow>& rows) {
         table->setItem(r, 2, new QTableWidgetItem(rows[r].action));
     }
     table->resizeColumnsToContents();
+    const int columnsWidth = table->horizontalHeader()->length();
     table->horizontalHeader()->setStretchLastSection(true);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, dialog);
     QObject::connect(buttons, &QDialogButtonBox::rejected, dialog, &QDialog::close);
     auto* layout = new QVBoxLayout(dialog);
     layout->addWidget(table);
     layout->addWidget(buttons);
-    dialog->resize(620, 560);
+    dialog->resize(keyboardHelpWidth(window, table, layout, columnsWidth), 560);
     dialog->open();
     return dialog;
 }

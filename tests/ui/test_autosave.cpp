@@ -132,6 +132,29 @@ TEST_F(AutosaveTest, KilledEditor_NextStartOffersAndRestoresTheEdits) {
     EXPECT_EQ(window.findChild<QMessageBox*>("recoveryOffer"), nullptr);
 }
 
+// The copy is of seed.json, the editor was opened on another file: the offer
+// says that restoring replaces that one, and Discard leaves it open.
+TEST_F(AutosaveTest, CopyOfAnotherFile_OfferSaysItReplacesTheOneOpen) {
+    QProcess child;
+    child.start(QStringLiteral(WHITTED_CRASH_CHILD_EXE), {scenePath, QStringLiteral("0.444")});
+    ASSERT_TRUE(child.waitForReadyRead(30000));
+    child.kill();
+    ASSERT_TRUE(child.waitForFinished(10000));
+
+    const QString otherPath =
+        QString::fromStdString(test::saveSceneIn(dir, original, "other.json"));
+    MainWindow window;
+    ASSERT_TRUE(window.openFile(otherPath));
+    ASSERT_EQ(window.offerRecovery(), 1);
+    auto* box = window.findChild<QMessageBox*>("recoveryOffer");
+    ASSERT_NE(box, nullptr);
+    EXPECT_TRUE(box->text().contains("changes to seed.json")) << box->text().toStdString();
+    EXPECT_TRUE(box->text().contains("in place of other.json")) << box->text().toStdString();
+    box->findChild<QPushButton*>("discardButton")->click();
+    EXPECT_EQ(window.document()->filePath(), otherPath);
+    EXPECT_FALSE(window.document()->isModified());
+}
+
 TEST_F(AutosaveTest, KilledEditor_DiscardKeepsTheSceneAndRemovesTheCopy) {
     QProcess child;
     child.start(QStringLiteral(WHITTED_CRASH_CHILD_EXE), {scenePath, QStringLiteral("0.333")});
@@ -144,6 +167,8 @@ TEST_F(AutosaveTest, KilledEditor_DiscardKeepsTheSceneAndRemovesTheCopy) {
     ASSERT_EQ(window.offerRecovery(), 1);
     auto* box = window.findChild<QMessageBox*>("recoveryOffer");
     ASSERT_NE(box, nullptr);
+    // The copy is of the file open: nothing to say about replacing it.
+    EXPECT_FALSE(box->text().contains("in place of")) << box->text().toStdString();
     box->findChild<QPushButton*>("discardButton")->click();
     EXPECT_EQ(window.document()->scene(), original);
     EXPECT_FALSE(window.document()->isModified());

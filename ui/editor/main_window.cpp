@@ -280,11 +280,19 @@ int MainWindow::offerRecovery() {
     const Recovery& r = waiting.front();
     const QString what =
         r.originalPath.isEmpty() ? tr("an untitled scene") : QFileInfo(r.originalPath).fileName();
+    // The copy may be of another scene than the one just opened: say that
+    // restoring replaces it, so that nobody loses track of which file is shown.
+    const QString instead =
+        r.originalPath == doc_.filePath()
+            ? QString()
+            : tr(" Restoring opens it in place of %1.")
+                  .arg(doc_.filePath().isEmpty() ? tr("the new scene")
+                                                 : QFileInfo(doc_.filePath()).fileName());
     auto* box = new QMessageBox(
         QMessageBox::Question, tr("Restore unsaved changes"),
         tr("Whitted stopped without saving changes to %1. A copy from %2 was kept.\n\n"
-           "Restore it? The restored scene is marked unsaved; undo returns to the file.")
-            .arg(what, QLocale().toString(r.written.toLocalTime(), QLocale::ShortFormat)),
+           "Restore it? The restored scene is marked unsaved; undo returns to the file.%3")
+            .arg(what, QLocale().toString(r.written.toLocalTime(), QLocale::ShortFormat), instead),
         QMessageBox::NoButton, this);
     box->setObjectName(QStringLiteral("recoveryOffer"));
     box->setAttribute(Qt::WA_DeleteOnClose);

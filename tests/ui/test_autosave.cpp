@@ -50,6 +50,20 @@ class AutosaveTest : public ::testing::Test {
         return ::testing::AssertionFailure() << "no recovery copy within 5 s";
     }
 
+    // The crash child's editor on scenePath, its first sphere's radius set to
+    // `radius` and its recovery copy written, then killed with SIGKILL.
+    ::testing::AssertionResult killedEditorLeftACopy(const char* radius) const {
+        QProcess child;
+        child.start(QStringLiteral(WHITTED_CRASH_CHILD_EXE),
+                    {scenePath, QString::fromLatin1(radius)});
+        if (!child.waitForReadyRead(30000))
+            return ::testing::AssertionFailure() << "the child never wrote its copy";
+        child.kill();
+        if (!child.waitForFinished(10000))
+            return ::testing::AssertionFailure() << "the killed child did not end";
+        return ::testing::AssertionSuccess();
+    }
+
     test::TempDir dir;
     QString recoveryDir, scenePath;
     Scene original;
@@ -135,11 +149,7 @@ TEST_F(AutosaveTest, KilledEditor_NextStartOffersAndRestoresTheEdits) {
 // The copy is of seed.json, the editor was opened on another file: the offer
 // says that restoring replaces that one, and Discard leaves it open.
 TEST_F(AutosaveTest, CopyOfAnotherFile_OfferSaysItReplacesTheOneOpen) {
-    QProcess child;
-    child.start(QStringLiteral(WHITTED_CRASH_CHILD_EXE), {scenePath, QStringLiteral("0.444")});
-    ASSERT_TRUE(child.waitForReadyRead(30000));
-    child.kill();
-    ASSERT_TRUE(child.waitForFinished(10000));
+    ASSERT_TRUE(killedEditorLeftACopy("0.444"));
 
     const QString otherPath =
         QString::fromStdString(test::saveSceneIn(dir, original, "other.json"));
@@ -156,11 +166,7 @@ TEST_F(AutosaveTest, CopyOfAnotherFile_OfferSaysItReplacesTheOneOpen) {
 }
 
 TEST_F(AutosaveTest, KilledEditor_DiscardKeepsTheSceneAndRemovesTheCopy) {
-    QProcess child;
-    child.start(QStringLiteral(WHITTED_CRASH_CHILD_EXE), {scenePath, QStringLiteral("0.333")});
-    ASSERT_TRUE(child.waitForReadyRead(30000));
-    child.kill();
-    ASSERT_TRUE(child.waitForFinished(10000));
+    ASSERT_TRUE(killedEditorLeftACopy("0.333"));
 
     MainWindow window;
     ASSERT_TRUE(window.openFile(scenePath));

@@ -50,17 +50,25 @@ class AutosaveTest : public ::testing::Test {
         return ::testing::AssertionFailure() << "no recovery copy within 5 s";
     }
 
-    // The crash child's editor on scenePath, its first sphere's radius set to
-    // `radius` and its recovery copy written, then killed with SIGKILL.
+    // The real editor in a child process on scenePath, its first sphere's
+    // radius set to `radius` and its recovery copy written, then killed with
+    // SIGKILL.
     ::testing::AssertionResult killedEditorLeftACopy(const char* radius) const {
         QProcess child;
+        child.setProcessChannelMode(QProcess::ForwardedErrorChannel);
         child.start(QStringLiteral(WHITTED_CRASH_CHILD_EXE),
                     {scenePath, QString::fromLatin1(radius)});
+        if (!child.waitForStarted(10000))
+            return ::testing::AssertionFailure() << "the child did not start";
         if (!child.waitForReadyRead(30000))
             return ::testing::AssertionFailure() << "the child never wrote its copy";
+        if (child.readLine().trimmed() != QByteArray("ready"))
+            return ::testing::AssertionFailure() << "the child did not say it was ready";
         child.kill();
         if (!child.waitForFinished(10000))
             return ::testing::AssertionFailure() << "the killed child did not end";
+        if (child.exitStatus() != QProcess::CrashExit)
+            return ::testing::AssertionFailure() << "the child was not killed";
         return ::testing::AssertionSuccess();
     }
 
@@ -115,15 +123,7 @@ TEST_F(AutosaveTest, NormalExit_LeavesNothingBehind) {
 // written; the next editor offers the copy, restores it on top of the file
 // (unsaved; undo shows the file) and removes it.
 TEST_F(AutosaveTest, KilledEditor_NextStartOffersAndRestoresTheEdits) {
-    QProcess child;
-    child.setProcessChannelMode(QProcess::ForwardedErrorChannel);
-    child.start(QStringLiteral(WHITTED_CRASH_CHILD_EXE), {scenePath, QStringLiteral("0.777")});
-    ASSERT_TRUE(child.waitForStarted(10000));
-    ASSERT_TRUE(child.waitForReadyRead(30000)) << "the child never wrote its copy";
-    ASSERT_EQ(child.readLine().trimmed(), QByteArray("ready"));
-    child.kill();  // SIGKILL
-    ASSERT_TRUE(child.waitForFinished(10000));
-    EXPECT_EQ(child.exitStatus(), QProcess::CrashExit);
+    ASSERT_TRUE(killedEditorLeftACopy("0.777"));
 
     MainWindow window;
     window.show();

@@ -31,6 +31,11 @@ namespace whitted::ui {
 namespace {
 constexpr int kMaxRecentFiles = 8;
 const char* kSceneFilter = "Whitted scenes (*.json);;All files (*)";
+
+// A scene's file name for the user, or `untitled` for a scene never saved.
+QString sceneName(const QString& path, const QString& untitled) {
+    return path.isEmpty() ? untitled : QFileInfo(path).fileName();
+}
 }  // namespace
 
 Scene MainWindow::newSceneTemplate() {
@@ -278,16 +283,13 @@ int MainWindow::offerRecovery() {
     const std::vector<Recovery> waiting = Autosave::orphans(autosave_->directory());
     if (waiting.empty()) return 0;
     const Recovery& r = waiting.front();
-    const QString what =
-        r.originalPath.isEmpty() ? tr("an untitled scene") : QFileInfo(r.originalPath).fileName();
+    const QString what = sceneName(r.originalPath, tr("an untitled scene"));
     // The copy may be of another scene than the one just opened: say that
     // restoring replaces it, so that nobody loses track of which file is shown.
-    const QString instead =
-        r.originalPath == doc_.filePath()
-            ? QString()
-            : tr(" Restoring opens it in place of %1.")
-                  .arg(doc_.filePath().isEmpty() ? tr("the new scene")
-                                                 : QFileInfo(doc_.filePath()).fileName());
+    const QString instead = r.originalPath == doc_.filePath()
+                                ? QString()
+                                : tr(" Restoring opens it in place of %1.")
+                                      .arg(sceneName(doc_.filePath(), tr("the new scene")));
     auto* box = new QMessageBox(
         QMessageBox::Question, tr("Restore unsaved changes"),
         tr("Whitted stopped without saving changes to %1. A copy from %2 was kept.\n\n"
@@ -341,8 +343,7 @@ void MainWindow::showError(const QString& title, const QString& message) {
 }
 
 void MainWindow::updateTitle() {
-    const QString name =
-        doc_.filePath().isEmpty() ? tr("Untitled") : QFileInfo(doc_.filePath()).fileName();
+    const QString name = sceneName(doc_.filePath(), tr("Untitled"));
     setWindowTitle(tr("%1[*] — Whitted").arg(name));
     setWindowModified(doc_.isModified());
 }

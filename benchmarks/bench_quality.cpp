@@ -4,10 +4,8 @@
 // kDeepReferenceDepth), against the fixed preset's settings
 // (render_presets.h) and the fewest fixed samples that would meet the target
 // at the chosen depth.
-// Times of a few milliseconds say little alone on a shared machine: where ours
-// and the preset together take under a second, they are run again in pairs,
-// one after the other, and the medians are printed with the median of the
-// pairs' ratios.
+// Where ours and the preset together take under a second, they are timed
+// again in pairs (paired_times.h).
 // Usage: bench_quality [WIDTH HEIGHT [times [SCENE]]] (default 320 240).
 // Prints a Markdown table; `times` prints only the paired times of Draft and
 // Preview, of every scene or of the one named (seed, glass, ...).
@@ -20,8 +18,10 @@
 #include "analysis/quality_check.h"
 #include "analysis/render_presets.h"
 #include "bench_scenes.h"
+#include "paired_times.h"
 
 using namespace whitted;
+using namespace whitted::bench;
 
 namespace {
 
@@ -33,39 +33,6 @@ std::string measured(const ErrorStats& e) {
     char text[64];
     std::snprintf(text, sizeof text, "%.1f dB, %.0f codes", e.psnrSrgb8, e.largest);
     return text;
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
-}
-
-struct PairedTimes {
-    double ours = 0.0, preset = 0.0, ratio = 0.0;  // medians
-    int pairs = 1;
-};
-
-// Ours (planning included) and the preset, timed in pairs until about
-// `seconds` have gone, at least `fewest` and at most 15 pairs; the first pair
-// is the one measured.
-PairedTimes pairedTimes(const Scene& scene, const QualityTarget& target, const Scene& preset,
-                        const Image& reference, double oursFirst, double presetFirst,
-                        int fewest = 1, double seconds = 1.0) {
-    std::vector<double> ours{oursFirst}, fixed{presetFirst}, ratios{oursFirst / presetFirst};
-    const int pairs = std::clamp(int(seconds / (oursFirst + presetFirst)), fewest, 15);
-    for (int i = 1; i < pairs; ++i) {
-        ours.push_back(checkQuality(scene, target, reference).seconds);
-        fixed.push_back(checkFixed(preset, reference).seconds);
-        ratios.push_back(ours.back() / fixed.back());
-    }
-    return {median(ours), median(fixed), median(ratios), pairs};
-}
-
-// The scene with the preset's samples and depth.
-Scene withPreset(Scene scene, const RenderPreset& preset) {
-    scene.render.samplesPerPixel = preset.samplesPerPixel;
-    scene.render.maxDepth = preset.maxDepth;
-    return scene;
 }
 
 void row(const NamedScene& n, const QualityTarget& target, const RenderPreset& preset,
@@ -83,7 +50,7 @@ void row(const NamedScene& n, const QualityTarget& target, const RenderPreset& p
         n.name.c_str(), target.name.c_str(), c.plan.maxDepth, c.plan.depthShort ? "*" : "",
         c.meanSamples, measured(c.error).c_str(), c.estimatedPsnr, c.met ? "yes" : "**no**",
         c.rays / 1e6, times.ours, c.planSeconds, measured(fixed.error).c_str(),
-        meetsTarget(fixed.error, target) ? "yes" : "**no**", fixed.rays / 1e6, times.preset,
+        meetsTarget(fixed.error, target) ? "yes" : "**no**", fixed.rays / 1e6, times.fixed,
         times.ratio, times.pairs);
     if (fewest.samples > 0)
         std::printf("%d spp: %.2fM, %.3f s |\n", fewest.samples, fewest.rays / 1e6, fewest.seconds);
@@ -113,7 +80,7 @@ void printTimes(int width, int height, const std::vector<NamedScene>& timed) {
                             checkFixed(preset, presetImage).seconds, 3, 4.0);
             std::printf("| %s | %s | %d | %.1f | %.4f s (%.4f) | %.4f s | %.2f (%d) |\n",
                         n.name.c_str(), targets[i].name.c_str(), c.plan.maxDepth, c.meanSamples,
-                        times.ours, c.planSeconds, times.preset, times.ratio, times.pairs);
+                        times.ours, c.planSeconds, times.fixed, times.ratio, times.pairs);
             std::fflush(stdout);
         }
     }

@@ -16,18 +16,29 @@
 // depth 24, 160x120) prints how far the field's picture is from converging
 // in depth: each depth against the one before, the same sample positions in
 // both, so the difference is the depth's alone, and the seconds each took.
+//
+// bench_quality_fields presets FIRST LAST [WIDTH] (default 160) times Draft,
+// Preview and Final on those fields against the fixed presets
+// (render_presets.h), in pairs (paired_times.h): where the preset meets the
+// target, against the preset; where it misses, against the fixed setting
+// that would meet it, the fewest samples a pixel (a power of two up to 256)
+// meeting it at the preset's depth or at the depth ours chose, whichever
+// took less time.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <utility>
 
 #include "analysis/quality_check.h"
 #include "image/image_compare.h"
 #include "image/image_error.h"
+#include "paired_times.h"
 #include "sphere_field.h"
 #include "tracer/renderer.h"
 
 using namespace whitted;
+using namespace whitted::bench;
 
 namespace {
 
@@ -132,12 +143,105 @@ int printDepthSeries(int seed, int samples, int deepest) {
     return 0;
 }
 
+// The fixed setting that would meet the target where the preset does not:
+// the fewer seconds of the fewest samples meeting it at the preset's depth
+// and at `ourDepth`; samples 0 where neither meets it up to 256.
+std::pair<FixedCheck, int> fixedThatWouldMeet(const Scene& scene, const QualityTarget& target,
+                                              int presetDepth, int ourDepth,
+                                              const Image& reference) {
+    std::pair<FixedCheck, int> best{
+        fewestFixedSamplesMeeting(scene, target, presetDepth, reference), presetDepth};
+    if (ourDepth == presetDepth) return best;
+    const FixedCheck atOurs = fewestFixedSamplesMeeting(scene, target, ourDepth, reference);
+    if (atOurs.samples > 0 && (best.first.samples == 0 || atOurs.seconds < best.first.seconds))
+        best = {atOurs, ourDepth};
+    return best;
+}
+
+struct PresetTally {
+    int presetMet = 0, oursNoSlower = 0;   // where the preset meets the target
+    int presetMissed = 0, fixedFound = 0;  // where it does not
+    int oursMetWherePresetMissed = 0, oursNoSlowerThanFound = 0;
+};
+
+void presetRow(int seed, const Scene& scene, const QualityTarget& target,
+               const RenderPreset& preset, const Image& reference, PresetTally& tally) {
+    const QualityCheck c = checkQuality(scene, target, reference);
+    const Scene fixedScene = withPreset(scene, preset);
+    const FixedCheck fixed = checkFixed(fixedScene, reference);
+    const bool presetMeets = meetsTarget(fixed.error, target);
+    std::printf(
+        "| seed %d, %zu balls | %s | %d%s, %.1f spp: %.1f dB, %.0f codes, %s | %.1f dB, "
+        "%.0f codes, %s | ",
+        seed, scene.spheres.size() - 1, target.name.c_str(), c.plan.maxDepth,
+        c.plan.depthShort ? "*" : "", c.meanSamples, c.error.psnrSrgb8, c.error.largest,
+        c.met ? "met" : "**missed**", fixed.error.psnrSrgb8, fixed.error.largest,
+        presetMeets ? "met" : "**missed**");
+    if (presetMeets) {
+        const PairedTimes t =
+            pairedTimes(scene, target, fixedScene, reference, c.seconds, fixed.seconds, 3, 2.0);
+        ++tally.presetMet;
+        tally.oursNoSlower += t.ratio <= 1.0;
+        std::printf("%.3f s against %.3f s: %.2f (%d) | |\n", t.ours, t.fixed, t.ratio, t.pairs);
+        return;
+    }
+    ++tally.presetMissed;
+    tally.oursMetWherePresetMissed += c.met;
+    const auto [would, depth] =
+        fixedThatWouldMeet(scene, target, preset.maxDepth, c.plan.maxDepth, reference);
+    if (would.samples == 0) {
+        std::printf(" | none up to 256 spp at depth %d or %d |\n", preset.maxDepth,
+                    c.plan.maxDepth);
+        return;
+    }
+    Scene wouldScene = scene;
+    wouldScene.render.samplesPerPixel = would.samples;
+    wouldScene.render.maxDepth = depth;
+    const PairedTimes t =
+        pairedTimes(scene, target, wouldScene, reference, c.seconds, would.seconds, 3, 2.0);
+    ++tally.fixedFound;
+    tally.oursNoSlowerThanFound += t.ratio <= 1.0;
+    std::printf(" | %d spp, depth %d: %.3f s against ours %.3f s: %.2f (%d) |\n", would.samples,
+                depth, t.fixed, t.ours, t.ratio, t.pairs);
+}
+
+int printPresets(int first, int last, int width) {
+    std::printf(
+        "%dx%d, float; reference: double, 512 spp, depth %d; ours includes planning; "
+        "times are medians of pairs, ratios ours over fixed\n\n",
+        width, width * 3 / 4, kDeepReferenceDepth);
+    std::printf(
+        "| field | target | ours: depth, mean spp, measured | preset | time against the "
+        "preset | where it misses: the fixed setting that would meet it |\n"
+        "|---|---|---|---|---|---|\n");
+    const QualityTarget targets[] = {draftQuality(), previewQuality(), finalQuality()};
+    PresetTally tally;
+    for (int seed = first; seed <= last; ++seed) {
+        const Scene scene = field(seed, width);
+        const Image reference = convergedReference(scene, 512, kDeepReferenceDepth);
+        for (int i = 0; i < 3; ++i)
+            presetRow(seed, scene, targets[i], kRenderPresets[std::size_t(i)], reference, tally);
+        std::fflush(stdout);
+    }
+    std::printf("\nThe preset met its target in %d renders; ours no slower in %d of them.\n",
+                tally.presetMet, tally.oursNoSlower);
+    std::printf(
+        "The preset missed in %d; ours met %d of those; a fixed setting up to 256 spp met "
+        "it in %d, ours no slower than it in %d.\n",
+        tally.presetMissed, tally.oursMetWherePresetMissed, tally.fixedFound,
+        tally.oursNoSlowerThanFound);
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     if (argc > 2 && std::strcmp(argv[1], "depths") == 0)
         return printDepthSeries(std::atoi(argv[2]), argc > 3 ? std::atoi(argv[3]) : 8,
                                 argc > 4 ? std::atoi(argv[4]) : 24);
+    if (argc > 3 && std::strcmp(argv[1], "presets") == 0)
+        return printPresets(std::atoi(argv[2]), std::atoi(argv[3]),
+                            argc > 4 ? std::atoi(argv[4]) : 160);
     const int first = argc > 2 ? std::atoi(argv[1]) : 1;
     const int last = argc > 2 ? std::atoi(argv[2]) : 8;
     const int width = argc > 3 ? std::atoi(argv[3]) : 160;

@@ -8,6 +8,7 @@
 #include <QComboBox>
 #include <QLabel>
 #include <QRegularExpression>
+#include <QSpinBox>
 #include <QStatusBar>
 #include <QTest>
 
@@ -105,9 +106,16 @@ TEST_F(QualityEditorTest, FinalShortcut_RendersToFinalsTarget_MeasuredAgainstACo
         EXPECT_FALSE(text.contains(QRegularExpression(QStringLiteral("Pass \\d+ of"))))
             << text.toStdString();
     }
-    // Depth and samples are the target's to choose: their fields rest.
-    EXPECT_FALSE(child<QWidget>("renderMaxDepth")->isEnabled());
-    EXPECT_FALSE(child<QWidget>("renderSamples")->isEnabled());
+    // Depth and samples are the target's to choose: their fields rest, and
+    // say beside the settings' numbers that the render does not use them.
+    for (const char* name : {"renderMaxDepth", "renderSamples"}) {
+        auto* field = child<QSpinBox>(name);
+        EXPECT_FALSE(field->isEnabled()) << name;
+        EXPECT_EQ(field->text(),
+                  QStringLiteral("%1  (not used while rendering to Final)").arg(field->value()))
+            << name;
+    }
+    EXPECT_EQ(child<QSpinBox>("renderMaxDepth")->value(), doc->scene().render.maxDepth);
     // The predictions are for settings: with a target the Render tab says so.
     const QString predicted = child<QLabel>("predictedTime")->text();
     EXPECT_TRUE(predicted.startsWith(QStringLiteral("not predicted"))) << predicted.toStdString();
@@ -273,6 +281,8 @@ TEST_F(QualityEditorTest, RenderToTheSettings_AfterATarget_RendersTheScenesSampl
     EXPECT_FALSE(window->qualityChoice()->target().has_value());
     EXPECT_TRUE(child<QWidget>("renderMaxDepth")->isEnabled());
     EXPECT_TRUE(child<QWidget>("renderSamples")->isEnabled());
+    EXPECT_EQ(child<QSpinBox>("renderSamples")->text(),
+              QString::number(doc->scene().render.samplesPerPixel));
     const RenderFrame& frame = log->lastComplete;
     EXPECT_FALSE(frame.qualityPlan);
     EXPECT_EQ(frame.samples, doc->scene().render.samplesPerPixel);  // Draft's: 1

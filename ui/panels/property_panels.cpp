@@ -225,11 +225,19 @@ RenderSettingsPanel::RenderSettingsPanel(SceneDocument* doc, TradeoffRecord* rec
     if (record && quality) {
         new PresetControls(doc_, record, quality, form);
         // A target chooses depth and samples at each render: the fields would
-        // change nothing the user sees, so they rest until the settings rule again.
+        // change nothing the user sees, so they rest until the settings rule
+        // again, and say so beside their numbers, which are the settings' and
+        // not what the render uses (greyed "8" under Final, rendered at 6, read
+        // as the depth of the picture).
         const auto followTarget = [this, quality] {
             const bool settings = !quality->target();
+            const QString unused = settings
+                                       ? QString()
+                                       : tr("  (not used while rendering to %1)")
+                                             .arg(QString::fromStdString(quality->target()->name));
             for (const char* name : {"renderMaxDepth", "renderSamples"}) {
                 auto* field = findChild<IntField*>(QLatin1String(name));
+                field->setSuffix(unused);
                 if (field->isEnabled() == settings) continue;
                 field->setEnabled(settings);
                 // The field's own tooltip comes back with the settings.

@@ -199,6 +199,24 @@ TEST_F(EditorCommandsTest, CtrlZ_WithFocusInEditedField_UndoesTheSceneEdit) {
 }
 
 // Item 3: a name typed without ".json" is saved as name.json.
+// Shift+A adds to the list shown, as in Blender; typed into a text field it
+// stays a capital A and adds nothing.
+TEST_F(EditorCommandsTest, ShiftA_AddsToTheListShown_InTheFilterItIsTyped) {
+    const std::size_t spheres = doc->scene().spheres.size();
+    view->setFocus();
+    QTest::keyClick(view, Qt::Key_A, Qt::ShiftModifier);
+    ASSERT_EQ(doc->scene().spheres.size(), spheres + 1);
+    EXPECT_EQ(action(QStringLiteral("addAction"))->shortcut(),
+              QKeySequence(QStringLiteral("Shift+A")));
+
+    auto* filter = window->findChild<QLineEdit*>(QStringLiteral("sphereListFilter"));
+    ASSERT_NE(filter, nullptr);
+    filter->setFocus();
+    QTest::keyClick(filter, 'A', Qt::ShiftModifier);
+    EXPECT_EQ(filter->text(), QStringLiteral("A"));
+    EXPECT_EQ(doc->scene().spheres.size(), spheres + 1);
+}
+
 TEST_F(EditorCommandsTest, SaveAs_NameWithoutExtension_WritesDotJson) {
     const QString typed = QString::fromStdString((dir.path() / "my scene").string());
     const QString folder = QString::fromStdString(dir.path().string());

@@ -37,6 +37,8 @@ ScenePanel::ScenePanel(SceneDocument* doc, QWidget* parent)
     addAction_ = new QAction(tr("&Add"), this);
     addAction_->setObjectName(QStringLiteral("addAction"));
     addAction_->setStatusTip(tr("Add a new item to the current list"));
+    // Blender's key for adding. A text field keeps it as a capital A.
+    addAction_->setShortcut(QKeySequence(tr("Shift+A")));
     duplicateAction_ = new QAction(tr("D&uplicate"), this);
     duplicateAction_->setObjectName(QStringLiteral("duplicateAction"));
     duplicateAction_->setShortcut(QKeySequence(tr("Ctrl+D")));

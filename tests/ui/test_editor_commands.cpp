@@ -198,7 +198,6 @@ TEST_F(EditorCommandsTest, CtrlZ_WithFocusInEditedField_UndoesTheSceneEdit) {
     EXPECT_NE(doc->scene().spheres[0].radius, before) << "Ctrl+Shift+Z redoes";
 }
 
-// Item 3: a name typed without ".json" is saved as name.json.
 // Shift+A adds to the list shown, as in Blender; typed into a text field it
 // stays a capital A and adds nothing.
 TEST_F(EditorCommandsTest, ShiftA_AddsToTheListShown_InTheFilterItIsTyped) {
@@ -217,6 +216,7 @@ TEST_F(EditorCommandsTest, ShiftA_AddsToTheListShown_InTheFilterItIsTyped) {
     EXPECT_EQ(doc->scene().spheres.size(), spheres + 1);
 }
 
+// Item 3: a name typed without ".json" is saved as name.json.
 TEST_F(EditorCommandsTest, SaveAs_NameWithoutExtension_WritesDotJson) {
     const QString typed = QString::fromStdString((dir.path() / "my scene").string());
     const QString folder = QString::fromStdString(dir.path().string());

@@ -9,7 +9,6 @@
 // Usage: bench_quality [WIDTH HEIGHT [times [SCENE]]] (default 320 240).
 // Prints a Markdown table; `times` prints only the paired times of Draft and
 // Preview, of every scene or of the one named (seed, glass, ...).
-#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>

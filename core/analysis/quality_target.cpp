@@ -55,15 +55,6 @@ constexpr int kLookAhead = 3;
 // Stricter targets cut deeper, where a longer first render would only add
 // its levels to the one after it.
 constexpr double kLongFirstProbeBelowDb = 30.0;
-// The renders at the picture's own size (checkDepthAtPictureSize(), and the
-// samples of largestWithSamples()) follow no ray whose path passes on less
-// than this weight: at most about a code near black for a ray of radiance 3.
-// Both depths compared are rendered so, so the difference is what the
-// shallower depth cuts off of the rays that matter. A clear glass ball's inner
-// reflections (kr 0.1) end after three, instead of running to the depth the
-// check looks at, while light kept at 0.9 a bounce among glass balls is
-// followed to the end.
-constexpr double kPictureCheckPruneWeight = 1e-4;
 // The deepest depth a plan chooses: there light trapped in glass balls can
 // still change some pixels by 60 codes.
 constexpr int kDeepestPlanned = kDeepestChosen;
@@ -125,7 +116,7 @@ class ProbeRenders {
         std::vector<int> shallower;
         for (int d = depth; d < deepest; ++d)
             if (!byDepth_.count(d)) shallower.push_back(d);
-        RenderResult r = trace(deepest, plan, {}, 0.0, shallower);
+        RenderResult r = trace(deepest, plan, {}, shallower);
         for (std::size_t k = 0; k < shallower.size(); ++k)
             byDepth_.emplace(shallower[k], std::move(r.atDepths[k]));
         byDepth_.emplace(deepest, std::move(r.image));
@@ -171,8 +162,7 @@ class ProbeRenders {
     }
 
     // The `regions` of the picture at its own size, at `depth` with `samples`
-    // a pixel in the scene's precision; zero elsewhere. Rays lighter than
-    // kPictureCheckPruneWeight are not followed.
+    // a pixel in the scene's precision; zero elsewhere.
     Image atRenderSize(int depth, QualityPlan& plan, int samples,
                        const std::vector<PixelRect>& regions) {
         return std::move(atRenderSize(depth, plan, samples, regions, {}).image);
@@ -208,17 +198,19 @@ class ProbeRenders {
         probe_.render.width = renderWidth_;
         probe_.render.height = renderHeight_;
         probe_.render.samplesPerPixel = samples;
-        RenderResult r = trace(depth, plan, regions, kPictureCheckPruneWeight, alsoAtDepths);
+        RenderResult r = trace(depth, plan, regions, alsoAtDepths);
         probe_.render = own;
         return r;
     }
 
+    // Pruned as the render to the plan is (kQualityPruneWeight): the depths
+    // are compared by what that render would trace.
     RenderResult trace(int depth, QualityPlan& plan, const std::vector<PixelRect>& regions = {},
-                       double pruneBelowWeight = 0.0, const std::vector<int>& alsoAtDepths = {}) {
+                       const std::vector<int>& alsoAtDepths = {}) {
         probe_.render.maxDepth = depth;
         RenderOptions options = oneShotOptions();
         options.regions = regions;
-        options.pruneBelowWeight = pruneBelowWeight;
+        options.pruneBelowWeight = kQualityPruneWeight;
         options.alsoAtDepths = alsoAtDepths;
         options.bvhCache = &cache_;
         options.sceneValidated = validated_;  // the first render throws if it is not valid
@@ -427,7 +419,7 @@ DepthError pictureDepthError(ProbeRenders& probes, QualityPlan& plan, int depth,
 // two one-sample renders of the picture where the probe's depth holds (and
 // for Final two of two samples, pictureCheckSamples()), against the two or
 // more samples a pixel such a render takes; the deep ones follow only the
-// rays that can still matter (kPictureCheckPruneWeight).
+// rays that can still matter (kQualityPruneWeight).
 void checkDepthAtPictureSize(ProbeRenders& probes, int maxSamples, QualityPlan& plan) {
     if (!plan.target.largestCodes || plan.depthGiven || probes.probeIsThePicture()) return;
     // A probe that found no depth that fits and is already at the deepest
@@ -532,7 +524,9 @@ std::string pictureSamplesWhy(const QualityPlan& p) {
 }
 
 std::string depthWhy(const QualityPlan& p) {
-    std::string why = "depth " + std::to_string(p.maxDepth) + (p.depthGiven ? " (given)" : "");
+    std::string why =
+        "depth " + std::to_string(p.maxDepth) + (p.depthGiven ? " (given)" : "") +
+        format(", following no ray that passes on less than %g of the light", kQualityPruneWeight);
     why +=
         p.depthAtPictureSize
             ? format(
@@ -653,6 +647,7 @@ ImageMetadata qualityMetadata(const Scene& scene, const QualityPlan& plan,
 void applyPlan(const QualityPlan& plan, Scene& scene, RenderOptions& options) {
     scene.render.maxDepth = plan.maxDepth;
     options.adaptive = plan.sampling;
+    options.pruneBelowWeight = kQualityPruneWeight;
 }
 
 double estimatedPsnr(const QualityPlan& plan, const AdaptiveOutcome& outcome) {

@@ -20,7 +20,9 @@
 // judged with samples of the picture's pixels there. Both errors are
 // measured, not bounded: the estimate of what the depth cuts off comes from
 // the probe and the picture, that of the sampling from the render's own
-// samples.
+// samples. The render, and every probe that plans it, follows no ray whose
+// path passes on less than kQualityPruneWeight of its light, so a deep depth
+// costs what its rays that still matter cost.
 #pragma once
 
 #include <cstdint>
@@ -64,6 +66,14 @@ inline constexpr double kDepthShareOfLargest = 0.25;
 // between its centres, and there nothing does.
 inline constexpr double kPictureShareOfLargest = 0.5;
 inline constexpr double kSamplingShare = 0.8;
+// A render to a quality follows no reflected or refracted ray whose path
+// passes on less than this weight (RenderOptions::pruneBelowWeight): at most
+// about a code near black for a ray of radiance 3. A clear glass ball's inner
+// reflections (kr 0.1) end after three, instead of running to depth 16,
+// while light kept at 0.9 a bounce among glass balls is followed to the end.
+// On the generated fields a Final at depth 16 traced a quarter to a half of
+// the rays and measured the same to 0.01 dB (docs/quality.md).
+inline constexpr double kQualityPruneWeight = 1e-4;
 inline constexpr int kDefaultMaxSamples = 1024;
 // Targets this loose with no limit on the largest error start with one sample
 // at each pixel's centre (AdaptiveSampling::centresFirst): that is all a fixed
@@ -106,7 +116,7 @@ ImageMetadata qualityMetadata(const Scene& scene, const QualityPlan& plan,
                               const AdaptiveOutcome& reached, double seconds, std::string software);
 
 // What the plan chose, for the render that carries it out: the scene's
-// depth and the options' limits for the samples.
+// depth, the options' limits for the samples and kQualityPruneWeight.
 void applyPlan(const QualityPlan& plan, Scene& scene, RenderOptions& options);
 
 // The PSNR that the plan's measured biases and the render's estimate add up

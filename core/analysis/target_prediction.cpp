@@ -56,6 +56,7 @@ double tilesToPicture(const Scene& planned, const std::vector<PixelRect>& tiles,
     scene.render.samplesPerPixel = 1;
     RenderOptions options = oneShotOptions();
     options.sceneValidated = true;
+    options.pruneBelowWeight = kQualityPruneWeight;  // as the render to the plan (applyPlan())
     const RenderResult picture = render(scene, options, {}, stop);
     for (const PixelRect& t : tiles)
         options.regions.push_back({t.x / factor, t.y / factor, coarse(t.width), coarse(t.height)});

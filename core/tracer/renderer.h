@@ -57,9 +57,10 @@ struct RenderOptions {
     std::optional<AdaptiveSampling> adaptive = std::nullopt;
     // Reflected and refracted rays whose path passes on less than this weight
     // are not traced, whatever the depth (PreparedScene::pruneBelow): for
-    // planning renders that look deep, where light trapped in lossless glass
-    // must be followed and a glass ball's faint inner reflections need not.
-    // 0: every ray SPEC spawns.
+    // renders to a quality and their planning, which go deep where light
+    // trapped in lossless glass must be followed and a glass ball's faint
+    // inner reflections need not (analysis/quality_target.h). 0: every ray
+    // SPEC spawns.
     double pruneBelowWeight = 0.0;
     // Besides the picture, the picture as each of these shallower depths
     // would render it (ascending, each below the scene's max depth), from the

@@ -209,6 +209,37 @@ TEST(QualityTarget, PictureCheckedWithSamples_SeesASliverBetweenTheCentres) {
     EXPECT_TRUE(c.met);
 }
 
+// A render to a quality follows no ray that passes on less than
+// kQualityPruneWeight of the light. bench_quality_fields' thirteenth field
+// takes Final to depth 16, where the light trapped in its glass balls is
+// followed to the end and their faint inner reflections are not: at 16
+// samples a pixel at most, under half the rays of the same render traced
+// whole, and no pixel a code apart.
+TEST(QualityTarget, RenderToAPlan_FollowsOnlyTheRaysThatStillMatter) {
+    Scene field = sphereField(untunedField(13));
+    field.render.width = 160;
+    field.render.height = 120;
+    const QualityPlan plan = planQuality(field, finalQuality(), 16);
+    Scene planned = field;
+    RenderOptions options = oneShotOptions();
+    applyPlan(plan, planned, options);
+    EXPECT_EQ(options.pruneBelowWeight, kQualityPruneWeight);
+    EXPECT_EQ(planned.render.maxDepth, kDeepestChosen) << plan.why;
+    EXPECT_NE(plan.why.find("following no ray that passes on less than 0.0001 of the light"),
+              std::string::npos)
+        << plan.why;
+    const RenderResult pruned = render(planned, options);
+    options.pruneBelowWeight = 0.0;
+    const RenderResult whole = render(planned, options);
+    const double share = double(pruned.rays.total()) / double(whole.rays.total());
+    const double largest = measureError(pruned.image, whole.image).largest;
+    std::printf("depth %d: %.2f of the rays, largest difference %.2f codes\n", plan.maxDepth, share,
+                largest);
+    EXPECT_LT(share, 0.5);
+    EXPECT_GT(largest, 0.0);  // something was pruned
+    EXPECT_LE(largest, 1.0);
+}
+
 // bench_quality_fields' nineteenth field at 160x120: at Final its 80x60
 // probe found no depth that fits, and the plan took depth 11 ("the target may
 // be missed") without looking at the picture; the render was 30 codes off a

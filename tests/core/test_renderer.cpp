@@ -113,9 +113,10 @@ TEST(Renderer, EveryRepositoryScene_FloatAndDoubleRendersAgree) {
     EXPECT_GT(scenes, 0u);
 }
 
-// The planner's deep check (quality_target.cpp) follows only rays of weight
-// 1e-4 or more: on glass.json at depth 16 that ends the glass balls' inner
-// reflections (kr 0.1) after three, and changes no pixel by a code.
+// A render to a quality and its planning follow only rays of weight 1e-4 or
+// more (kQualityPruneWeight, quality_target.h): on glass.json at depth 16
+// that ends the glass balls' inner reflections (kr 0.1) after three, and
+// changes no pixel by a code.
 TEST(Renderer, PruningWeight_GlassAtDepth16_FewerRaysAndNoPixelOffByACode) {
     Scene scene = loadScene(std::filesystem::path(WHITTED_SCENES_DIR) / "glass.json");
     scene.render.width = 160;

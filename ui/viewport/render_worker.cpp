@@ -96,7 +96,10 @@ class FrameAssembler {
         }
         const bool passComplete = ++tilesDone_ == t.progress.tilesInPass;
         if (passComplete && t.progress.kind == PassKind::Samples) samplesDone_ = t.progress.samples;
-        const bool lastPass = t.progress.pass + 1 == t.progress.passCount;
+        // A render to a plan counts its passes as it goes (each decides whether
+        // another follows), so none is known to be the last: each complete one
+        // is shown, and finalFrame() follows the one that was.
+        const bool lastPass = !plan_ && t.progress.pass + 1 == t.progress.passCount;
         if ((passComplete && lastPass) || stopping_()) return;  // finalFrame() follows
         if (passComplete ||
             Clock::now() - lastSent_ > std::chrono::milliseconds(RenderWorker::kFrameIntervalMs)) {

@@ -265,7 +265,9 @@ TEST(QualityChoiceText, SamplesTaken_ARangeOrOneCount) {
     reached.mostSamples = 64;
     EXPECT_EQ(QualityChoice::samplesTaken(reached), QStringLiteral("2 to 64 samples per pixel"));
     reached.fewestSamples = reached.mostSamples = 1;
-    EXPECT_EQ(QualityChoice::samplesTaken(reached), QStringLiteral("1 sample(s) per pixel"));
+    EXPECT_EQ(QualityChoice::samplesTaken(reached), QStringLiteral("1 sample per pixel"));
+    reached.fewestSamples = reached.mostSamples = 16;
+    EXPECT_EQ(QualityChoice::samplesTaken(reached), QStringLiteral("16 samples per pixel"));
 }
 
 TEST_F(QualityEditorTest, RenderToTheSettings_AfterATarget_RendersTheScenesSamplesAgain) {
@@ -286,6 +288,8 @@ TEST_F(QualityEditorTest, RenderToTheSettings_AfterATarget_RendersTheScenesSampl
     const RenderFrame& frame = log->lastComplete;
     EXPECT_FALSE(frame.qualityPlan);
     EXPECT_EQ(frame.samples, doc->scene().render.samplesPerPixel);  // Draft's: 1
+    EXPECT_TRUE(statusText().contains(QStringLiteral("| 1 sample per pixel |")))
+        << statusText().toStdString();
     EXPECT_EQ(frame.settings.maxDepth, doc->scene().render.maxDepth);
     // The same pixels as a fixed render of the scene: nothing of the target is left.
     EXPECT_TRUE(sameImage(frame.image, coreRender(doc->scene())));

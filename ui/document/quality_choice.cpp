@@ -57,9 +57,13 @@ QString QualityChoice::describe(const std::optional<QualityTarget>& target) {
     return QString::fromStdString(describeTarget(*target));
 }
 
+QString QualityChoice::samplesPerPixel(int samples) {
+    if (samples == 1) return tr("1 sample per pixel");
+    return tr("%1 samples per pixel").arg(samples);
+}
+
 QString QualityChoice::samplesTaken(const AdaptiveOutcome& reached) {
-    if (reached.fewestSamples == reached.mostSamples)
-        return tr("%1 sample(s) per pixel").arg(reached.mostSamples);
+    if (reached.fewestSamples == reached.mostSamples) return samplesPerPixel(reached.mostSamples);
     return tr("%1 to %2 samples per pixel").arg(reached.fewestSamples).arg(reached.mostSamples);
 }
 

@@ -31,7 +31,10 @@ class QualityChoice : public QObject {
 
     // "Final: 50 dB, no pixel off by more than 16 codes", or what no target means.
     static QString describe(const std::optional<QualityTarget>& target);
-    // "2 to 64 samples per pixel", or "1 sample(s) per pixel" where every
+    // "1 sample per pixel", "16 samples per pixel", as the status bar says
+    // it (Qt's "%n sample(s)" keeps the "(s)" where no translation is loaded).
+    static QString samplesPerPixel(int samples);
+    // "2 to 64 samples per pixel", or "1 sample per pixel" where every
     // tile stopped at one count (a Draft render that its centres met).
     static QString samplesTaken(const AdaptiveOutcome& reached);
     // "depth 6, 2 to 64 samples per pixel, about 51.2 dB": what a render to

@@ -133,7 +133,7 @@ void MainWindow::onFrame(const RenderFrame& frame) {
                         : frame.qualityPlan
                             ? tr("Pass %1").arg(frame.pass + 1)
                             : tr("Pass %1 of %2").arg(frame.pass + 1).arg(frame.passCount));
-    samplesLabel_->setText(tr("%n sample(s) per pixel", nullptr, frame.samples));
+    samplesLabel_->setText(QualityChoice::samplesPerPixel(frame.samples));
     timeLabel_->setText(tr("%1 s").arg(frame.seconds, 0, 'f', 2));
     speedLabel_->setText(frame.renderComplete
                              ? tr("%1 Mrays/s").arg(frame.mraysPerSecond, 0, 'f', 1)

@@ -85,8 +85,7 @@ double pixelsRendered(const RenderSettings& r, const RenderOptions& o) {
 std::optional<std::string> alsoAtDepthsProblem(const RenderSettings& r, const RenderOptions& o) {
     const std::vector<int>& d = o.alsoAtDepths;
     if (d.empty()) return std::nullopt;
-    if (r.samplesPerPixel != 1 || o.adaptive || o.progressive)
-        return "alsoAtDepths: only for a one-shot render of one sample a pixel";
+    if (o.adaptive || o.progressive) return "alsoAtDepths: only for a one-shot render";
     if (d.front() < 0 || d.back() >= r.maxDepth || !std::is_sorted(d.begin(), d.end()))
         return "alsoAtDepths: depths ascending, from 0 to below max_depth " +
                std::to_string(r.maxDepth);
@@ -347,9 +346,10 @@ class TileRenderer {
     // A worker's buffers for one row of a tile, kept from tile to tile.
     struct Row {
         std::vector<Vec<T>> radiance;
-        std::vector<glm::dvec3> sums;  // where the render keeps none
-        std::vector<float> firstHalf;  // an adaptive pass's picture before it
-        std::vector<Vec<T>> atDepths;  // renderRowAtDepths(): pixel by pixel, depth by depth
+        std::vector<glm::dvec3> sums;       // where the render keeps none
+        std::vector<float> firstHalf;       // an adaptive pass's picture before it
+        std::vector<Vec<T>> atDepths;       // renderRowAtDepths(): pixel by pixel, depth by depth
+        std::vector<glm::dvec3> depthSums;  // the same, summed over the pass's samples
     };
 
     // The image is float whatever the precision: radiance beyond the largest
@@ -390,8 +390,8 @@ class TileRenderer {
             pass.centres || (pass.firstSample == 0 && pass.lastSample == 1 && sums_.empty());
         for (int y = tile.y; y < tile.y + tile.h; ++y) {
             if (stopRequested()) return false;
-            if (oneSample && !options_.alsoAtDepths.empty()) {
-                renderRowAtDepths(tile, y, row, counts);
+            if (!options_.alsoAtDepths.empty()) {
+                renderRowAtDepths(pass, tile, y, row, counts);
             } else if (oneSample) {
                 traceCameraRow(s_, y, tile.x, tile.w, pass.centres ? kPixelCentre : 0,
                                row.radiance.data(), counts);
@@ -405,18 +405,30 @@ class TileRenderer {
         return true;
     }
 
-    // A one-sample row, and the same rays' radiance at each of alsoAtDepths.
-    void renderRowAtDepths(const Tile& tile, int y, Row& row, RayCounts& counts) {
+    // A row of the pass's samples, and the same rays' radiance at each of
+    // alsoAtDepths, summed in sample order as renderRow() sums them: the
+    // pictures are those of renders at those depths but for rounding. A row
+    // of pixels at a time: traceCameraBlock() has no depths to give.
+    void renderRowAtDepths(const Pass& pass, const Tile& tile, int y, Row& row, RayCounts& counts) {
         const std::vector<int>& depths = options_.alsoAtDepths;
         const int n = int(depths.size());
-        row.atDepths.resize(std::size_t(tile.w) * n);
-        traceCameraRowAtDepths(s_, y, tile.x, tile.w, 0, row.radiance.data(), depths.data(), n,
-                               row.atDepths.data(), counts);
-        storeSamples(row.radiance.data(), tile.x, y, tile.w);
+        const std::size_t w = std::size_t(tile.w);
+        row.atDepths.resize(w * n);
+        row.sums.assign(w, glm::dvec3(0.0));
+        row.depthSums.assign(w * n, glm::dvec3(0.0));
+        for (int sample = pass.firstSample; sample < pass.lastSample; ++sample) {
+            traceCameraRowAtDepths(s_, y, tile.x, tile.w, sample, row.radiance.data(),
+                                   depths.data(), n, row.atDepths.data(), counts);
+            for (std::size_t i = 0; i < w; ++i) row.sums[i] += glm::dvec3(row.radiance[i]);
+            for (std::size_t i = 0; i < w * n; ++i) row.depthSums[i] += glm::dvec3(row.atDepths[i]);
+        }
+        const int samples = pass.lastSample - pass.firstSample;
+        float* out = image_.pixel(tile.x, y);
+        for (std::size_t i = 0; i < w; ++i) storeMean(out + 3 * i, row.sums[i], samples);
         for (int k = 0; k < n; ++k) {
-            float* out = atDepths_[k].pixel(tile.x, y);
-            for (int i = 0; i < tile.w; ++i)
-                storePixel(out + 3 * i, 0.0 + glm::dvec3(row.atDepths[std::size_t(i) * n + k]));
+            float* at = atDepths_[k].pixel(tile.x, y);
+            for (std::size_t i = 0; i < w; ++i)
+                storeMean(at + 3 * i, row.depthSums[i * n + k], samples);
         }
     }
 

@@ -66,8 +66,8 @@ struct RenderOptions {
     // would render it (ascending, each below the scene's max depth), from the
     // same rays (traceCameraRowAtDepths(); equal to those renders but for
     // rounding): RenderResult::atDepths. Planning compares depths so, one
-    // render for several. Only for a fixed render of one sample a pixel
-    // without preview (oneShotOptions()); std::invalid_argument otherwise.
+    // render for several. Only for a fixed render without preview
+    // (oneShotOptions()); std::invalid_argument otherwise.
     std::vector<int> alsoAtDepths{};
 };
 

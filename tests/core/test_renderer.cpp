@@ -139,16 +139,18 @@ TEST(Renderer, PruningWeight_GlassAtDepth16_FewerRaysAndNoPixelOffByACode) {
 // One render gives the picture at shallower depths too (planning compares
 // depths so): the sum of what each bounce level adds, equal to a render at
 // that depth but for rounding, with the render's own picture and rays those
-// of a plain render. Pruned alike, as the planner's deep check renders.
+// of a plain render. Pruned alike, as the planner's deep check renders; at
+// one sample a pixel and at three (the check's sampled pictures, and a mean
+// that is no power of two).
 TEST(Renderer, AlsoAtDepths_EqualRendersAtThoseDepths) {
     for (const Precision precision : {Precision::Float, Precision::Double}) {
-        for (const double prune : {0.0, 1e-4}) {
+        for (const auto& [prune, samples] : {std::pair{0.0, 1}, {1e-4, 1}, {1e-4, 3}}) {
             SCOPED_TRACE(std::string(precisionName(precision)) + ", prune " +
-                         std::to_string(prune));
+                         std::to_string(prune) + ", " + std::to_string(samples) + " spp");
             Scene scene = loadScene(std::filesystem::path(WHITTED_SCENES_DIR) / "glass.json");
             scene.render.width = 96;
             scene.render.height = 72;
-            scene.render.samplesPerPixel = 1;
+            scene.render.samplesPerPixel = samples;
             scene.render.precision = precision;
             scene.render.maxDepth = 12;
             RenderOptions options = oneShotOptions();
@@ -182,9 +184,9 @@ TEST(Renderer, AlsoAtDepths_EqualRendersAtThoseDepths) {
         options.alsoAtDepths = refused;
         EXPECT_THROW(render(scene, options), std::invalid_argument);
     }
-    scene.render.samplesPerPixel = 2;
     RenderOptions options = oneShotOptions();
     options.alsoAtDepths = {1};
+    options.progressive = true;
     EXPECT_THROW(render(scene, options), std::invalid_argument);
 }
 

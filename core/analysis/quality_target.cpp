@@ -147,18 +147,20 @@ class ProbeRenders {
         return pictureByDepth_.emplace(key, atRenderSize(depth, plan, samples, {})).first->second;
     }
 
-    // The picture's centres at `depth` and at the deeper `reference`, in one
-    // render where neither was made before. Each is pictureAt(depth, plan, 1).
-    // Not the depths past `depth` too, in case the check goes on to them:
-    // keeping twelve more pictures of 640x480 cost seed.json's Preview more
-    // than the renders they would save. Once it has gone on, the next few
-    // come in one render (centresAhead()).
-    std::pair<const Image*, const Image*> picturesAt(int depth, int reference, QualityPlan& plan) {
-        if (!pictureByDepth_.count({depth, 1}) && !pictureByDepth_.count({reference, 1}))
-            centresFrom(reference, {depth}, plan);
-        else if (!pictureByDepth_.count({depth, 1}))
-            centresAhead(depth, reference, plan);
-        return {&pictureAt(depth, plan, 1), &pictureAt(reference, plan, 1)};
+    // The picture at `depth` and at the deeper `reference`, `samples` a pixel,
+    // in one render where neither was made before. Each is pictureAt(depth,
+    // plan, samples). Not the depths past `depth` too, in case the check goes
+    // on to them: keeping twelve more pictures of 640x480 cost seed.json's
+    // Preview more than the renders they would save. Once it has gone on, the
+    // next few come in one render (picturesAhead()).
+    std::pair<const Image*, const Image*> picturesAt(int depth, int reference, QualityPlan& plan,
+                                                     int samples = 1) {
+        if (!pictureByDepth_.count({depth, samples}) &&
+            !pictureByDepth_.count({reference, samples}))
+            picturesFrom(reference, {depth}, samples, plan);
+        else if (!pictureByDepth_.count({depth, samples}))
+            picturesAhead(depth, reference, samples, plan);
+        return {&pictureAt(depth, plan, samples), &pictureAt(reference, plan, samples)};
     }
 
     // The `regions` of the picture at its own size, at `depth` with `samples`
@@ -169,12 +171,13 @@ class ProbeRenders {
     }
 
   private:
-    // The picture's centres at `deepest` and at each of `shallower`, in one render.
-    void centresFrom(int deepest, const std::vector<int>& shallower, QualityPlan& plan) {
-        RenderResult r = atRenderSize(deepest, plan, 1, {}, shallower);
+    // The picture at `deepest` and at each of `shallower`, `samples` a pixel, in one render.
+    void picturesFrom(int deepest, const std::vector<int>& shallower, int samples,
+                      QualityPlan& plan) {
+        RenderResult r = atRenderSize(deepest, plan, samples, {}, shallower);
         for (std::size_t k = 0; k < shallower.size(); ++k)
-            pictureByDepth_.emplace(std::pair{shallower[k], 1}, std::move(r.atDepths[k]));
-        pictureByDepth_.emplace(std::pair{deepest, 1}, std::move(r.image));
+            pictureByDepth_.emplace(std::pair{shallower[k], samples}, std::move(r.atDepths[k]));
+        pictureByDepth_.emplace(std::pair{deepest, samples}, std::move(r.image));
     }
 
     // The check goes on past a depth that did not fit: the next
@@ -182,13 +185,13 @@ class ProbeRenders {
     // go on again (light trapped among the glass balls of a generated field
     // took the check at 640x480 from depth 8 to 15, a render of the picture
     // for each level).
-    void centresAhead(int depth, int reference, QualityPlan& plan) {
+    void picturesAhead(int depth, int reference, int samples, QualityPlan& plan) {
         int deepest = std::max(depth, std::min(depth + kLookAhead, reference) - 1);
-        while (deepest > depth && pictureByDepth_.count({deepest, 1})) --deepest;
+        while (deepest > depth && pictureByDepth_.count({deepest, samples})) --deepest;
         std::vector<int> shallower;
         for (int d = depth; d < deepest; ++d)
-            if (!pictureByDepth_.count({d, 1})) shallower.push_back(d);
-        centresFrom(deepest, shallower, plan);
+            if (!pictureByDepth_.count({d, samples})) shallower.push_back(d);
+        picturesFrom(deepest, shallower, samples, plan);
     }
 
     RenderResult atRenderSize(int depth, QualityPlan& plan, int samples,
@@ -392,8 +395,8 @@ DepthError pictureDepthError(ProbeRenders& probes, QualityPlan& plan, int depth,
     DepthPair::Apart largest{e.largest};
     pair.samples = pictureCheckSamples(*plan.target.largestCodes, maxSamples);
     if (pair.samples > 1) {
-        pair.shallowSampled = &probes.pictureAt(depth, plan, pair.samples);
-        pair.deepSampled = &probes.pictureAt(reference, plan, pair.samples);
+        std::tie(pair.shallowSampled, pair.deepSampled) =
+            probes.picturesAt(depth, reference, plan, pair.samples);
         largest.sampled = depthError(*pair.shallowSampled, *pair.deepSampled).largest;
         e.largest = std::max(e.largest, largest.sampled);
     }
@@ -415,11 +418,14 @@ DepthError pictureDepthError(ProbeRenders& probes, QualityPlan& plan, int depth,
 // reaches kDeepestPlanned. It is checked against kDeepestPlanned, not three
 // levels deeper: light trapped among glass balls can come out five levels or
 // more past a depth (on bench_quality_fields' seventeenth field a pixel
-// changes by 5 codes from depth 8 to 11, and by 78 from 12 to 14). It costs
-// two one-sample renders of the picture where the probe's depth holds (and
-// for Final two of two samples, pictureCheckSamples()), against the two or
-// more samples a pixel such a render takes; the deep ones follow only the
-// rays that can still matter (kQualityPruneWeight).
+// changes by 5 codes from depth 8 to 11, and by 78 from 12 to 14). Where the
+// probe's depth holds, it costs one render of the picture's centres at the
+// reference's depth, which gives the probe's depth too, and for Final one of
+// two samples a pixel (pictureCheckSamples()), against the two or more
+// samples a pixel such a render takes; the deep ones follow only the rays
+// that can still matter (kQualityPruneWeight). The sampled pictures come
+// several depths to a render as the centres do: a Final's planning traced
+// 0.58 to 0.81 of the rays it did with a render for each (docs/quality.md).
 void checkDepthAtPictureSize(ProbeRenders& probes, int maxSamples, QualityPlan& plan) {
     if (!plan.target.largestCodes || plan.depthGiven || probes.probeIsThePicture()) return;
     // A probe that found no depth that fits and is already at the deepest

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <tuple>
 
 #include "analysis/depth_truncation.h"
 #include "analysis/tradeoff.h"

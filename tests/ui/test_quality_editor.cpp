@@ -68,6 +68,9 @@ TEST_F(QualityEditorTest, FinalShortcut_RendersToFinalsTarget_MeasuredAgainstACo
     ASSERT_TRUE(window->qualityChoice()->target().has_value());
     EXPECT_EQ(window->qualityChoice()->target()->name, "Final");
     EXPECT_EQ(child<QComboBox>("qualityTarget")->currentIndex(), 3);  // after the settings
+    // The Preset box names the target that rules, not the samples and depth it wrote.
+    EXPECT_EQ(child<QComboBox>("renderPreset")->currentText().toStdString(),
+              "Final: 50 dB, no pixel off by more than 16 codes");
     const RenderFrame& frame = log->lastComplete;
     ASSERT_TRUE(frame.qualityPlan && frame.qualityReached && frame.linear);
 
@@ -283,6 +286,9 @@ TEST_F(QualityEditorTest, RenderToTheSettings_AfterATarget_RendersTheScenesSampl
     EXPECT_FALSE(window->qualityChoice()->target().has_value());
     EXPECT_TRUE(child<QWidget>("renderMaxDepth")->isEnabled());
     EXPECT_TRUE(child<QWidget>("renderSamples")->isEnabled());
+    // The presets are settings again: the box shows the one Ctrl+1 wrote.
+    EXPECT_EQ(child<QComboBox>("renderPreset")->currentText().toStdString(),
+              "Draft (1 spp, depth 2, float)");
     EXPECT_EQ(child<QSpinBox>("renderSamples")->text(),
               QString::number(doc->scene().render.samplesPerPixel));
     const RenderFrame& frame = log->lastComplete;

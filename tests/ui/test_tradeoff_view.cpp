@@ -161,14 +161,26 @@ TEST_F(TradeoffViewTest, Preset_EachSetsExactlyItsValuesAsOneUndoStep_UndoRestor
         EXPECT_TRUE(combo->currentText().startsWith(QString::fromUtf8(preset.name.data())));
         doc->undoStack()->undo();
         EXPECT_EQ(doc->scene(), before);
-        EXPECT_EQ(combo->currentIndex(), 0);
+        // Undo gives the scene its settings back; the target it chose is the
+        // editor's, not the scene's, and still rules, so the box names it.
+        EXPECT_EQ(combo->currentIndex(), int(i) + 1);
     }
+    // Rendering to the settings again, the box shows what they match.
+    auto* target = child<QComboBox>("qualityTarget");
+    target->setCurrentIndex(0);
+    emit target->activated(0);
+    EXPECT_EQ(combo->currentIndex(), 0);
 }
 
 TEST_F(TradeoffViewTest, Preset_ManualSamplesChange_ShowsCustom) {
     choosePreset(2);  // Preview
+    // The samples field takes edits only while the view renders to the settings.
+    auto* target = child<QComboBox>("qualityTarget");
+    target->setCurrentIndex(0);
+    emit target->activated(0);
     auto* combo = child<QComboBox>("renderPreset");
     ASSERT_EQ(combo->currentIndex(), 2);
+    EXPECT_EQ(combo->currentText().toStdString(), "Preview (16 spp, depth 5, float)");
     auto* samples = child<QSpinBox>("renderSamples");
     samples->setValue(kRenderPresets[1].samplesPerPixel + 1);
     EXPECT_EQ(doc->scene().render.samplesPerPixel, kRenderPresets[1].samplesPerPixel + 1);

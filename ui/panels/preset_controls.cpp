@@ -33,6 +33,16 @@ void applyPreset(const RenderPreset& p, RenderSettings& r) {
     r.precision = p.precision;
 }
 
+// "Final (128 spp, depth 8, float)": what choosing it renders with "Render
+// to" on the settings.
+QString settingsText(const RenderPreset& p) {
+    return QObject::tr("%1 (%2 spp, depth %3, %4)")
+        .arg(presetName(p))
+        .arg(p.samplesPerPixel)
+        .arg(p.maxDepth)
+        .arg(viewText(precisionName(p.precision)));
+}
+
 QLabel* makePredictionLabel(const QString& name) {
     auto* label = new QLabel;
     label->setObjectName(name);
@@ -49,12 +59,7 @@ PresetControls::PresetControls(SceneDocument* doc, TradeoffRecord* record, Quali
     combo_ = new QComboBox;
     combo_->setObjectName(QStringLiteral("renderPreset"));
     combo_->addItem(tr("Custom"));
-    for (const RenderPreset& p : kRenderPresets)
-        combo_->addItem(tr("%1 (%2 spp, depth %3, %4)")
-                            .arg(presetName(p))
-                            .arg(p.samplesPerPixel)
-                            .arg(p.maxDepth)
-                            .arg(viewText(precisionName(p.precision))));
+    for (const RenderPreset& p : kRenderPresets) combo_->addItem(settingsText(p));
     combo_->setToolTip(
         tr("Sets samples per pixel, max depth and precision in one step, and renders "
            "to the preset's quality"));
@@ -85,6 +90,14 @@ PresetControls::PresetControls(SceneDocument* doc, TradeoffRecord* record, Quali
     connect(quality_, &QualityChoice::reachedNoted, this, &PresetControls::refresh);
     connect(record_, &TradeoffRecord::changed, this, &PresetControls::refresh);
     refresh();
+}
+
+int PresetControls::shownPreset(const RenderSettings& settings,
+                                const std::optional<QualityTarget>& target) {
+    if (!target) return matchingPreset(settings);
+    for (std::size_t i = 0; i < kRenderPresets.size(); ++i)
+        if (kRenderPresets[i].name == target->name) return int(i);
+    return -1;
 }
 
 int PresetControls::matchingPreset(const RenderSettings& settings) {
@@ -168,11 +181,21 @@ bool PresetControls::apply(SceneDocument* doc, QualityChoice* quality, const Ren
 
 void PresetControls::refresh() {
     const Scene& scene = doc_->scene();
-    {
-        const QSignalBlocker block(combo_);
-        combo_->setCurrentIndex(matchingPreset(scene.render) + 1);
-    }
     const std::optional<QualityTarget>& target = quality_->target();
+    {
+        // While a target rules, the presets are targets: the scene's
+        // samples and depth are not what the view renders ("Final (128 spp,
+        // depth 8)" read as the picture's settings while it was rendered at
+        // depth 6 with 2 to 128 samples a pixel).
+        const QSignalBlocker block(combo_);
+        for (std::size_t i = 0; i < kRenderPresets.size(); ++i) {
+            const RenderPreset& preset = kRenderPresets[i];
+            combo_->setItemText(int(i) + 1,
+                                target ? QualityChoice::describe(qualityPreset(preset.name))
+                                       : settingsText(preset));
+        }
+        combo_->setCurrentIndex(shownPreset(scene.render, target) + 1);
+    }
     {
         const QSignalBlocker block(target_);
         target_->setCurrentIndex(QualityChoice::indexOf(target));

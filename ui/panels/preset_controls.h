@@ -5,7 +5,8 @@
 // precision as one undoable edit, and makes the preset's quality the target
 // the editor renders to ("Render to", document/quality_choice.h): depth and
 // samples are then chosen for the scene at each render. The combo box shows
-// the preset the scene's settings match, else Custom. The predictions are for
+// the preset the scene's settings match, else Custom; while a target rules,
+// its items name their targets and it shows the one that rules. The predictions are for
 // the settings; they follow every edit, every finished render and every
 // Measure result, and say where they come from, or that a target has none.
 // Each preset's tooltip names the target it renders to, the prediction of a
@@ -47,6 +48,10 @@ class PresetControls : public QObject {
                       QString* error = nullptr);
     // Index into kRenderPresets of the preset `settings` match, or -1.
     static int matchingPreset(const RenderSettings& settings);
+    // The preset the combo box shows: while `target` rules, the one named
+    // like it (its items then name their targets), else matchingPreset().
+    static int shownPreset(const RenderSettings& settings,
+                           const std::optional<QualityTarget>& target);
     // "1.2 s" and "RMSE 2.3 of 255, PSNR 41 dB" with their sources, as the labels show them.
     static QString timeText(const Prediction& p);
     static QString errorText(const Prediction& p);

@@ -87,14 +87,20 @@ std::string figures(const PointResult& r) {
     return s;
 }
 
+// "1 sample", "2 samples": the report is read as prose.
+std::string counted(int n, const char* noun) {
+    return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+}
+
 void header(std::string& md, const ReportContext& c) {
     const RenderSettings& s = c.settings;
     md += "# Numerical range of the tracer: float and double\n\n";
     md += "<!-- Generated file: do not edit. -->\n";
     md += "> **Generated** by `whitted-numerics` (app/numerics/); do not edit by hand.\n";
     md += "> Regenerate with " + c.regenerate + ".\n";
-    md += format("> Settings: `%s` at %d×%d, max depth %d, %d sample(s) per pixel, %d thread(s)",
-                 c.sceneName.c_str(), s.width, s.height, s.maxDepth, s.samplesPerPixel, c.threads);
+    md += format("> Settings: `%s` at %d×%d, max depth %d, %s per pixel, %s", c.sceneName.c_str(),
+                 s.width, s.height, s.maxDepth, counted(s.samplesPerPixel, "sample").c_str(),
+                 counted(c.threads, "thread").c_str());
     md += c.quick ? "; **quick** (reduced) sweep.\n" : ".\n";
     md += "> The same figures, machine-readable: [" + c.csvFile + "](" + c.csvFile + ").\n\n";
 }

@@ -110,6 +110,9 @@ TEST_F(QuickSweep, ReportHasRangeTableAndEveryPointRow) {
     const std::string md = test::readFile(*dir_ / "numerics.md");
     EXPECT_NE(md.find("Generated"), std::string::npos);
     EXPECT_NE(md.find("--quick"), std::string::npos) << "the header names the command";
+    // The seed's one sample, in words a reader reads (not "1 sample(s)").
+    EXPECT_NE(md.find("at 24×18, max depth 2, 1 sample per pixel, 2 threads"), std::string::npos)
+        << md.substr(0, 600);
     EXPECT_NE(md.find("## Measured ranges"), std::string::npos);
     EXPECT_NE(md.find("## Every point"), std::string::npos);
     // One row per precision for each point; 2^k rows say bit-identical and hold.

@@ -276,8 +276,10 @@ void TradeoffView::refreshPlot() {
     if (empty)
         note = tr("No points yet: pin a reference or measure.");
     else if (plot.identical > 0)
-        note = tr("%n point(s) identical to the reference: no error to show on a log axis.",
-                  nullptr, plot.identical);
+        // Not tr("%n point(s)"): with no translation loaded Qt keeps the "(s)".
+        note = (plot.identical == 1 ? tr("1 point identical")
+                                    : tr("%1 points identical").arg(plot.identical)) +
+               tr(" to the reference: no error to show on a log axis.");
     plotNote_->setText(note);
     plotNote_->setVisible(!note.isEmpty());
 }

@@ -35,6 +35,7 @@
 #include "editor/main_window.h"
 #include "image/image_io.h"
 #include "panels/scene_panel.h"
+#include "scene/free_spot.h"
 #include "scene/scene_io.h"
 #include "support/export_support.h"
 #include "support/gui_test_main.h"
@@ -201,10 +202,20 @@ TEST_F(EditorCommandsTest, CtrlZ_WithFocusInEditedField_UndoesTheSceneEdit) {
 // Shift+A adds to the list shown, as in Blender; typed into a text field it
 // stays a capital A and adds nothing.
 TEST_F(EditorCommandsTest, ShiftA_AddsToTheListShown_InTheFilterItIsTyped) {
-    const std::size_t spheres = doc->scene().spheres.size();
+    // A ball where the camera looks, as in glass.json: Add goes beside it.
+    ASSERT_TRUE(doc->edit(QStringLiteral("move"), [](Scene& s) {
+        s.spheres[0].center = s.camera.lookAt;
+        s.spheres[0].radius = 0.5;
+    }));
+    const Scene before = doc->scene();
+    const std::size_t spheres = before.spheres.size();
     view->setFocus();
     QTest::keyClick(view, Qt::Key_A, Qt::ShiftModifier);
     ASSERT_EQ(doc->scene().spheres.size(), spheres + 1);
+    // Where no sphere is already: at the look-at point or beside it.
+    const Sphere& added = doc->scene().spheres.back();
+    EXPECT_EQ(added.center, freeSpotForSphere(before, added.radius));
+    EXPECT_NE(added.center, before.camera.lookAt);
     EXPECT_EQ(action(QStringLiteral("addAction"))->shortcut(),
               QKeySequence(QStringLiteral("Shift+A")));
 

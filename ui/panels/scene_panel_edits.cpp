@@ -14,6 +14,7 @@
 #include "panels/material_sharing.h"
 #include "panels/number_field.h"
 #include "panels/scene_list_model.h"
+#include "scene/free_spot.h"
 #include "scene/material_presets.h"
 
 namespace whitted::ui {
@@ -66,8 +67,8 @@ void ScenePanel::addItem(ItemKind kind) {
                     if (s.materials.empty()) s.materials.push_back(defaultMaterial(newMaterial));
                     Sphere sphere;
                     sphere.name = name.toStdString();
-                    sphere.center = lookAt;
                     sphere.radius = 0.5;
+                    sphere.center = freeSpotForSphere(s, sphere.radius);
                     sphere.material = s.materials.front().name;
                     s.spheres.push_back(std::move(sphere));
                 },

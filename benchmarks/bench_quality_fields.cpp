@@ -11,6 +11,7 @@
 // probe to see; a reference that moves is not converged there.
 // Usage: bench_quality_fields [FIRST LAST [WIDTH]] (default 1 8 160; the
 // height is three quarters of the width). Prints a Markdown table.
+// WHITTED_REFERENCE_CACHE=DIR keeps the references in DIR (fieldReference()).
 //
 // bench_quality_fields depths SEED [SAMPLES [DEEPEST]] (default 8 samples,
 // depth 24, 160x120) prints how far the field's picture is from converging
@@ -28,11 +29,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <utility>
 
 #include "analysis/quality_check.h"
 #include "image/image_compare.h"
 #include "image/image_error.h"
+#include "image/image_io.h"
 #include "paired_times.h"
 #include "sphere_field.h"
 #include "tracer/renderer.h"
@@ -47,6 +50,24 @@ Scene field(int seed, int width) {
     scene.render.width = width;
     scene.render.height = width * 3 / 4;
     return scene;
+}
+
+// The field's converged reference. With WHITTED_REFERENCE_CACHE set to a
+// folder, kept there as OpenEXR by seed and size and read back on the next
+// run: at 640x480 a field's reference takes minutes, the renders it judges
+// seconds, so trying a change to the sampling then costs only those.
+Image fieldReference(const Scene& scene, int seed) {
+    const char* folder = std::getenv("WHITTED_REFERENCE_CACHE");
+    if (!folder) return convergedReference(scene, 512, kDeepReferenceDepth);
+    const std::filesystem::path file =
+        std::filesystem::path(folder) / ("field" + std::to_string(seed) + "-" +
+                                         std::to_string(scene.render.width) + "x" +
+                                         std::to_string(scene.render.height) + ".exr");
+    if (std::filesystem::exists(file)) return readImage(file);
+    std::filesystem::create_directories(file.parent_path());
+    Image reference = convergedReference(scene, 512, kDeepReferenceDepth);
+    writeImage(reference, file, {});
+    return reference;
 }
 
 Image renderAt(Scene scene, int depth, int samples) {
@@ -218,7 +239,7 @@ int printPresets(int first, int last, int width) {
     PresetTally tally;
     for (int seed = first; seed <= last; ++seed) {
         const Scene scene = field(seed, width);
-        const Image reference = convergedReference(scene, 512, kDeepReferenceDepth);
+        const Image reference = fieldReference(scene, seed);
         for (int i = 0; i < 3; ++i)
             presetRow(seed, scene, targets[i], kRenderPresets[std::size_t(i)], reference, tally);
         std::fflush(stdout);
@@ -251,7 +272,7 @@ int main(int argc, char** argv) {
     int renders = 0, met = 0, psnrMet = 0, promised = 0, promisedMet = 0;
     for (int seed = first; seed <= last; ++seed) {
         const Scene scene = field(seed, width);
-        const Image reference = convergedReference(scene, 512, kDeepReferenceDepth);
+        const Image reference = fieldReference(scene, seed);
         for (const QualityTarget& target : {previewQuality(), finalQuality()}) {
             const QualityCheck c = checkQuality(scene, target, reference);
             ++renders;

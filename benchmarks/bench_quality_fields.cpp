@@ -11,7 +11,9 @@
 // probe to see; a reference that moves is not converged there.
 // Usage: bench_quality_fields [FIRST LAST [WIDTH]] (default 1 8 160; the
 // height is three quarters of the width). Prints a Markdown table.
-// WHITTED_REFERENCE_CACHE=DIR keeps the references in DIR (fieldReference()).
+// WHITTED_REFERENCE_CACHE=DIR keeps the references in DIR (fieldReference());
+// WHITTED_NO_WHY=1 leaves out the examination of a missed target's worst
+// pixel (whyMissed(), half a minute a miss at 640x480).
 //
 // bench_quality_fields depths SEED [SAMPLES [DEEPEST]] (default 8 samples,
 // depth 24, 160x120) prints how far the field's picture is from converging
@@ -285,7 +287,7 @@ int main(int argc, char** argv) {
                 seed, scene.spheres.size() - 1, target.name.c_str(), c.plan.maxDepth,
                 c.plan.depthShort ? "*" : "", c.plan.depthLargest, c.error.psnrSrgb8,
                 c.error.largest, c.met ? "yes" : "**no**",
-                c.met ? "" : whyMissed(scene, c, reference).c_str());
+                c.met || getenv("WHITTED_NO_WHY") ? "" : whyMissed(scene, c, reference).c_str());
             std::fflush(stdout);
         }
     }

@@ -62,9 +62,9 @@ Image fieldReference(const Scene& scene, int seed) {
     const char* folder = std::getenv("WHITTED_REFERENCE_CACHE");
     if (!folder) return convergedReference(scene, 512, kDeepReferenceDepth);
     const std::filesystem::path file =
-        std::filesystem::path(folder) / ("field" + std::to_string(seed) + "-" +
-                                         std::to_string(scene.render.width) + "x" +
-                                         std::to_string(scene.render.height) + ".exr");
+        std::filesystem::path(folder) /
+        ("field" + std::to_string(seed) + "-" + std::to_string(scene.render.width) + "x" +
+         std::to_string(scene.render.height) + ".exr");
     if (std::filesystem::exists(file)) return readImage(file);
     std::filesystem::create_directories(file.parent_path());
     Image reference = convergedReference(scene, 512, kDeepReferenceDepth);

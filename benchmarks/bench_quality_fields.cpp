@@ -287,7 +287,8 @@ int main(int argc, char** argv) {
                 seed, scene.spheres.size() - 1, target.name.c_str(), c.plan.maxDepth,
                 c.plan.depthShort ? "*" : "", c.plan.depthLargest, c.error.psnrSrgb8,
                 c.error.largest, c.met ? "yes" : "**no**",
-                c.met || getenv("WHITTED_NO_WHY") ? "" : whyMissed(scene, c, reference).c_str());
+                c.met || std::getenv("WHITTED_NO_WHY") ? ""
+                                                       : whyMissed(scene, c, reference).c_str());
             std::fflush(stdout);
         }
     }

@@ -9,8 +9,8 @@
 namespace whitted {
 
 // The spot nearest the camera's look-at point, stepping sideways across the
-// view a little over `radius` twice at a time (the look-at point first, then
-// right, left, further right, ...), where a sphere of `radius` overlaps no
+// view by 2.2 radii at a time (the look-at point first, then right, left,
+// further right, ...), where a sphere of `radius` overlaps no
 // sphere of the scene by more than kSinkShare of its radius: a ball may rest
 // sunk a little into the floor, as the shipped scenes' balls rest on it. The
 // look-at point where none of the kSideSteps each way is free. A spot beside

@@ -2,6 +2,8 @@
 // camera looks at unless a sphere is there, else beside it, as the user sees it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <glm/geometric.hpp>
 
 #include "scene/free_spot.h"

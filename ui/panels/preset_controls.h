@@ -6,9 +6,10 @@
 // the editor renders to ("Render to", document/quality_choice.h): depth and
 // samples are then chosen for the scene at each render. The combo box shows
 // the preset the scene's settings match, else Custom; while a target rules,
-// its items name their targets and it shows the one that rules. The predictions are for
-// the settings; they follow every edit, every finished render and every
-// Measure result, and say where they come from, or that a target has none.
+// its items name their targets and it shows the one that rules. The
+// predictions are for the settings; they follow every edit, every finished
+// render and every Measure result, and say where they come from, or that a
+// target has none.
 // Each preset's tooltip names the target it renders to, the prediction of a
 // render to it, what the view's last render to it on this scene took
 // (QualityChoice::lastReached()), and the prediction for its settings. The

@@ -35,12 +35,9 @@ void applyPreset(const RenderPreset& p, RenderSettings& r) {
 
 // "Final (128 spp, depth 8, float)": what choosing it renders with "Render
 // to" on the settings.
-QString settingsText(const RenderPreset& p) {
-    return QObject::tr("%1 (%2 spp, depth %3, %4)")
-        .arg(presetName(p))
-        .arg(p.samplesPerPixel)
-        .arg(p.maxDepth)
-        .arg(viewText(precisionName(p.precision)));
+QString presetText(const RenderPreset& p) {
+    return QObject::tr("%1 (%2)").arg(presetName(p),
+                                      settingsText(p.samplesPerPixel, p.maxDepth, p.precision));
 }
 
 QLabel* makePredictionLabel(const QString& name) {
@@ -59,7 +56,7 @@ PresetControls::PresetControls(SceneDocument* doc, TradeoffRecord* record, Quali
     combo_ = new QComboBox;
     combo_->setObjectName(QStringLiteral("renderPreset"));
     combo_->addItem(tr("Custom"));
-    for (const RenderPreset& p : kRenderPresets) combo_->addItem(settingsText(p));
+    for (const RenderPreset& p : kRenderPresets) combo_->addItem(presetText(p));
     combo_->setToolTip(
         tr("Sets samples per pixel, max depth and precision in one step, and renders "
            "to the preset's quality"));
@@ -190,9 +187,9 @@ void PresetControls::refresh() {
         const QSignalBlocker block(combo_);
         for (std::size_t i = 0; i < kRenderPresets.size(); ++i) {
             const RenderPreset& preset = kRenderPresets[i];
-            combo_->setItemText(int(i) + 1,
-                                target ? QualityChoice::describe(qualityPreset(preset.name))
-                                       : settingsText(preset));
+            combo_->setItemText(
+                int(i) + 1,
+                target ? QualityChoice::describe(qualityPreset(preset.name)) : presetText(preset));
         }
         combo_->setCurrentIndex(shownPreset(scene.render, target) + 1);
     }

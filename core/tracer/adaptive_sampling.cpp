@@ -129,6 +129,48 @@ TileErrorEstimate centreSampleEstimate(const Image& image, const PixelRect& tile
     return estimate;
 }
 
+namespace {
+
+// The code a value moves by, a share of the way towards `towards`.
+inline float codesMoved(float value, float encoded, float towards, float share) {
+    return 255.0f * std::fabs(srgbEncodeFast(value + share * (towards - value)) - encoded);
+}
+
+}  // namespace
+
+double unseenLargest(const Image& image, const PixelRect& tile, const PixelRect& rendered,
+                     int samples, PixelLargest& pixels) {
+    const float share = 1.0f / float(std::max(1, samples));
+    float tileLargest = 0.0f;
+    for (int y = tile.y; y < tile.y + tile.height; ++y) {
+        const int y0 = std::max(rendered.y, y - 1),
+                  y1 = std::min(rendered.y + rendered.height - 1, y + 1);
+        for (int x = tile.x; x < tile.x + tile.width; ++x) {
+            const int x0 = std::max(rendered.x, x - 1),
+                      x1 = std::min(rendered.x + rendered.width - 1, x + 1);
+            const float* own = image.pixel(x, y);
+            float lowest[3] = {own[0], own[1], own[2]}, highest[3] = {own[0], own[1], own[2]};
+            for (int ny = y0; ny <= y1; ++ny)
+                for (int nx = x0; nx <= x1; ++nx) {
+                    const float* next = image.pixel(nx, ny);
+                    for (int c = 0; c < 3; ++c) {
+                        lowest[c] = std::min(lowest[c], next[c]);
+                        highest[c] = std::max(highest[c], next[c]);
+                    }
+                }
+            float& estimate = pixels.at(x, y);
+            for (int c = 0; c < 3; ++c) {
+                if (lowest[c] == highest[c]) continue;  // a flat neighbourhood hides nothing
+                const float encoded = srgbEncodeFast(own[c]);
+                estimate = std::max({estimate, codesMoved(own[c], encoded, lowest[c], share),
+                                     codesMoved(own[c], encoded, highest[c], share)});
+            }
+            tileLargest = std::max(tileLargest, estimate);
+        }
+    }
+    return tileLargest;
+}
+
 TileErrorEstimate halvesEstimate(const float* before, const float* after, int pixels,
                                  float* largestOfPixel) {
     constexpr int kChunk = 16;  // pixels: a tile's row, on the stack

@@ -11,6 +11,8 @@
 // one (F): nothing more is stored. Stratified samples (progressiveSample())
 // make the halves' difference, if anything, larger than F's error.
 // A tile's first pass has two samples, so that it has halves to compare.
+// Halves that agree can both have missed a sliver of the pixel; where the
+// target limits the largest error, unseenLargest() covers that.
 //
 // Unless one sample may do (centresFirst, for loose targets with no limit on
 // the largest error): then the first pass traces each pixel's centre, as a
@@ -145,6 +147,22 @@ struct PixelLargest {
 void estimateNearbyLargest(std::vector<TileSamplingState>& tiles,
                            const std::vector<PixelRect>& rects, int edge,
                            const PixelLargest& pixels);
+
+// What a pixel's samples may all have missed. Where a feature covers a
+// sliver of a pixel, a corner of a checker square or the rim of a ball, no
+// sample may land on it: its samples then agree, the halves do too, and the
+// pixel is estimated as exact where it is off by the sliver. So each pixel
+// of `tile` is also taken as off by what one more of its `samples` would
+// change, were that sample the colour of its most different neighbour, and
+// its estimate in `pixels` raised to that; returns the tile's largest, in
+// codes. It is held to the same limit as the halves' estimate, margin and
+// all: held to the target's own limit instead, an untuned field's Final at
+// 640x480 still missed (docs/quality.md, "What the samples may miss").
+// After a pass, with its neighbours rendered: they are the colours a sliver
+// of it may have. Only neighbours within `rendered` count: outside a
+// render's regions the picture is black, not the scene.
+double unseenLargest(const Image& image, const PixelRect& tile, const PixelRect& rendered,
+                     int samples, PixelLargest& pixels);
 
 // The error of the centre samples in `tile` of `image`, from the differences
 // between each pixel and its right and lower neighbours inside the tile (a

@@ -82,5 +82,33 @@ TEST(AdaptiveSampling, HalvesEstimateOfARow_InCodes_EachPixelsLargest) {
     EXPECT_EQ(largest[19], 0.0f);
 }
 
+// A pixel whose samples all agree may still hold a sliver of its neighbour's
+// colour: it is taken as off by one more sample of its most different
+// neighbour's. A 5x5 picture, black but for one grey pixel at (2, 2); the
+// tile is its first two columns, at 32 samples a pixel.
+TEST(AdaptiveSampling, UnseenLargest_OneMoreSampleOfTheMostDifferentNeighbour) {
+    Image image(5, 5);
+    for (int c = 0; c < 3; ++c) image.pixel(2, 2)[c] = 0.3f;
+    PixelLargest pixels;
+    pixels.width = 5, pixels.height = 5;
+    pixels.codes.assign(25, 0.0f);
+    pixels.at(0, 0) = 50.0f;  // the halves' estimate, larger: kept
+    const double largest = unseenLargest(image, {0, 0, 2, 5}, {0, 0, 5, 5}, 32, pixels);
+    // 0.3 / 32 from black: 24.4 codes, near black where codes are dear.
+    const double beside = 255.0 * srgbEncode(0.3f / 32.0f);
+    EXPECT_NEAR(beside, 24.4, 0.1);
+    for (int y : {1, 2, 3}) EXPECT_NEAR(pixels.at(1, y), beside, 0.01) << y;
+    for (int y : {0, 4}) EXPECT_EQ(pixels.at(1, y), 0.0f) << y;  // (2, 2) is not beside them
+    EXPECT_EQ(pixels.at(0, 2), 0.0f);
+    EXPECT_EQ(pixels.at(0, 0), 50.0f);
+    EXPECT_EQ(pixels.at(2, 2), 0.0f);  // outside the tile: left as it was
+    EXPECT_DOUBLE_EQ(largest, 50.0);
+    // The grey pixel itself, by its black neighbours: far less, where codes are cheap.
+    unseenLargest(image, {2, 2, 1, 1}, {0, 0, 5, 5}, 32, pixels);
+    const double grey = 255.0 * (srgbEncode(0.3f) - srgbEncode(0.3f * 31.0f / 32.0f));
+    EXPECT_NEAR(grey, 2.1, 0.05);
+    EXPECT_NEAR(pixels.at(2, 2), grey, 0.01);
+}
+
 }  // namespace
 }  // namespace whitted

@@ -9,6 +9,7 @@
 // Usage: bench_quality [WIDTH HEIGHT [times [SCENE]]] (default 320 240).
 // Prints a Markdown table; `times` prints only the paired times of Draft and
 // Preview, of every scene or of the one named (seed, glass, ...).
+// WHITTED_REFERENCE_CACHE=DIR keeps the references in DIR (reference_cache.h).
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -18,6 +19,7 @@
 #include "analysis/render_presets.h"
 #include "bench_scenes.h"
 #include "paired_times.h"
+#include "reference_cache.h"
 
 using namespace whitted;
 using namespace whitted::bench;
@@ -116,7 +118,7 @@ int main(int argc, char** argv) {
         "(pairs) | fewest fixed samples meeting it at our depth |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const NamedScene& n : scenes(width, height)) {
-        const Image reference = convergedReference(n.scene, 512, kDeepReferenceDepth);
+        const Image reference = cachedReference(n.scene, n.name);
         for (int i = 0; i < 3; ++i) row(n, targets[i], kRenderPresets[i], reference);
     }
     return 0;

@@ -11,7 +11,7 @@
 // probe to see; a reference that moves is not converged there.
 // Usage: bench_quality_fields [FIRST LAST [WIDTH]] (default 1 8 160; the
 // height is three quarters of the width). Prints a Markdown table.
-// WHITTED_REFERENCE_CACHE=DIR keeps the references in DIR (fieldReference());
+// WHITTED_REFERENCE_CACHE=DIR keeps the references in DIR (reference_cache.h);
 // WHITTED_NO_WHY=1 leaves out the examination of a missed target's worst
 // pixel (whyMissed(), half a minute a miss at 640x480).
 //
@@ -31,14 +31,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <filesystem>
 #include <utility>
 
 #include "analysis/quality_check.h"
 #include "image/image_compare.h"
 #include "image/image_error.h"
-#include "image/image_io.h"
 #include "paired_times.h"
+#include "reference_cache.h"
 #include "sphere_field.h"
 #include "tracer/renderer.h"
 
@@ -54,22 +53,8 @@ Scene field(int seed, int width) {
     return scene;
 }
 
-// The field's converged reference. With WHITTED_REFERENCE_CACHE set to a
-// folder, kept there as OpenEXR by seed and size and read back on the next
-// run: at 640x480 a field's reference takes minutes, the renders it judges
-// seconds, so trying a change to the sampling then costs only those.
 Image fieldReference(const Scene& scene, int seed) {
-    const char* folder = std::getenv("WHITTED_REFERENCE_CACHE");
-    if (!folder) return convergedReference(scene, 512, kDeepReferenceDepth);
-    const std::filesystem::path file =
-        std::filesystem::path(folder) /
-        ("field" + std::to_string(seed) + "-" + std::to_string(scene.render.width) + "x" +
-         std::to_string(scene.render.height) + ".exr");
-    if (std::filesystem::exists(file)) return readImage(file);
-    std::filesystem::create_directories(file.parent_path());
-    Image reference = convergedReference(scene, 512, kDeepReferenceDepth);
-    writeImage(reference, file, {});
-    return reference;
+    return cachedReference(scene, "field" + std::to_string(seed));
 }
 
 Image renderAt(Scene scene, int depth, int samples) {

@@ -230,7 +230,7 @@ TEST(QualityTarget, PreviewAtTheSizeAFieldIsSavedAt_NoPixelOfAReflectedCheckerOv
 }
 
 // The same field's Final: its pixel (434, 402) is black but for a corner of
-// a bright ball's edge, about a fortieth of it, which none of its first 32
+// a bright ball's edge, about a fiftieth of it, which none of its first 32
 // samples hit. The halves agreed, its tile stopped there, and the pixel
 // was 18.2 codes off (16 allowed). Taken also as off by one more sample of
 // its neighbours' colour (unseenLargest()), the tile goes on.

@@ -280,28 +280,25 @@ class TileRenderer {
     // `rendered`: the tiles the last pass rendered.
     std::vector<int> nextTiles(const AdaptiveSampling& limits, const std::vector<int>& rendered) {
         if (!pixelLargest_.codes.empty()) {
+            std::vector<PixelRect> rects;
+            for (const Tile& t : tiles_) rects.push_back({t.x, t.y, t.w, t.h});
             // Each tile writes only its own pixels' estimates: in parallel,
             // where a pass over a 640x480 picture takes 10 ms on one thread.
             parallelFor(rendered, threads_, [&](int t) {
-                const Tile& tile = tiles_[t];
                 TileErrorEstimate& estimate = tileStates_[t].estimate;
-                const double unseen =
-                    unseenLargest(image_, {tile.x, tile.y, tile.w, tile.h}, renderedAround(tile),
-                                  tileStates_[t].samples, pixelLargest_);
+                const double unseen = unseenLargest(image_, rects[t], renderedAround(rects[t]),
+                                                    tileStates_[t].samples, pixelLargest_);
                 estimate.largest = std::max(estimate.largest, unseen);
             });
-            std::vector<PixelRect> rects;
-            for (const Tile& t : tiles_) rects.push_back({t.x, t.y, t.w, t.h});
             estimateNearbyLargest(tileStates_, rects, tileEdgeOf(options_), pixelLargest_);
         }
         return tilesToRefine(tileStates_, limits);
     }
 
     // The pixels next to `tile` that this render renders: its region's.
-    PixelRect renderedAround(const Tile& tile) const {
-        const PixelRect own{tile.x, tile.y, tile.w, tile.h};
+    PixelRect renderedAround(const PixelRect& tile) const {
         for (const PixelRect& region : options_.regions)
-            if (overlap(region, own)) return region;
+            if (overlap(region, tile)) return region;
         return {0, 0, s_.width, s_.height};
     }
 

@@ -19,7 +19,8 @@
 
 #include "analysis/depth_truncation.h"
 #include "analysis/quality_check.h"
-#include "image/image_compare.h"
+#include "image/image_error.h"
+#include "image/image_parts.h"
 #include "scene/scene_io.h"
 #include "sphere_field.h"
 #include "tracer/renderer.h"
@@ -211,12 +212,8 @@ RegionError firstFieldErrorIn(const QualityTarget& target, const PixelRect& regi
     RenderOptions fixed = oneShotOptions();
     fixed.regions = {region};
     const Image reference = render(converged, fixed).image;
-    RegionError e{0.0, plan.maxDepth};
-    for (int y = region.y; y < region.y + region.height; ++y)
-        for (int x = region.x; x < region.x + region.width; ++x)
-            e.largest = std::max(
-                e.largest, 255.0 * displayDifference(ours.pixel(x, y), reference.pixel(x, y)));
-    return e;
+    return {measureError(cropImage(ours, region), cropImage(reference, region)).largest,
+            plan.maxDepth};
 }
 
 // A checker reflected in a small magenta ball, where a single draw per

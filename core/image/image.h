@@ -20,6 +20,11 @@ inline bool insidePicture(const PixelRect& r, int width, int height) {
            r.y + r.height <= height;
 }
 
+// Whether the rectangle holds pixel (x, y).
+inline bool contains(const PixelRect& r, int x, int y) {
+    return x >= r.x && x < r.x + r.width && y >= r.y && y < r.y + r.height;
+}
+
 // Whether the two rectangles share a pixel.
 inline bool overlap(const PixelRect& a, const PixelRect& b) {
     return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height &&

@@ -24,7 +24,7 @@ double largestWithin(const PixelLargest& pixels, const PixelRect& area, const Pi
 
 void estimateNearbyLargest(std::vector<TileSamplingState>& tiles,
                            const std::vector<PixelRect>& rects, int edge,
-                           const PixelLargest& pixels) {
+                           const PixelLargest& pixels, const AroundRegions* around) {
     const int columns = (pixels.width + edge - 1) / edge;
     const int rows = (pixels.height + edge - 1) / edge;
     std::vector<int> tileOfCell(std::size_t(columns) * rows, -1);
@@ -42,7 +42,16 @@ void estimateNearbyLargest(std::vector<TileSamplingState>& tiles,
                 const int x = column + dx, y = row + dy;  // the neighbour's cell
                 if ((dx == 0 && dy == 0) || x < 0 || y < 0 || x >= columns || y >= rows) continue;
                 const int j = tileOfCell[std::size_t(y) * columns + x];
-                if (j < 0 || tiles[i].samples <= 0) continue;
+                if (tiles[i].samples <= 0) continue;
+                if (j < 0) {
+                    if (!around) continue;
+                    const PixelRect cell{x * edge, y * edge,
+                                         std::min(edge, pixels.width - x * edge),
+                                         std::min(edge, pixels.height - y * edge)};
+                    const double scale = std::sqrt(double(around->samples) / tiles[i].samples);
+                    largest = std::max(largest, largestWithin(around->largest, area, cell, scale));
+                    continue;
+                }
                 const double scale = std::sqrt(double(tiles[j].samples) / tiles[i].samples);
                 // Its pixels cannot raise what was found already.
                 if (tiles[j].estimate.largest * scale <= largest) continue;
@@ -139,20 +148,24 @@ inline float codesMoved(float value, float encoded, float towards, float share) 
 }  // namespace
 
 double unseenLargest(const Image& image, const PixelRect& tile, const PixelRect& rendered,
-                     int samples, PixelLargest& pixels) {
+                     int samples, PixelLargest& pixels, const Image* around) {
     const float share = 1.0f / float(std::max(1, samples));
+    // Where the neighbours may be: the rendered pixels, or the whole picture
+    // with `around` standing in past them.
+    const PixelRect seen = around ? PixelRect{0, 0, image.width, image.height} : rendered;
+    auto neighbour = [&](int x, int y) {
+        return around && !contains(rendered, x, y) ? around->pixel(x, y) : image.pixel(x, y);
+    };
     float tileLargest = 0.0f;
     for (int y = tile.y; y < tile.y + tile.height; ++y) {
-        const int y0 = std::max(rendered.y, y - 1),
-                  y1 = std::min(rendered.y + rendered.height - 1, y + 1);
+        const int y0 = std::max(seen.y, y - 1), y1 = std::min(seen.y + seen.height - 1, y + 1);
         for (int x = tile.x; x < tile.x + tile.width; ++x) {
-            const int x0 = std::max(rendered.x, x - 1),
-                      x1 = std::min(rendered.x + rendered.width - 1, x + 1);
+            const int x0 = std::max(seen.x, x - 1), x1 = std::min(seen.x + seen.width - 1, x + 1);
             const float* own = image.pixel(x, y);
             float lowest[3] = {own[0], own[1], own[2]}, highest[3] = {own[0], own[1], own[2]};
             for (int ny = y0; ny <= y1; ++ny)
                 for (int nx = x0; nx <= x1; ++nx) {
-                    const float* next = image.pixel(nx, ny);
+                    const float* next = neighbour(nx, ny);
                     for (int c = 0; c < 3; ++c) {
                         lowest[c] = std::min(lowest[c], next[c]);
                         highest[c] = std::max(highest[c], next[c]);

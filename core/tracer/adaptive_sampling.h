@@ -58,6 +58,12 @@ struct AdaptiveSampling {
     bool centresFirst = false;  // a first pass of pixel centres, estimated from neighbours
 };
 
+// Whether the render keeps each pixel's estimate of its largest error
+// (PixelLargest), and so looks at its neighbours (unseenLargest()).
+inline bool limitsLargest(const AdaptiveSampling& limits) {
+    return limits.allowedLargest < 255.0;
+}
+
 // An adaptive render's tile edge (RenderOptions::tileSize is for fixed
 // renders). Samples are chosen per tile: in tiles of 32 one pixel's estimate
 // took a thousand pixels to more samples; in tiles of 16, with the pixels two
@@ -137,6 +143,16 @@ struct PixelLargest {
     float at(int x, int y) const { return codes[std::size_t(y) * width + x]; }
 };
 
+// The picture around a render's regions as the whole render would show it,
+// for the estimates that look past a tile's border, which a region rendered
+// alone cannot (RenderOptions::aroundRegions): a sample of the picture's
+// tiles then takes the samples it takes in the whole (target_prediction.h).
+struct AroundRegions {
+    Image image;           // the render's size; read within kNearbyReach of the regions
+    PixelLargest largest;  // each of those pixels' estimate of its largest error...
+    int samples = 0;       // ...at these samples a pixel
+};
+
 // Sets each tile's nearbyLargest: the largest of its pixels' estimates and
 // of those within kNearbyReach pixels outside it, a neighbour's carried to
 // the tile's samples as errors go, with the inverse square root of the
@@ -144,9 +160,10 @@ struct PixelLargest {
 // chance a quarter of the time; an edge or a caustic that crosses a tile
 // border shows in the pixels on both sides, so the pixels beside a tile
 // vouch for its own. `rects[i]` are tile i's pixels, on a grid of `edge`.
+// Where no tile is rendered next to one, `around`'s pixels vouch, if given.
 void estimateNearbyLargest(std::vector<TileSamplingState>& tiles,
                            const std::vector<PixelRect>& rects, int edge,
-                           const PixelLargest& pixels);
+                           const PixelLargest& pixels, const AroundRegions* around = nullptr);
 
 // What a pixel's samples may all have missed. Where a feature covers a
 // sliver of a pixel, a corner of a checker square or the rim of a ball, no
@@ -160,9 +177,11 @@ void estimateNearbyLargest(std::vector<TileSamplingState>& tiles,
 // 640x480 still missed (docs/quality.md, "What the samples may miss").
 // After a pass, with its neighbours rendered: they are the colours a sliver
 // of it may have. Only neighbours within `rendered` count: outside a
-// render's regions the picture is black, not the scene.
+// render's regions the picture is black, not the scene. Unless `around`
+// shows the scene there (RenderOptions::aroundRegions): then neighbours
+// past `rendered` are its pixels.
 double unseenLargest(const Image& image, const PixelRect& tile, const PixelRect& rendered,
-                     int samples, PixelLargest& pixels);
+                     int samples, PixelLargest& pixels, const Image* around = nullptr);
 
 // The error of the centre samples in `tile` of `image`, from the differences
 // between each pixel and its right and lower neighbours inside the tile (a

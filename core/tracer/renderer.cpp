@@ -221,7 +221,7 @@ class TileRenderer {
             tileStates_[t].pixels = tiles_[t].w * tiles_[t].h;
         std::vector<Pass> passes = planPasses(settings_, options_);  // the preview, if any
         passes.resize(passes.front().kind == PassKind::Preview ? 1 : 0);
-        if (limits.allowedLargest < 255.0) {
+        if (limitsLargest(limits)) {
             pixelLargest_.width = s_.width, pixelLargest_.height = s_.height;
             pixelLargest_.codes.resize(std::size_t(s_.width) * s_.height);
         }
@@ -273,6 +273,7 @@ class TileRenderer {
             refine = nextTiles(limits, refine);
         }
         result.adaptive = adaptiveOutcome(tileStates_, limits, samplesPasses);
+        result.pixelLargest = std::move(pixelLargest_);
         result.samples = stopped_ ? 0 : result.adaptive->fewestSamples;
         return result;
     }
@@ -286,13 +287,19 @@ class TileRenderer {
             // where a pass over a 640x480 picture takes 10 ms on one thread.
             parallelFor(rendered, threads_, [&](int t) {
                 TileErrorEstimate& estimate = tileStates_[t].estimate;
-                const double unseen = unseenLargest(image_, rects[t], renderedAround(rects[t]),
-                                                    tileStates_[t].samples, pixelLargest_);
+                const double unseen =
+                    unseenLargest(image_, rects[t], renderedAround(rects[t]),
+                                  tileStates_[t].samples, pixelLargest_, aroundImage());
                 estimate.largest = std::max(estimate.largest, unseen);
             });
-            estimateNearbyLargest(tileStates_, rects, tileEdgeOf(options_), pixelLargest_);
+            estimateNearbyLargest(tileStates_, rects, tileEdgeOf(options_), pixelLargest_,
+                                  options_.aroundRegions);
         }
         return tilesToRefine(tileStates_, limits);
+    }
+
+    const Image* aroundImage() const {
+        return options_.aroundRegions ? &options_.aroundRegions->image : nullptr;
     }
 
     // The pixels next to `tile` that this render renders: its region's.
@@ -559,6 +566,12 @@ RenderResult render(const Scene& scene, const RenderOptions& options, const Tile
         throw std::invalid_argument(*problem);
     if (auto problem = alsoAtDepthsProblem(scene.render, options))
         throw std::invalid_argument(*problem);
+    if (const AroundRegions* around = options.aroundRegions;
+        around &&
+        (around->image.width != scene.render.width || around->image.height != scene.render.height ||
+         around->largest.width != scene.render.width ||
+         around->largest.height != scene.render.height))
+        throw std::invalid_argument("the picture around the regions is not the render's size");
     // Here, not in a worker: a WHITTED_KERNEL this CPU cannot run throws to the caller.
     activeKernel();
     const auto start = std::chrono::steady_clock::now();

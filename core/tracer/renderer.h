@@ -47,6 +47,13 @@ struct RenderOptions {
     // A farm task renders one; the speed probe, its tiles spread over the
     // picture, in one render (speed_probe.h).
     std::vector<PixelRect> regions{};
+    // With regions and a limit on the largest error: the scene around the
+    // regions as the whole render would show it. The estimates that look
+    // past a tile's border (unseenLargest(), estimateNearbyLargest()) then
+    // look past a region's, and a sample of the picture's tiles takes the
+    // samples it takes in the whole (target_prediction.h). Not owned; null:
+    // a region sees only itself.
+    const AroundRegions* aroundRegions = nullptr;
     // Set: each tile is sampled until the picture's estimated error is under
     // these limits (adaptive_sampling.h), at most maxSamples per pixel; the
     // scene's samples_per_pixel is not used. Samples come from
@@ -143,6 +150,9 @@ struct RenderResult {
     bool completed = false;                   // false when stopped early
     std::optional<AdaptiveOutcome> adaptive;  // set by adaptive renders
     std::vector<Image> atDepths;              // one for each of RenderOptions::alsoAtDepths
+    // An adaptive render with a limit on the largest error: each rendered
+    // pixel's estimate of it, in codes, at the samples its tile reached.
+    PixelLargest pixelLargest;
 };
 
 // Renders the scene with its render settings. Throws std::invalid_argument for a

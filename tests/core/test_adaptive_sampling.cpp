@@ -53,6 +53,22 @@ TEST(AdaptiveSampling, APixelFurtherFromTheBorderDoesNot) {
     EXPECT_TRUE(tilesToRefine(t.states, AdaptiveSampling{1e9, 51.2, 1024}).empty());
 }
 
+// A region rendered alone (a prediction's tile) has no tile beside it; the
+// scene around it (AroundRegions) speaks for the whole render's, carried
+// from its samples to the tile's. The right tile alone, at 2 samples.
+TEST(AdaptiveSampling, WithNoTileBeside_TheSceneAroundTheRegionSpeaksForIt) {
+    TwoTiles t(8, 2);
+    t.states.erase(t.states.begin());
+    t.rects.erase(t.rects.begin());
+    AroundRegions around{Image(32, 16), t.pixels, 8};
+    around.largest.at(15 - (kNearbyReach - 1), 7) = 40.0f;
+    around.largest.at(15 - kNearbyReach, 3) = 90.0f;  // too far in to speak
+    estimateNearbyLargest(t.states, t.rects, kAdaptiveTileEdge, t.pixels);
+    EXPECT_DOUBLE_EQ(t.states[0].nearbyLargest, 0.0);
+    estimateNearbyLargest(t.states, t.rects, kAdaptiveTileEdge, t.pixels, &around);
+    EXPECT_DOUBLE_EQ(t.states[0].nearbyLargest, 80.0);  // 40 * sqrt(8 / 2)
+}
+
 TEST(AdaptiveSampling, ANeighbourWithFewerSamplesSpeaksForLess) {
     TwoTiles t(2, 32);
     t.estimate(15, 0, 40.0f);  // in the corner, beside the other tile
@@ -108,6 +124,29 @@ TEST(AdaptiveSampling, UnseenLargest_OneMoreSampleOfTheMostDifferentNeighbour) {
     const double grey = 255.0 * (srgbEncode(0.3f) - srgbEncode(0.3f * 31.0f / 32.0f));
     EXPECT_NEAR(grey, 2.1, 0.05);
     EXPECT_NEAR(pixels.at(2, 2), grey, 0.01);
+}
+
+// A region rendered alone (a prediction's tile) sees past its border only
+// where it is told what lies there (RenderOptions::aroundRegions). The same
+// picture, the region its right three columns: (2, 2) is its own, and the
+// grey pixel beside it at (1, 2) is outside, shown only by `around`.
+TEST(AdaptiveSampling, UnseenLargest_PastTheRegion_OnlyWhatTheSceneAroundItShows) {
+    Image image(5, 5), around(5, 5);
+    for (int c = 0; c < 3; ++c) around.pixel(1, 2)[c] = 0.3f;
+    const PixelRect region{2, 0, 3, 5};
+    PixelLargest pixels;
+    pixels.width = 5, pixels.height = 5;
+    pixels.codes.assign(25, 0.0f);
+    EXPECT_EQ(unseenLargest(image, region, region, 32, pixels), 0.0);  // all black
+    const double beside = 255.0 * srgbEncode(0.3f / 32.0f);
+    EXPECT_NEAR(unseenLargest(image, region, region, 32, pixels, &around), beside, 0.01);
+    for (int y : {1, 2, 3}) EXPECT_NEAR(pixels.at(2, y), beside, 0.01) << y;
+    EXPECT_EQ(pixels.at(3, 2), 0.0f);  // not beside it
+    // Inside the region its own pixels count, not `around`'s.
+    for (int c = 0; c < 3; ++c) around.pixel(4, 4)[c] = 0.3f;
+    pixels.codes.assign(25, 0.0f);
+    unseenLargest(image, region, region, 32, pixels, &around);
+    EXPECT_EQ(pixels.at(3, 3), 0.0f);
 }
 
 }  // namespace

@@ -123,6 +123,22 @@ TEST(RenderRegion, OverlappingRegionsAreRefusedNamingBoth) {
     }
 }
 
+TEST(RenderRegion, TheSceneAroundTheRegionsOfAnotherSize_Refused) {
+    const Scene scene = smallSeed();
+    AroundRegions around;
+    around.image = Image(scene.render.width, scene.render.height + 1);
+    around.largest.width = scene.render.width, around.largest.height = scene.render.height;
+    RenderOptions o;
+    o.regions = {{0, 0, 16, 16}};
+    o.aroundRegions = &around;
+    try {
+        render(scene, o);
+        ADD_FAILURE() << "a picture around the regions of another size accepted";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_STREQ(e.what(), "the picture around the regions is not the render's size");
+    }
+}
+
 // Regions written as OpenEXR parts, read back, merged: the whole render.
 TEST(ImageParts, ExrPartsKeepTheirPlaceAndMergeIntoTheWhole) {
     const Scene scene = smallSeed();

@@ -47,12 +47,13 @@ TEST(TargetPrediction, GeneratedFields_SamplesRaysAndEstimateOfTheRenderItPredic
             EXPECT_NEAR(p.psnrDb, rendered, 2.0);
             // Within the 25%, and closer: scaled by the pixels' ratio the
             // tiles' rays were 0.86 to 1.09 of the render's, by the coarse
-            // picture's rays 1.01 to 1.07; 0.81 to 1.08 since the render
-            // looks past a tile's border for what a pixel's samples may miss
-            // (unseenLargest()), which the prediction's tiles, each rendered
-            // alone, cannot: the second field's Preview spends its extra
-            // samples on the rims of its balls, where rays are dear.
-            EXPECT_NEAR(rays, 1.0, 0.2);
+            // picture's rays 1.01 to 1.07. Since the render looks past a
+            // tile's border (unseenLargest(), estimateNearbyLargest()), the
+            // tiles rendered alone were 0.81 to 1.08: the second field's
+            // Preview spends its extra samples on the rims of its balls,
+            // where rays are dear. With the scene around them rendered too
+            // (AroundRegions), 0.96 to 1.11.
+            EXPECT_NEAR(rays, 1.0, 0.15);
             EXPECT_GT(p.seconds(), p.planSeconds);
         }
     }

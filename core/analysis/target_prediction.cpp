@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <optional>
 
 #include "analysis/speed_probe.h"
@@ -105,34 +107,57 @@ std::vector<PixelRect> ringAround(const std::vector<PixelRect>& tiles, int reach
 }
 
 // The scene around `tiles` for the estimates that look past a tile's border
-// (RenderOptions::aroundRegions), at `samples` a pixel: each pixel's colour,
-// and its halves' estimate of its largest error. None if stopped.
-std::optional<AroundRegions> aroundTiles(const Scene& planned, const std::vector<PixelRect>& tiles,
-                                         int samples, std::uint64_t& rays,
-                                         const StopPredicate& stop) {
+// (RenderOptions::aroundRegions): each pixel's colour, and its halves'
+// estimate of its largest error. Each tile's ring at the samples the tile
+// took rendered alone (`samplesOf`), which stand for its neighbours' in the
+// whole render: a neighbour's estimate is carried to a tile's samples by
+// their square root, which overstates it where the two differ much (with
+// every ring at 16, field.json's Final at 640x480 was predicted at 1.7 times
+// its rays). None if stopped.
+std::optional<AroundRegions> aroundTiles(const Scene& planned,
+                                         const std::map<int, std::vector<PixelRect>>& samplesOf,
+                                         std::uint64_t& rays, const StopPredicate& stop) {
+    const int width = planned.render.width, height = planned.render.height;
+    AroundRegions around{Image(width, height), PixelLargest{}, 1};  // carried to one sample
+    around.largest.width = width, around.largest.height = height;
+    around.largest.codes.resize(std::size_t(width) * height);
     RenderOptions options = oneShotOptions();
     options.sceneValidated = true;
     options.pruneBelowWeight = kQualityPruneWeight;  // as the render to the plan (applyPlan())
-    options.regions = ringAround(tiles, kNearbyReach, planned.render.width, planned.render.height);
-    // No limit met before `samples`: every tile is sampled up to them.
-    options.adaptive =
-        AdaptiveSampling{.allowedMse = 0.0, .allowedLargest = 0.0, .maxSamples = samples};
-    RenderResult around = render(planned, options, {}, stop);
-    rays += around.rays.total();
-    if (!around.completed) return std::nullopt;
-    return AroundRegions{std::move(around.image), std::move(around.pixelLargest), samples};
+    for (const auto& [samples, tiles] : samplesOf) {
+        options.regions = ringAround(tiles, kNearbyReach, width, height);
+        // No limit met before `samples`: every tile is sampled up to them.
+        options.adaptive =
+            AdaptiveSampling{.allowedMse = 0.0, .allowedLargest = 0.0, .maxSamples = samples};
+        const RenderResult ring = render(planned, options, {}, stop);
+        rays += ring.rays.total();
+        if (!ring.completed) return std::nullopt;
+        const float toOneSample = std::sqrt(float(samples));
+        for (const PixelRect& r : options.regions)
+            for (int y = r.y; y < r.y + r.height; ++y)
+                for (int x = r.x; x < r.x + r.width; ++x) {
+                    std::copy_n(ring.image.pixel(x, y), 3, around.image.pixel(x, y));
+                    around.largest.at(x, y) = ring.pixelLargest.at(x, y) * toOneSample;
+                }
+    }
+    return around;
 }
 
-// The samples the whole render's neighbours of the tiles stand at: those the
-// tiles took rendered alone, a power of two as a pass leaves them. Fewer
-// than the tiles take with their neighbours, but a neighbour's estimate is
-// carried to a tile's samples by their square root, which overstates it
-// where the two differ much: with 16 for a field's Final at 640x480, whose
-// tiles take 72 to 87 on average, they took 1.7 times the render's rays.
-int neighbourSamples(double meanAlone, int maxSamples) {
-    const int power = int(std::lround(std::log2(std::max(2.0, meanAlone))));
-    return std::min(1 << std::min(power, 16), maxSamples);
-}
+// The tiles of a render, by the samples each took.
+struct SamplesOfTiles {
+    std::mutex lock;
+    std::map<std::pair<int, int>, int> byCorner;
+    void note(const TileUpdate& t) {
+        std::lock_guard<std::mutex> hold(lock);
+        int& samples = byCorner[{t.x, t.y}];
+        samples = std::max(samples, t.progress.samples);
+    }
+    std::map<int, std::vector<PixelRect>> of(const std::vector<PixelRect>& tiles) {
+        std::map<int, std::vector<PixelRect>> grouped;
+        for (const PixelRect& t : tiles) grouped[std::max(1, byCorner[{t.x, t.y}])].push_back(t);
+        return grouped;
+    }
+};
 
 }  // namespace
 
@@ -165,15 +190,15 @@ TargetPrediction predictRenderTo(const Scene& scene, const QualityPlan& plan,
     options.sceneValidated = true;  // planning rendered it
     const double overhead = renderOverheadSeconds(planned, stop);
     p.probeRays = p.plan.probeRays;
-    RenderResult tiles = render(planned, options, {}, stop);
+    SamplesOfTiles alone;
+    RenderResult tiles = render(
+        planned, options, [&](const TileUpdate& t) { alone.note(t); }, stop);
     std::optional<AroundRegions> around;
     // Only the estimates of the largest error look past a tile. Rendered
     // alone, a field's tiles at 640x480 took 0.7 of the render's rays.
     if (limitsLargest(p.plan.sampling) && tiles.completed && tiles.adaptive) {
         p.probeRays += tiles.rays.total();
-        const int samples =
-            neighbourSamples(tiles.adaptive->meanSamples, p.plan.sampling.maxSamples);
-        around = aroundTiles(planned, options.regions, samples, p.probeRays, stop);
+        around = aroundTiles(planned, alone.of(options.regions), p.probeRays, stop);
         if (!around) return notPredicted(p, "stopped");
         options.aroundRegions = &*around;
         tiles = render(planned, options, {}, stop);

@@ -8,8 +8,8 @@
 // grid of kAdaptiveTileEdge), each pixel's samples bit for bit the render's,
 // the tiles judged among themselves (RenderOptions::regions), with the scene
 // around them rendered too, for the estimates that look past a tile's
-// border (RenderOptions::aroundRegions): at the samples the tiles take
-// rendered alone, then the tiles again beside it. Their mean
+// border (RenderOptions::aroundRegions): each tile's ring at the samples
+// the tile took rendered alone, then the tiles again beside it. Their mean
 // samples and estimated error stand for the picture's; their rays and CPU
 // time for the render's, scaled by the rays of a coarse one-sample picture
 // over those of its pixels under the tiles (a ratio estimate: glass that

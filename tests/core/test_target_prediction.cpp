@@ -52,7 +52,7 @@ TEST(TargetPrediction, GeneratedFields_SamplesRaysAndEstimateOfTheRenderItPredic
             // tiles rendered alone were 0.81 to 1.08: the second field's
             // Preview spends its extra samples on the rims of its balls,
             // where rays are dear. With the scene around them rendered too
-            // (AroundRegions), 0.96 to 1.11.
+            // (AroundRegions), 0.95 to 1.07.
             EXPECT_NEAR(rays, 1.0, 0.15);
             EXPECT_GT(p.seconds(), p.planSeconds);
         }

@@ -55,9 +55,8 @@ TEST(RenderRegion, EqualsThatPartOfTheWholeRenderAndIsZeroElsewhere) {
             int lit = 0;
             for (int y = 0; y < part.height; ++y)
                 for (int x = 0; x < part.width; ++x) {
-                    const bool inside =
-                        x >= r.x && x < r.x + r.width && y >= r.y && y < r.y + r.height;
-                    if (!inside) lit += part.pixel(x, y)[0] != 0 || part.pixel(x, y)[2] != 0;
+                    if (!contains(r, x, y))
+                        lit += part.pixel(x, y)[0] != 0 || part.pixel(x, y)[2] != 0;
                 }
             EXPECT_EQ(lit, 0) << "pixels rendered outside the region";
         }
@@ -105,8 +104,7 @@ TEST(RenderRegion, SeveralAtOnceEachEqualThatPartAndNothingElseIsRendered) {
     for (int y = 0; y < r.image.height; ++y)
         for (int x = 0; x < r.image.width; ++x) {
             bool inside = false;
-            for (const PixelRect& g : regions)
-                inside |= x >= g.x && x < g.x + g.width && y >= g.y && y < g.y + g.height;
+            for (const PixelRect& g : regions) inside |= contains(g, x, y);
             if (!inside) lit += r.image.pixel(x, y)[0] != 0 || r.image.pixel(x, y)[2] != 0;
         }
     EXPECT_EQ(lit, 0) << "pixels rendered outside the regions";

@@ -78,34 +78,41 @@ BucketCodes makeBucketCodes() {
 
 const BucketCodes kBucketCodes = makeBucketCodes();
 
-// srgbEncode() at the smallest float of each bucket; the last bucket's is
-// 1.0, where the buckets of values below 1 end.
-std::array<float, kBuckets> makeBucketStarts() {
-    std::array<float, kBuckets> starts{};
+// srgbEncode() at the smallest float of each bucket, and 1.0 past the last:
+// 1.0 itself is the last bucket's start, and its step to the next is zero.
+std::array<float, kBuckets + 1> makeBucketStarts() {
+    std::array<float, kBuckets + 1> starts{};
     for (int b = 0; b < kBuckets; ++b) {
         const std::uint32_t bits = static_cast<std::uint32_t>(b) << kBucketShift;
         float x;
         std::memcpy(&x, &bits, sizeof x);
         starts[b] = srgbEncode(x);
     }
+    starts[kBuckets] = 1.0f;
     return starts;
 }
 
-const std::array<float, kBuckets> kBucketStarts = makeBucketStarts();
+const std::array<float, kBuckets + 1> kBucketStarts = makeBucketStarts();
 
 }  // namespace
 
 namespace {
 
+// Without branches, so that the row form's loop gathers from the table:
+// negative values and NaNs (as unsigned bits, above infinity's) become 0,
+// values from 1.0 up 1.0, whose bucket starts at its own code with no step
+// to the next. A select on `linear > 0` instead, as encode8() has, leaves
+// GCC 12 a branch it does not vectorise here.
 inline float encodeFast(float linear) {
-    if (!(linear > 0.0f)) return 0.0f;
-    if (linear >= 1.0f) return 1.0f;
     std::uint32_t bits;
     std::memcpy(&bits, &linear, sizeof bits);
-    const std::uint32_t bucket = bits >> kBucketShift;
+    bits = std::min(bits, 0x3f800000u) & (bits > 0x7f800000u ? 0u : ~0u);
+    const std::int32_t bucket = std::int32_t(bits >> kBucketShift);
     // Within a bucket the mantissa's low bits step the value evenly.
-    const float t = float(bits & ((1u << kBucketShift) - 1)) * (1.0f / float(1u << kBucketShift));
-    return kBucketStarts[bucket] + t * (kBucketStarts[bucket + 1] - kBucketStarts[bucket]);
+    const float t =
+        float(std::int32_t(bits & ((1u << kBucketShift) - 1))) * (1.0f / float(1u << kBucketShift));
+    const float start = kBucketStarts[bucket], next = kBucketStarts[bucket + 1];
+    return start + t * (next - start);
 }
 
 }  // namespace

@@ -140,9 +140,19 @@ TileErrorEstimate centreSampleEstimate(const Image& image, const PixelRect& tile
 
 namespace {
 
-// The code a value moves by, a share of the way towards `towards`.
-inline float codesMoved(float value, float encoded, float towards, float share) {
-    return 255.0f * std::fabs(srgbEncodeFast(value + share * (towards - value)) - encoded);
+// One row of the neighbours unseenLargest() reads around a tile: the tile's
+// columns and one more on each side, within `seen` (a column or row past it
+// stands in by its nearest, which leaves a lowest and a highest as they
+// are), from `around` past `rendered` when it is given.
+void neighbourRow(const Image& image, const PixelRect& tile, int y, const PixelRect& seen,
+                  const PixelRect& rendered, const Image* around, float* row) {
+    y = std::clamp(y, seen.y, seen.y + seen.height - 1);
+    for (int x = tile.x - 1; x <= tile.x + tile.width; ++x) {
+        const int from = std::clamp(x, seen.x, seen.x + seen.width - 1);
+        const float* pixel =
+            around && !contains(rendered, from, y) ? around->pixel(from, y) : image.pixel(from, y);
+        std::copy(pixel, pixel + 3, row + 3 * (x - tile.x + 1));
+    }
 }
 
 }  // namespace
@@ -153,33 +163,47 @@ double unseenLargest(const Image& image, const PixelRect& tile, const PixelRect&
     // Where the neighbours may be: the rendered pixels, or the whole picture
     // with `around` standing in past them.
     const PixelRect seen = around ? PixelRect{0, 0, image.width, image.height} : rendered;
-    auto neighbour = [&](int x, int y) {
-        return around && !contains(rendered, x, y) ? around->pixel(x, y) : image.pixel(x, y);
-    };
+    const std::size_t values = 3 * std::size_t(tile.width), wide = values + 6;
+    // Three rows of neighbours, the one above the row at hand first; each row
+    // read once. Then, channel by channel, the lowest and highest of the
+    // column of three, and of three such columns side by side.
+    std::vector<float> rows(3 * wide), columnLow(wide), columnHigh(wide);
+    float* above = rows.data();
+    float* at = above + wide;
+    float* below = at + wide;
+    neighbourRow(image, tile, tile.y - 1, seen, rendered, around, above);
+    neighbourRow(image, tile, tile.y, seen, rendered, around, at);
+    // What one more sample of the lowest and of the highest neighbour would
+    // make of each value, as the user sees them. Where a neighbourhood is
+    // flat, the value is its own and moves by nothing.
+    std::vector<float> own(values), toLow(values), toHigh(values), moved(values);
     float tileLargest = 0.0f;
     for (int y = tile.y; y < tile.y + tile.height; ++y) {
-        const int y0 = std::max(seen.y, y - 1), y1 = std::min(seen.y + seen.height - 1, y + 1);
-        for (int x = tile.x; x < tile.x + tile.width; ++x) {
-            const int x0 = std::max(seen.x, x - 1), x1 = std::min(seen.x + seen.width - 1, x + 1);
-            const float* own = image.pixel(x, y);
-            float lowest[3] = {own[0], own[1], own[2]}, highest[3] = {own[0], own[1], own[2]};
-            for (int ny = y0; ny <= y1; ++ny)
-                for (int nx = x0; nx <= x1; ++nx) {
-                    const float* next = neighbour(nx, ny);
-                    for (int c = 0; c < 3; ++c) {
-                        lowest[c] = std::min(lowest[c], next[c]);
-                        highest[c] = std::max(highest[c], next[c]);
-                    }
-                }
-            float& estimate = pixels.at(x, y);
-            for (int c = 0; c < 3; ++c) {
-                if (lowest[c] == highest[c]) continue;  // a flat neighbourhood hides nothing
-                const float encoded = srgbEncodeFast(own[c]);
-                estimate = std::max({estimate, codesMoved(own[c], encoded, lowest[c], share),
-                                     codesMoved(own[c], encoded, highest[c], share)});
-            }
+        neighbourRow(image, tile, y + 1, seen, rendered, around, below);
+        for (std::size_t i = 0; i < wide; ++i) {
+            columnLow[i] = std::min({above[i], at[i], below[i]});
+            columnHigh[i] = std::max({above[i], at[i], below[i]});
+        }
+        const float* value = at + 3;
+        for (std::size_t i = 0; i < values; ++i) {
+            const float low = std::min({columnLow[i], columnLow[i + 3], columnLow[i + 6]});
+            const float high = std::max({columnHigh[i], columnHigh[i + 3], columnHigh[i + 6]});
+            toLow[i] = value[i] + share * (low - value[i]);
+            toHigh[i] = value[i] + share * (high - value[i]);
+        }
+        srgbEncodeFast(value, values, own.data());
+        srgbEncodeFast(toLow.data(), values, toLow.data());
+        srgbEncodeFast(toHigh.data(), values, toHigh.data());
+        for (std::size_t i = 0; i < values; ++i)
+            moved[i] =
+                255.0f * std::max(std::fabs(toLow[i] - own[i]), std::fabs(toHigh[i] - own[i]));
+        for (int x = 0; x < tile.width; ++x) {
+            float& estimate = pixels.at(tile.x + x, y);
+            estimate = std::max({estimate, moved[3 * x], moved[3 * x + 1], moved[3 * x + 2]});
             tileLargest = std::max(tileLargest, estimate);
         }
+        std::swap(above, at);  // the next row's three: this row's, the one below, a new one
+        std::swap(at, below);
     }
     return tileLargest;
 }

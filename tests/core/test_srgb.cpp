@@ -42,6 +42,9 @@ TEST(Srgb, FastEncodeIsWithinAFourHundredthOfACodeOfTheFormula) {
     EXPECT_GT(worst, 0.0);  // it interpolates: not the formula itself
     EXPECT_EQ(srgbEncodeFast(-1.0f), 0.0f);
     EXPECT_EQ(srgbEncodeFast(std::nanf("")), 0.0f);
+    EXPECT_EQ(srgbEncodeFast(-std::nanf("")), 0.0f);
+    EXPECT_EQ(srgbEncodeFast(-0.0f), 0.0f);
+    EXPECT_EQ(srgbEncodeFast(-INFINITY), 0.0f);
     EXPECT_EQ(srgbEncodeFast(1.0f), 1.0f);
     EXPECT_EQ(srgbEncodeFast(INFINITY), 1.0f);
     EXPECT_NEAR(srgbEncodeFast(0.5f) * 255.0f, 187.52f, 0.01f);
@@ -65,7 +68,8 @@ TEST(Srgb, DecodeThenEncodeGivesTheSameCode) {
 
 // The row forms give what the single ones give, value for value, odd inputs too.
 TEST(Srgb, RowFormsEqualTheSingleOnes) {
-    std::vector<float> values = {-1.0f, 0.0f, std::nanf(""), 1.0f, 7.5f, INFINITY, 0.5f};
+    std::vector<float> values = {-1.0f, 0.0f, -0.0f,    std::nanf(""), -std::nanf(""),
+                                 1.0f,  7.5f, INFINITY, -INFINITY,     0.5f};
     for (std::uint32_t bits = 0; bits <= 0x3f800000u; bits += 1009) {
         float x;
         std::memcpy(&x, &bits, sizeof x);

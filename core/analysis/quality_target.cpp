@@ -264,6 +264,14 @@ double codesApart(const float* a, const float* b) {
     return 255.0 * displayDifference(a, b);
 }
 
+// At least codesApart(a, b), from the 8-bit codes (displayDifferenceAtMost()):
+// the pictures' checks need the exact difference only where it may be over
+// a limit or the largest so far, and its std::pow was most of their loops.
+double codesApartAtMost(const float* a, const float* b) {
+    if (a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) return 0.0;
+    return 255.0 * displayDifferenceAtMost(a, b);
+}
+
 // Two renders of one grid (the probe's or the picture's) at two depths: at
 // the pixels' centres, and where the picture is also checked with several
 // samples a pixel, those too.
@@ -277,17 +285,22 @@ struct DepthPair {
     struct Apart {
         double centres = 0.0, sampled = 0.0;  // codes
     };
-    Apart at(int x, int y) const {
-        Apart a{codesApart(shallow.pixel(x, y), deep.pixel(x, y))};
-        if (shallowSampled)
-            a.sampled = codesApart(shallowSampled->pixel(x, y), deepSampled->pixel(x, y));
-        return a;
-    }
+    Apart at(int x, int y) const { return apart(x, y, codesApart); }
+    // At least at(x, y), without std::pow (codesApartAtMost()).
+    Apart atMost(int x, int y) const { return apart(x, y, codesApartAtMost); }
     // Whether a pixel may hold a sliver over `limit`: its centres are over it,
     // or its samples' mean over 1/n of it (one of n samples sees a sliver,
     // and their mean shows 1/n of it).
     bool over(const Apart& a, double limit) const {
         return a.centres > limit || samples * a.sampled > limit;
+    }
+
+  private:
+    Apart apart(int x, int y, double (*codes)(const float*, const float*)) const {
+        Apart a{codes(shallow.pixel(x, y), deep.pixel(x, y))};
+        if (shallowSampled)
+            a.sampled = codes(shallowSampled->pixel(x, y), deepSampled->pixel(x, y));
+        return a;
     }
 };
 
@@ -311,7 +324,13 @@ RenderPixels renderPixelsUnder(const DepthPair& pair, double codes, int width, i
         constexpr int kNoRun = -1;  // not std::optional: GCC 12 warns it may be unset
         int runStart = kNoRun;
         for (int px = 0; px <= grid.width; ++px) {
-            const DepthPair::Apart apart = px < grid.width ? pair.at(px, py) : DepthPair::Apart{};
+            DepthPair::Apart apart;
+            if (px < grid.width) {
+                apart = pair.atMost(px, py);
+                if (pair.over(apart, codes) ||
+                    std::max(apart.centres, apart.sampled) > under.largestElsewhere)
+                    apart = pair.at(px, py);  // what it may be would change something
+            }
             if (pair.over(apart, codes)) {
                 if (runStart == kNoRun) runStart = px;
                 continue;
@@ -337,7 +356,8 @@ double largestDifference(const Image& a, const Image& b, const std::vector<Pixel
     for (const PixelRect& r : rects)
         for (int y = r.y; y < r.y + r.height; ++y)
             for (int x = r.x; x < r.x + r.width; ++x)
-                largest = std::max(largest, codesApart(a.pixel(x, y), b.pixel(x, y)));
+                if (codesApartAtMost(a.pixel(x, y), b.pixel(x, y)) > largest)
+                    largest = std::max(largest, codesApart(a.pixel(x, y), b.pixel(x, y)));
     return largest;
 }
 

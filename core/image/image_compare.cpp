@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "image/srgb.h"
@@ -15,6 +16,16 @@ float displayDifference(const float* a, const float* b) {
         largest = std::max(largest, std::fabs(srgbEncode(a[c]) - srgbEncode(b[c])));
     }
     return largest;
+}
+
+float displayDifferenceAtMost(const float* a, const float* b) {
+    int largestCodes = 0;
+    for (int c = 0; c < 3; ++c) {
+        if (!std::isfinite(a[c]) || !std::isfinite(b[c])) return 1.0f;
+        largestCodes =
+            std::max(largestCodes, std::abs(int(srgbEncode8(a[c])) - int(srgbEncode8(b[c]))));
+    }
+    return (float(largestCodes) + kCodeRoundingSlack) / 255.0f;
 }
 
 ImageDifference compareImages(const Image& a, const Image& b, float threshold) {

@@ -14,6 +14,16 @@ namespace whitted {
 // in [0, 1]. A NaN or infinite channel on either side counts as 1.
 float displayDifference(const float* a, const float* b);
 
+// Each 8-bit code is its encoded value rounded, so two encoded values differ
+// by less than one code more than their codes do; the rest is float
+// arithmetic's.
+inline constexpr float kCodeRoundingSlack = 1.01f;
+
+// At least displayDifference(a, b), from the pixels' 8-bit codes: no
+// std::pow, for a search that needs the exact difference only where it may
+// be over a limit or a largest so far.
+float displayDifferenceAtMost(const float* a, const float* b);
+
 struct ImageDifference {
     std::size_t pixels = 0;  // pixels compared
     std::size_t over = 0;    // pixels whose displayDifference() exceeds the threshold

@@ -13,9 +13,6 @@ namespace whitted {
 
 namespace {
 
-// One code for the two roundings, and some for the float arithmetic of encoding.
-constexpr float kRoundingSlack = 1.01f;
-
 double psnr(double mse, double peak) {
     if (mse == 0.0) return std::numeric_limits<double>::infinity();
     return 10.0 * std::log10(peak * peak / mse);
@@ -66,7 +63,7 @@ ErrorStats measureError(const Image& image, const Image& reference) {
             // that cannot beat the largest so far needs no std::pow (most of
             // this function's time, when the planning of a render measures
             // its probes).
-            if (!finite || (largestCodes + kRoundingSlack) / 255.0f > largest)
+            if (!finite || (largestCodes + kCodeRoundingSlack) / 255.0f > largest)
                 largest = std::max(largest, displayDifference(a, b));
         }
     }

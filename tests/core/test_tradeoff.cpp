@@ -85,6 +85,35 @@ TEST(ImageError, Largest_IsTheLargestDisplayDifferenceOfAnyPixel) {
     }
 }
 
+// What the pictures' checks skip std::pow by: the codes' bound is never
+// under the exact difference, and never over it by more than the two
+// roundings and their slack, on pairs as above; infinite is as far apart
+// as can be.
+TEST(ImageError, DifferenceAtMost_NeverUnderTheExactOne) {
+    std::uint32_t state = 54321;
+    auto next = [&] {
+        state = state * 1664525u + 1013904223u;
+        return float(state >> 8) / float(1u << 24);
+    };
+    int under = 0, tooFar = 0, pairs = 0;
+    for (const float spread : {0.02f, 0.004f, 0.0008f})
+        for (int i = 0; i < 200000; ++i, ++pairs) {
+            float a[3], b[3];
+            for (int c = 0; c < 3; ++c) {
+                a[c] = i % 7 == 0 ? 0.004f * next() : next();
+                b[c] = a[c] + (next() - 0.5f) * spread;
+            }
+            const float exact = displayDifference(a, b), atMost = displayDifferenceAtMost(a, b);
+            under += atMost < exact;
+            tooFar += (atMost - exact) * 255.0f > 1.0f + kCodeRoundingSlack;
+        }
+    EXPECT_EQ(under, 0) << "of " << pairs;
+    EXPECT_EQ(tooFar, 0) << "of " << pairs;
+    const float a[3] = {0.5f, std::numeric_limits<float>::infinity(), 0.5f}, b[3] = {};
+    EXPECT_EQ(displayDifferenceAtMost(a, b), 1.0f);
+    EXPECT_EQ(displayDifferenceAtMost(b, b), kCodeRoundingSlack / 255.0f);
+}
+
 TEST(Tradeoff, WithSettings_ScalesTheSizeAndSetsTheRest) {
     const Scene s = withSettings(test::seedScene(640, 480), {16, 3, Precision::Double, 0.5});
     EXPECT_EQ(s.render.width, 320);

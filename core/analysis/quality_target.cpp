@@ -304,28 +304,23 @@ struct DepthPair {
     }
 };
 
-// The render's pixels under the grid's pixels that may be over `codes`
-// (DepthPair::over()), as rectangles (one for each run of such grid pixels
-// along a row), and the largest difference of the grid's other pixels. Each
-// of the render's pixels lies under one grid pixel: the grid pixel's edges
-// rounded down to the render's.
+// Pixels of the render, as renderPixelsUnder() finds them.
 struct RenderPixels {
     std::vector<PixelRect> rects;
     std::size_t count = 0;
     double largestElsewhere = 0.0;
 };
 
-RenderPixels renderPixelsUnder(const DepthPair& pair, double codes, int width, int height) {
-    RenderPixels under;
-    const Image& grid = pair.shallow;
-    const double across = double(width) / grid.width, down = double(height) / grid.height;
-    for (int py = 0; py < grid.height; ++py) {
+// renderPixelsUnder() over one rectangle of the grid's pixels.
+void addRenderPixelsUnder(const DepthPair& pair, double codes, const PixelRect& part, double across,
+                          double down, RenderPixels& under) {
+    for (int py = part.y; py < part.y + part.height; ++py) {
         const int y0 = int(py * down), y1 = int((py + 1) * down);
         constexpr int kNoRun = -1;  // not std::optional: GCC 12 warns it may be unset
         int runStart = kNoRun;
-        for (int px = 0; px <= grid.width; ++px) {
+        for (int px = part.x; px <= part.x + part.width; ++px) {
             DepthPair::Apart apart;
-            if (px < grid.width) {
+            if (px < part.x + part.width) {
                 apart = pair.atMost(px, py);
                 if (pair.over(apart, codes) ||
                     std::max(apart.centres, apart.sampled) > under.largestElsewhere)
@@ -348,6 +343,21 @@ RenderPixels renderPixelsUnder(const DepthPair& pair, double codes, int width, i
             under.count += std::size_t(x1 - x0) * (y1 - y0);
         }
     }
+}
+
+// The render's pixels under the grid's pixels that may be over `codes`
+// (DepthPair::over()), as rectangles (one for each run of such grid pixels
+// along a row), and the largest difference of the grid's other pixels. Each
+// of the render's pixels lies under one grid pixel: the grid pixel's edges
+// rounded down to the render's. Only the grid's pixels `within`, if given.
+RenderPixels renderPixelsUnder(const DepthPair& pair, double codes, int width, int height,
+                               const std::vector<PixelRect>& within = {}) {
+    RenderPixels under;
+    const Image& grid = pair.shallow;
+    const double across = double(width) / grid.width, down = double(height) / grid.height;
+    const std::vector<PixelRect> whole{{0, 0, grid.width, grid.height}};
+    for (const PixelRect& part : within.empty() ? whole : within)
+        addRenderPixelsUnder(pair, codes, part, across, down, under);
     return under;
 }
 
@@ -380,19 +390,34 @@ bool largestAtCentresOnly(const DepthError& e, const QualityTarget& t, double ms
 // to eight of the picture's across, and averaging a sliver over it
 // understated what one of the picture's pixels shows (two of twelve
 // generated fields missed their target).
-std::optional<double> largestWithSamples(ProbeRenders& probes, QualityPlan& plan,
-                                         const DepthPair& pair, int depth, int reference,
-                                         double largestShare) {
-    const RenderPixels over = renderPixelsUnder(pair, largestShare * *plan.target.largestCodes,
-                                                probes.renderWidth(), probes.renderHeight());
-    const double picture = double(probes.renderWidth()) * probes.renderHeight();
-    if (double(over.count) > kMostRenderPixelsJudged * picture) return std::nullopt;
+// The largest difference of `over`'s pixels of the picture at `depth` and
+// `reference` with kDepthLargestSamples each, and of the pixels elsewhere.
+double sampledLargest(ProbeRenders& probes, QualityPlan& plan, const RenderPixels& over, int depth,
+                      int reference) {
+    if (over.rects.empty()) return over.largestElsewhere;
     auto sampled = [&](int at) {
         return probes.atRenderSize(at, plan, kDepthLargestSamples, over.rects);
     };
     plan.depthLargestSamples = kDepthLargestSamples;
     return std::max(over.largestElsewhere,
                     largestDifference(sampled(depth), sampled(reference), over.rects));
+}
+
+// The pixels of the picture a depth's check at its size left in doubt (over
+// kPictureShareOfLargest of the limit at the centres or with samples), and
+// the largest difference of all the others.
+using InDoubt = RenderPixels;
+
+std::optional<double> largestWithSamples(ProbeRenders& probes, QualityPlan& plan,
+                                         const DepthPair& pair, int depth, int reference,
+                                         double largestShare, InDoubt* inDoubt = nullptr) {
+    RenderPixels over = renderPixelsUnder(pair, largestShare * *plan.target.largestCodes,
+                                          probes.renderWidth(), probes.renderHeight());
+    const double picture = double(probes.renderWidth()) * probes.renderHeight();
+    if (double(over.count) > kMostRenderPixelsJudged * picture) return std::nullopt;
+    const double largest = sampledLargest(probes, plan, over, depth, reference);
+    if (inDoubt) *inDoubt = std::move(over);
+    return largest;
 }
 
 // A pixel centre sees nothing of light trapped in glass that falls between
@@ -410,12 +435,20 @@ int pictureCheckSamples(double largestCodes, int maxSamples) {
     return std::clamp(samples, 1, std::clamp(maxSamples, 1, kDepthLargestSamples));
 }
 
+// A depth's error at the picture's size, and the pixels it left in doubt,
+// if it judged them with samples (none: it did not, or they were too many).
+struct PictureDepthError {
+    DepthError error;
+    std::optional<InDoubt> inDoubt;
+    int boundsFrom = -1;  // the depth whose MSE and other pixels' largest bound these
+};
+
 // The error of `depth` against `reference` at the picture's own size: its
 // centres and pictureCheckSamples() a pixel, and where a pixel may hold a
 // sliver over kPictureShareOfLargest of the limit, kDepthLargestSamples
 // (largestWithSamples()). The MSE is the centres'.
-DepthError pictureDepthError(ProbeRenders& probes, QualityPlan& plan, int depth, int reference,
-                             int maxSamples) {
+PictureDepthError pictureDepthError(ProbeRenders& probes, QualityPlan& plan, int depth,
+                                    int reference, int maxSamples) {
     const auto [shallow, deep] = probes.picturesAt(depth, reference, plan);
     DepthPair pair{*shallow, *deep};
     DepthError e = depthError(pair.shallow, pair.deep);
@@ -430,10 +463,47 @@ DepthError pictureDepthError(ProbeRenders& probes, QualityPlan& plan, int depth,
     plan.depthLargestSamples = 1;
     // Whatever the largest: at the picture's size a pixel off by more than
     // the whole limit may still be a sliver.
-    if (maxSamples > 1 && pair.over(largest, kPictureShareOfLargest * *plan.target.largestCodes))
-        e.largest = largestWithSamples(probes, plan, pair, depth, reference, kPictureShareOfLargest)
-                        .value_or(e.largest);
-    return e;
+    PictureDepthError checked{e, std::nullopt};
+    if (maxSamples > 1 && pair.over(largest, kPictureShareOfLargest * *plan.target.largestCodes)) {
+        InDoubt inDoubt;
+        if (auto sampled = largestWithSamples(probes, plan, pair, depth, reference,
+                                              kPictureShareOfLargest, &inDoubt)) {
+            checked.error.largest = *sampled;
+            checked.inDoubt = std::move(inDoubt);
+        }
+    }
+    return checked;
+}
+
+// pictureDepthError() of a depth deeper than one whose check left pixels in
+// doubt, against the same reference, with only those pixels rendered: each
+// level deeper adds light and takes none away (colours, weights and lights
+// are never negative), so a pixel within its share at a depth is within it
+// deeper too, and the MSE does not grow (but for the last bit of rounding:
+// EachLevelDeeperAddsLight_NoPixelDarker). The verdict is the one the whole
+// picture gives; the MSE and the other pixels' largest are the shallower
+// depth's, bounds on this one's. Checking fields at 640x480 went on from
+// depth 8 to 15 (bench_quality_fields), a render of the whole picture for
+// every three levels; mirrors.json's Preview from 6 to 8.
+PictureDepthError inDoubtDepthError(ProbeRenders& probes, QualityPlan& plan, int depth,
+                                    int reference, int maxSamples, const InDoubt& before,
+                                    double mseBefore, int boundsFrom) {
+    const double share = kPictureShareOfLargest * *plan.target.largestCodes;
+    const Image shallow = probes.atRenderSize(depth, plan, 1, before.rects);
+    DepthPair pair{shallow, probes.pictureAt(reference, plan, 1)};
+    Image shallowSampled;
+    pair.samples = pictureCheckSamples(*plan.target.largestCodes, maxSamples);
+    if (pair.samples > 1) {
+        shallowSampled = probes.atRenderSize(depth, plan, pair.samples, before.rects);
+        pair.shallowSampled = &shallowSampled;
+        pair.deepSampled = &probes.pictureAt(reference, plan, pair.samples);
+    }
+    InDoubt inDoubt =
+        renderPixelsUnder(pair, share, probes.renderWidth(), probes.renderHeight(), before.rects);
+    inDoubt.largestElsewhere = std::max(inDoubt.largestElsewhere, before.largestElsewhere);
+    plan.depthLargestSamples = 1;
+    const double largest = sampledLargest(probes, plan, inDoubt, depth, reference);
+    return {{mseBefore, largest}, std::move(inDoubt), boundsFrom};
 }
 
 // The probe sees one of every four to sixty-four of the picture's pixels, and
@@ -458,16 +528,26 @@ void checkDepthAtPictureSize(ProbeRenders& probes, int maxSamples, QualityPlan& 
     // A probe that found no depth that fits and is already at the deepest
     // keeps its verdict: the picture cannot take it deeper.
     if (plan.depthShort && plan.maxDepth >= kDeepestPlanned) return;
+    std::optional<InDoubt> inDoubt;  // what the depth before left, where its MSE fitted
     for (int depth = plan.maxDepth; depth <= kDeepestPlanned; ++depth) {
         const int reference = std::max(depth + kLookAhead, kDeepestPlanned);
-        const DepthError e = pictureDepthError(probes, plan, depth, reference, maxSamples);
+        const PictureDepthError checked =
+            inDoubt && reference == plan.referenceDepth
+                ? inDoubtDepthError(probes, plan, depth, reference, maxSamples, *inDoubt,
+                                    plan.depthMse,
+                                    plan.depthBoundsFrom >= 0 ? plan.depthBoundsFrom : depth - 1)
+                : pictureDepthError(probes, plan, depth, reference, maxSamples);
+        const DepthError& e = checked.error;
         plan.maxDepth = depth;
         plan.referenceDepth = reference;
         plan.depthMse = e.mse;
         plan.depthLargest = e.largest;
         plan.depthAtPictureSize = true;
+        plan.depthBoundsFrom = checked.boundsFrom;
         plan.depthShort = !depthFits(e, plan.target, kPictureShareOfLargest);
         if (!plan.depthShort) return;
+        const bool mseFits = e.mse <= kDepthShareOfMse * allowedMse(plan.target.psnrDb);
+        inDoubt = mseFits ? checked.inDoubt : std::nullopt;
     }
     plan.depthShort = true;
 }
@@ -562,10 +642,10 @@ std::string depthWhy(const QualityPlan& p) {
         format(", following no ray that passes on less than %g of the light", kQualityPruneWeight);
     why +=
         p.depthAtPictureSize
-            ? format(
-                  ": against depth %.0f, the picture's pixel centres change by %.3g codes^2 "
-                  "on average",
-                  p.referenceDepth, p.depthMse)
+            ? format(": against depth %.0f, the picture's pixel centres change by ",
+                     p.referenceDepth) +
+                  (p.depthBoundsFrom >= 0 ? "at most " : "") +
+                  format("%.3g codes^2 on average", p.depthMse)
             : format(": against depth %.0f, a %.0fx%.0f probe changes by %.3g codes^2 on average",
                      p.referenceDepth, p.probeWidth, p.probeHeight, p.depthMse);
     why += format(" (the target allows %.3g)", allowedMse(p.target.psnrDb));
@@ -577,6 +657,11 @@ std::string depthWhy(const QualityPlan& p) {
                              "differ most",
                              p.depthLargestSamples)
                     : std::string());
+    if (p.depthBoundsFrom >= 0)
+        why += format(
+            "; past depth %.0f the check rendered only the pixels it left in doubt, "
+            "so elsewhere the figures are that depth's",
+            p.depthBoundsFrom);
     if (!p.depthShort) return why;
     why += "\nno depth up to " + std::to_string(kDeepestPlanned) +
            " leaves the samples their share: rays trapped in glass or between mirrors "

@@ -94,6 +94,9 @@ struct QualityPlan {
     int depthLargestSamples = 1;  // a pixel, where the centres showed it (1: the centres)
     // depthMse and depthLargest were measured in the picture, not the probe.
     bool depthAtPictureSize = false;
+    // They are the depth before's, bounds on this one's: the check went on
+    // rendering only the pixels that depth left in doubt.
+    int depthBoundsFrom = -1;
     double precisionMse = 0.0;  // float against double at that depth, codes^2, in the probe
     int precisionSamples = 1;   // a pixel, in the probe that measured it
     int probeWidth = 0, probeHeight = 0;

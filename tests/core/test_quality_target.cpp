@@ -183,6 +183,71 @@ TEST(QualityTarget, DepthCheckedAtThePicturesSize_SeesWhatFallsBetweenTheProbesC
     EXPECT_LE(planned, limit / 2);
 }
 
+// What lets a check that goes on past a depth look again only at the pixels
+// it left in doubt: each level deeper adds light and takes none away, in
+// every channel of every pixel, pruned as plans render, but for rounding
+// (the deepest picture is the tracer's own sum of a path, the shallower
+// ones its levels summed: they part in the last bit). A field of glass and
+// mirror balls, its centres and two samples a pixel, depths 3 to 16.
+TEST(QualityTarget, EachLevelDeeperAddsLight_NoPixelDarker) {
+    Scene field =
+        sphereField({.count = 114, .seed = 502, .halfWidth = 4.0, .depth = 8.0}, 160, 120);
+    field.render.maxDepth = 16;
+    RenderOptions options = oneShotOptions();
+    options.pruneBelowWeight = kQualityPruneWeight;
+    for (int depth = 3; depth < 16; ++depth) options.alsoAtDepths.push_back(depth);
+    for (int samples : {1, 2}) {
+        field.render.samplesPerPixel = samples;
+        RenderResult r = render(field, options);
+        r.atDepths.push_back(std::move(r.image));
+        int darker = 0, brighter = 0;
+        for (std::size_t k = 1; k < r.atDepths.size(); ++k)
+            for (std::size_t i = 0; i < r.atDepths[k].rgb.size(); ++i) {
+                const float before = r.atDepths[k - 1].rgb[i], after = r.atDepths[k].rgb[i];
+                darker += after < before * (1.0f - 1e-6f);
+                brighter += after > before * (1.0f + 1e-6f);
+            }
+        EXPECT_EQ(darker, 0) << samples << " samples a pixel";
+        EXPECT_GT(brighter, 1000) << samples << " samples a pixel";  // light trapped in glass
+    }
+}
+
+// mirrors.json's Preview at the 640x480 it is saved at: the check at the
+// picture's size goes on from the probe's depth 6, 47.5 codes off depth 16
+// at 8 samples a pixel, to 7, 32.5 codes (32 allowed), to 8. Past the first
+// depth it renders only the pixels the depth before left in doubt, not the
+// whole picture again: its rays are under one and a half renders of the
+// picture's centres. Its verdict is the whole picture's: depth 7 with 8
+// samples everywhere is over the share, depth 8 within what the plan says.
+TEST(QualityTarget, CheckGoingOn_RendersOnlyThePixelsInDoubt) {
+    Scene mirrors = loadScene(WHITTED_SCENES_DIR "/mirrors.json");
+    ASSERT_EQ(mirrors.render.width, 640);
+    const QualityPlan plan = planQuality(mirrors, previewQuality());
+    EXPECT_EQ(plan.maxDepth, 8) << plan.why;
+    EXPECT_TRUE(plan.depthAtPictureSize);
+    EXPECT_FALSE(plan.depthShort);
+    Scene centres = mirrors;
+    centres.render.samplesPerPixel = 1;
+    centres.render.maxDepth = plan.referenceDepth;
+    RenderOptions pruned = oneShotOptions();
+    pruned.pruneBelowWeight = kQualityPruneWeight;
+    const std::uint64_t pictureRays = render(centres, pruned).rays.total();
+    std::printf("planning traced %.2fM rays, one render of the centres %.2fM\n",
+                plan.probeRays / 1e6, pictureRays / 1e6);
+    EXPECT_LT(double(plan.probeRays), 1.5 * double(pictureRays));
+    auto largestAt = [&](int depth) {
+        Scene s = mirrors;
+        s.render.samplesPerPixel = 8;
+        s.render.maxDepth = depth;
+        const Image shallow = render(s, pruned).image;
+        s.render.maxDepth = plan.referenceDepth;
+        return measureError(shallow, render(s, pruned).image).largest;
+    };
+    const double share = kPictureShareOfLargest * *previewQuality().largestCodes;
+    EXPECT_GT(largestAt(plan.maxDepth - 1), share);
+    EXPECT_LE(largestAt(plan.maxDepth), plan.depthLargest);
+}
+
 // bench_quality_fields' fields by seed, at 80x60 to keep the test short.
 Scene benchField(int seed) {
     Scene field = sphereField(untunedField(seed));

@@ -100,8 +100,8 @@ namespace {
 
 // Without branches, so that the row form's loop gathers from the table:
 // negative values and NaNs (as unsigned bits, above infinity's) become 0,
-// values from 1.0 up 1.0, whose bucket starts at its own code with no step
-// to the next. A select on `linear > 0` instead, as encode8() has, leaves
+// and values of 1.0 and over become 1.0, whose bucket starts at its own
+// value with no step to the next. A select on `linear > 0` instead, as encode8() has, leaves
 // GCC 12 a branch it does not vectorise here.
 inline float encodeFast(float linear) {
     std::uint32_t bits;

@@ -218,7 +218,10 @@ TEST(QualityTarget, EachLevelDeeperAddsLight_NoPixelDarker) {
 // depth it renders only the pixels the depth before left in doubt, not the
 // whole picture again: its rays are under one and a half renders of the
 // picture's centres. Its verdict is the whole picture's: depth 7 with 8
-// samples everywhere is over the share, depth 8 within what the plan says.
+// samples everywhere is over the share, depth 8 within what the plan says
+// (14.3 codes against 28.4, depth 6's figure for the pixels not in doubt;
+// when the check rendered the whole picture again it said 9.9, for the
+// centres of those pixels).
 TEST(QualityTarget, CheckGoingOn_RendersOnlyThePixelsInDoubt) {
     Scene mirrors = loadScene(WHITTED_SCENES_DIR "/mirrors.json");
     ASSERT_EQ(mirrors.render.width, 640);
@@ -245,7 +248,10 @@ TEST(QualityTarget, CheckGoingOn_RendersOnlyThePixelsInDoubt) {
     };
     const double share = kPictureShareOfLargest * *previewQuality().largestCodes;
     EXPECT_GT(largestAt(plan.maxDepth - 1), share);
-    EXPECT_LE(largestAt(plan.maxDepth), plan.depthLargest);
+    const double atPlanned = largestAt(plan.maxDepth);
+    std::printf("depth %d with 8 samples a pixel: %.1f codes, the plan says %.1f at most\n",
+                plan.maxDepth, atPlanned, plan.depthLargest);
+    EXPECT_LE(atPlanned, plan.depthLargest);
 }
 
 // bench_quality_fields' fields by seed, at 80x60 to keep the test short.

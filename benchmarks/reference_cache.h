@@ -18,7 +18,7 @@ namespace whitted::bench {
 
 // The scene in double, 512 samples a pixel, kDeepReferenceDepth; `name`
 // says which scene it is, as the file's name in the cache (letters and
-// digits kept, the rest dashes).
+// digits kept, the rest dashes, then the size and the depth).
 inline Image cachedReference(const Scene& scene, std::string name) {
     const char* folder = std::getenv("WHITTED_REFERENCE_CACHE");
     if (!folder) return convergedReference(scene, 512, kDeepReferenceDepth);
@@ -26,7 +26,8 @@ inline Image cachedReference(const Scene& scene, std::string name) {
         if (!std::isalnum(static_cast<unsigned char>(c))) c = '-';
     const std::filesystem::path file =
         std::filesystem::path(folder) / (name + "-" + std::to_string(scene.render.width) + "x" +
-                                         std::to_string(scene.render.height) + ".exr");
+                                         std::to_string(scene.render.height) + "-depth" +
+                                         std::to_string(kDeepReferenceDepth) + ".exr");
     if (std::filesystem::exists(file)) return readImage(file);
     std::filesystem::create_directories(file.parent_path());
     Image reference = convergedReference(scene, 512, kDeepReferenceDepth);

@@ -1,5 +1,6 @@
 #include "analysis/quality_check.h"
 
+#include <algorithm>
 #include <chrono>
 #include <utility>
 
@@ -17,7 +18,9 @@ Image convergedReference(Scene scene, int samples, int depth) {
     scene.render.precision = Precision::Double;
     scene.render.samplesPerPixel = samples;
     scene.render.maxDepth = depth;
-    return render(scene, oneShotOptions()).image;
+    RenderOptions options = oneShotOptions();
+    options.pruneBelowWeight = kReferencePruneWeight;
+    return render(scene, options).image;
 }
 
 bool meetsTarget(const ErrorStats& e, const QualityTarget& t) {
@@ -60,7 +63,7 @@ FixedCheck checkFixed(const Scene& scene, const Image& reference) {
 
 FixedCheck fewestFixedSamplesMeeting(Scene scene, const QualityTarget& target, int depth,
                                      const Image& reference, int maxSamples) {
-    scene.render.maxDepth = depth;
+    scene.render.maxDepth = std::min(depth, kDeepestChosen);
     for (int spp = 1; spp <= maxSamples; spp *= 2) {
         scene.render.samplesPerPixel = spp;
         const FixedCheck c = checkFixed(scene, reference);

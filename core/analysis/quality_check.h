@@ -15,17 +15,24 @@
 namespace whitted {
 
 // The scene in double with `samples` samples a pixel (subPixelSample()'s
-// pattern) at `depth`: what "converged" means in these checks.
+// pattern) at `depth`, following no ray that passes on less than
+// kReferencePruneWeight of the light: what "converged" means in these checks.
 Image convergedReference(Scene scene, int samples = 512, int depth = 14);
 
-// A reference as deep as a plan's check at the picture's size looks: three
-// levels past the deepest depth a plan chooses. Where glass keeps rays
-// bright, depth 14 is not converged (bench_quality_fields' seventeenth field
-// has a pixel 80 codes brighter at 17), and a plan at 16 would be judged
-// against a picture further from the truth than itself. On such fields it
-// costs two to ten times depth 14, so the benches use it and the tests,
-// whose fields settle sooner, keep 14.
-inline constexpr int kDeepReferenceDepth = kDeepestChosen + 3;
+// A hundredth of what a render to a quality leaves out (kQualityPruneWeight):
+// a ray this light changes a pixel near black by about a hundredth of a
+// code. Followed whole, a field of glass balls doubles its rays with each
+// level, and a reference as deep as kDeepReferenceDepth would never finish.
+inline constexpr double kReferencePruneWeight = 1e-6;
+
+// A reference as deep as a plan's check at the picture's size looks: the
+// deepest depth SPEC allows, as deep as a plan goes. Where glass keeps rays
+// bright, light trapped among the balls of a generated field still changes
+// pixels by 100 codes from depth 28 to 32; a reference shallower than a
+// plan would judge it against a picture further from the truth than itself.
+// On such fields it costs several times depth 14, so the benches use it and
+// the tests, whose fields settle sooner, keep 14.
+inline constexpr int kDeepReferenceDepth = kMaxDepth;
 
 bool meetsTarget(const ErrorStats& error, const QualityTarget& target);
 
@@ -66,7 +73,11 @@ struct FixedCheck {
 FixedCheck checkFixed(const Scene& scene, const Image& reference);
 
 // The fewest samples a pixel, a power of two up to maxSamples, meeting the
-// target at `depth` with the scene's own pattern and precision.
+// target at `depth` with the scene's own pattern and precision; at
+// kDeepestChosen where `depth` is deeper. A fixed render follows every ray
+// SPEC spawns, and past 16 a field of glass balls doubles them with each
+// level (a render to a quality prunes them, kQualityPruneWeight): a fixed
+// setting no user would wait for is no setting to compare with.
 FixedCheck fewestFixedSamplesMeeting(Scene scene, const QualityTarget& target, int depth,
                                      const Image& reference, int maxSamples = 256);
 

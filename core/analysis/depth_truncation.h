@@ -26,11 +26,14 @@ Image depthTruncationMap(const Scene& scene, const StopPredicate& stop = {});
 // The largest value of a truncation map.
 float largestTruncation(const Image& map);
 
-// The deepest max_depth the program chooses by itself (a reference render's,
-// a render to a quality's). Where light is trapped in glass balls the
+// The deepest max_depth the program chooses by itself for a render that
+// follows every ray SPEC spawns (the trade-off tool's reference, a fixed
+// setting compared with). Where light is trapped in glass balls the
 // truncation does not settle before depth 20 and beyond, and each level
 // costs more than the last (a 1-sample render of scenes/field.json: 0.1 s
-// at depth 8, 0.7 s at 17, 6.9 s at 25).
+// at depth 8, 0.7 s at 17, 6.9 s at 25). A render to a quality leaves out
+// the rays too light to matter and goes as deep as SPEC allows
+// (quality_target.cpp, kDeepestPlanned).
 inline constexpr int kDeepestChosen = 16;
 
 // The smallest max_depth (up to kMaxDepth) whose truncation map stays below

@@ -71,7 +71,7 @@ constexpr double kLongFirstProbeBelowDb = 30.0;
 // only every few levels). A render to a quality follows no ray too light to
 // matter (kQualityPruneWeight), so a level deeper adds only the rays that
 // light trapped among glass balls keeps bright: on the generated fields at
-// 640x480, 1 to 27% more rays from depth 16 to 48, where pixels still
+// 640x480, 0 to 29% more rays from depth 16 to 48, where pixels still
 // changed by 35 to 160 codes. Capped at 16, as when every ray was followed
 // and each level cost more than the last, 4 of the 12 Previews and Finals
 // of those fields could not meet their target (docs/quality.md, "As deep as

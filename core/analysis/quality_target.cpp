@@ -466,6 +466,12 @@ bool largestAtCentresOnly(const DepthError& e, const QualityTarget& t, double ms
            e.largest > kDepthShareOfLargest * *t.largestCodes && e.largest <= *t.largestCodes;
 }
 
+// How sampledLargest() renders. The probe's search judges each depth against
+// its own reference; the picture's check judges every depth against depth 64,
+// whose pixels it keeps (ProbeRenders::keptAtRenderSize()), and once it goes
+// on past a depth, renders its pixels several depths to a render.
+enum class SampledCheck { ProbeSearch, Picture, PictureGoingOn };
+
 // The largest error of `depth` against `reference` as the picture's own
 // pixels show it with kDepthLargestSamples each, the same samples at both,
 // where the grid's pair may hold a sliver over `largestShare` of the limit;
@@ -476,23 +482,25 @@ bool largestAtCentresOnly(const DepthError& e, const QualityTarget& t, double ms
 // generated fields missed their target).
 // The largest difference of `over`'s pixels of the picture at `depth` and
 // `reference` with kDepthLargestSamples each, and of the pixels elsewhere.
-// Where the check goes on past `depth` against the same reference (`goingOn`),
-// the pixels are rendered at several depths past it in one render, and kept
-// (ProbeRenders::keptAtRenderSize()).
 double sampledLargest(ProbeRenders& probes, QualityPlan& plan, const RenderPixels& over, int depth,
-                      int reference, bool goingOn = false) {
+                      int reference, SampledCheck check) {
     if (over.rects.empty()) return over.largestElsewhere;
     plan.depthLargestSamples = kDepthLargestSamples;
-    const Image& atReference =
-        probes.keptAtRenderSize(reference, plan, kDepthLargestSamples, over.rects);
-    auto largest = [&](const Image& atDepth) {
+    auto largest = [&](const Image& atDepth, const Image& atReference) {
         return std::max(over.largestElsewhere, largestDifference(atDepth, atReference, over.rects));
     };
-    const int ahead = goingOn ? std::min(kMostPicturesAhead, reference - depth) - 1 : 0;
-    if (ahead > 0)
+    auto rendered = [&](int at) {
+        return probes.atRenderSize(at, plan, kDepthLargestSamples, over.rects);
+    };
+    if (check == SampledCheck::ProbeSearch) return largest(rendered(depth), rendered(reference));
+    const Image& atReference =
+        probes.keptAtRenderSize(reference, plan, kDepthLargestSamples, over.rects);
+    const int ahead = std::min(kMostPicturesAhead, reference - depth) - 1;
+    if (check == SampledCheck::PictureGoingOn && ahead > 0)
         return largest(
-            probes.keptAtRenderSize(depth, plan, kDepthLargestSamples, over.rects, ahead));
-    return largest(probes.atRenderSize(depth, plan, kDepthLargestSamples, over.rects));
+            probes.keptAtRenderSize(depth, plan, kDepthLargestSamples, over.rects, ahead),
+            atReference);
+    return largest(rendered(depth), atReference);
 }
 
 // The pixels of the picture a depth's check at its size left in doubt (over
@@ -502,13 +510,13 @@ using InDoubt = RenderPixels;
 
 std::optional<double> largestWithSamples(ProbeRenders& probes, QualityPlan& plan,
                                          const DepthPair& pair, int depth, int reference,
-                                         double largestShare, InDoubt* inDoubt = nullptr,
-                                         bool goingOn = false) {
+                                         double largestShare, SampledCheck check,
+                                         InDoubt* inDoubt = nullptr) {
     RenderPixels over = renderPixelsUnder(pair, largestShare * *plan.target.largestCodes,
                                           probes.renderWidth(), probes.renderHeight());
     const double picture = double(probes.renderWidth()) * probes.renderHeight();
     if (double(over.count) > kMostRenderPixelsJudged * picture) return std::nullopt;
-    const double largest = sampledLargest(probes, plan, over, depth, reference, goingOn);
+    const double largest = sampledLargest(probes, plan, over, depth, reference, check);
     if (inDoubt) *inDoubt = std::move(over);
     return largest;
 }
@@ -539,8 +547,9 @@ struct PictureDepthError {
 // The error of `depth` against `reference` at the picture's own size: its
 // centres and pictureCheckSamples() a pixel, and where a pixel may hold a
 // sliver over kPictureShareOfLargest of the limit, kDepthLargestSamples
-// (largestWithSamples()). The MSE is the centres'. `goingOn`: the check has gone
-// on past a depth already, and those pixels come several depths to a render.
+// (largestWithSamples()). The MSE is the centres'. `goingOn`: the check has
+// gone on past a depth already, and those pixels come several depths to a
+// render.
 PictureDepthError pictureDepthError(ProbeRenders& probes, QualityPlan& plan, int depth,
                                     int reference, int maxSamples, bool goingOn) {
     const auto [shallow, deep] = probes.picturesAt(depth, reference, plan);
@@ -560,8 +569,9 @@ PictureDepthError pictureDepthError(ProbeRenders& probes, QualityPlan& plan, int
     PictureDepthError checked{e, std::nullopt};
     if (maxSamples > 1 && pair.over(largest, kPictureShareOfLargest * *plan.target.largestCodes)) {
         InDoubt inDoubt;
+        const SampledCheck check = goingOn ? SampledCheck::PictureGoingOn : SampledCheck::Picture;
         if (auto sampled = largestWithSamples(probes, plan, pair, depth, reference,
-                                              kPictureShareOfLargest, &inDoubt, goingOn)) {
+                                              kPictureShareOfLargest, check, &inDoubt)) {
             checked.error.largest = *sampled;
             checked.inDoubt = std::move(inDoubt);
         }
@@ -596,7 +606,8 @@ PictureDepthError inDoubtDepthError(ProbeRenders& probes, QualityPlan& plan, int
         renderPixelsUnder(pair, share, probes.renderWidth(), probes.renderHeight(), before.rects);
     inDoubt.largestElsewhere = std::max(inDoubt.largestElsewhere, before.largestElsewhere);
     plan.depthLargestSamples = 1;
-    const double largest = sampledLargest(probes, plan, inDoubt, depth, reference, true);
+    const double largest =
+        sampledLargest(probes, plan, inDoubt, depth, reference, SampledCheck::PictureGoingOn);
     return {{mseBefore, largest}, std::move(inDoubt), boundsFrom};
 }
 
@@ -670,9 +681,10 @@ void planDepth(ProbeRenders& probes, std::optional<int> given, int maxSamples, Q
         DepthError e = depthError(shallow, deep);
         plan.depthLargestSamples = 1;
         if (maxSamples > 1 && largestAtCentresOnly(e, plan.target, mseShare))
-            e.largest = largestWithSamples(probes, plan, {shallow, deep}, depth,
-                                           plan.referenceDepth, kDepthShareOfLargest)
-                            .value_or(e.largest);
+            e.largest =
+                largestWithSamples(probes, plan, {shallow, deep}, depth, plan.referenceDepth,
+                                   kDepthShareOfLargest, SampledCheck::ProbeSearch)
+                    .value_or(e.largest);
         plan.depthMse = e.mse;
         plan.depthLargest = e.largest;
         return e;

@@ -299,6 +299,24 @@ TEST(QualityTarget, FinalAtTheSizeAFieldIsSavedAt_APixelWhoseSamplesMissedASlive
     EXPECT_LE(e.largest, *finalQuality().largestCodes) << "depth " << e.depth;
 }
 
+// bench_quality_fields' field `seed` at `width` x `height`.
+Scene untunedFieldAt(int seed, int width, int height) {
+    Scene field = sphereField(untunedField(seed));
+    field.render.width = width;
+    field.render.height = height;
+    return field;
+}
+
+// `field` rendered to Final and judged against a reference as deep as the
+// plan's check looks (kDeepReferenceDepth); the plan's reasons printed.
+QualityCheck finalAgainstDeepReference(const Scene& field) {
+    const QualityCheck c =
+        checkQuality(field, finalQuality(), convergedReference(field, 512, kDeepReferenceDepth));
+    std::printf("depth %d: %.1f dB, %.1f codes\n%s\n", c.plan.maxDepth, c.error.psnrSrgb8,
+                c.error.largest, c.plan.why.c_str());
+    return c;
+}
+
 // bench_quality_fields' tenth field at 160x120: light trapped in a glass
 // ball comes out in a sliver of one pixel, between its centre and its eight
 // neighbours' (depth 10 against 16 at those nine centres: nothing; with 8
@@ -307,13 +325,7 @@ TEST(QualityTarget, FinalAtTheSizeAFieldIsSavedAt_APixelWhoseSamplesMissedASlive
 // pixel (16 allowed). With two samples a pixel besides the centres the plan
 // sees the sliver, goes deeper, and the render meets its target.
 TEST(QualityTarget, PictureCheckedWithSamples_SeesASliverBetweenTheCentres) {
-    Scene field = sphereField(untunedField(10));
-    field.render.width = 160;
-    field.render.height = 120;
-    const QualityCheck c =
-        checkQuality(field, finalQuality(), convergedReference(field, 512, kDeepReferenceDepth));
-    std::printf("depth %d: %.1f dB, %.1f codes\n%s\n", c.plan.maxDepth, c.error.psnrSrgb8,
-                c.error.largest, c.plan.why.c_str());
+    const QualityCheck c = finalAgainstDeepReference(untunedFieldAt(10, 160, 120));
     EXPECT_GT(c.plan.maxDepth, 10);
     EXPECT_NE(c.plan.why.find("at the centres or with 2 samples a pixel"), std::string::npos);
     EXPECT_TRUE(c.met);
@@ -328,9 +340,7 @@ TEST(QualityTarget, PictureCheckedWithSamples_SeesASliverBetweenTheCentres) {
 // a pixel at most), the pruned render traces under half the rays of the one
 // traced whole, and no pixel is a code apart.
 TEST(QualityTarget, RenderToAPlan_FollowsOnlyTheRaysThatStillMatter) {
-    Scene field = sphereField(untunedField(13));
-    field.render.width = 160;
-    field.render.height = 120;
+    const Scene field = untunedFieldAt(13, 160, 120);
     const QualityPlan plan = planQuality(field, finalQuality(), 16);
     Scene planned = field;
     RenderOptions options = oneShotOptions();
@@ -363,13 +373,7 @@ TEST(QualityTarget, RenderToAPlan_FollowsOnlyTheRaysThatStillMatter) {
 // reference of that depth (at 80x60, where the reference takes a quarter of
 // the time).
 TEST(QualityTarget, LightTrappedPastDepth16_PlannedAsDeepAsItGoes) {
-    Scene field = sphereField(untunedField(19));
-    field.render.width = 80;
-    field.render.height = 60;
-    const QualityCheck c =
-        checkQuality(field, finalQuality(), convergedReference(field, 512, kDeepReferenceDepth));
-    std::printf("depth %d: %.1f dB, %.1f codes\n%s\n", c.plan.maxDepth, c.error.psnrSrgb8,
-                c.error.largest, c.plan.why.c_str());
+    const QualityCheck c = finalAgainstDeepReference(untunedFieldAt(19, 80, 60));
     EXPECT_GT(c.plan.maxDepth, kDeepestChosen);
     EXPECT_TRUE(c.plan.depthAtPictureSize);
     EXPECT_FALSE(c.plan.depthShort);

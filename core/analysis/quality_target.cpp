@@ -46,6 +46,14 @@ constexpr int kPrecisionSamples = 8;
 // save, and the centres' verdict stands.
 constexpr int kDepthLargestSamples = 8;
 constexpr double kMostRenderPixelsJudged = 0.25;
+// At the picture's size, the pixels this many pixels around one whose
+// centres may hold a sliver are judged with samples too: light trapped in a
+// small glass ball comes out in a thin curve, which one centre meets and
+// the next pixel's passes by. On bench_quality_fields' fifth field at
+// 640x480 depth 36 cut 161 codes off one centre, and 64 samples showed 74
+// codes cut off the pixel beside it, whose centre saw nothing (Preview
+// allows 64).
+constexpr int kAroundInDoubt = 1;
 // A probe that traces for less than this runs on one thread: a second
 // thread's start and join cost about as much as tracing a 40x30 probe of a
 // few balls (0.06 ms), and planning a Draft renders five to seven of those.
@@ -395,53 +403,89 @@ struct RenderPixels {
     double largestElsewhere = 0.0;
 };
 
-// renderPixelsUnder() over one rectangle of the grid's pixels.
-void addRenderPixelsUnder(const DepthPair& pair, double codes, const PixelRect& part, double across,
-                          double down, RenderPixels& under) {
-    for (int py = part.y; py < part.y + part.height; ++py) {
+// What renderPixelsUnder() knows of one of the grid's pixels.
+enum class GridPixel : char { Outside, Within, Over, Beside };
+
+// Which of the grid's pixels renderPixelsUnder() finds in doubt: those that
+// may hold a sliver over `codes` (DepthPair::over()), and those within
+// `around` pixels of one.
+struct Doubt {
+    double codes;
+    int around = 0;
+};
+
+// Each grid pixel of `parts`, Over or Within, and for those Within what they
+// are apart at most (DepthPair::atMost(), exact where it may be over).
+void markOver(const DepthPair& pair, const Doubt& doubt, const std::vector<PixelRect>& parts,
+              std::vector<GridPixel>& marks, std::vector<double>& upTo) {
+    const int width = pair.shallow.width;
+    for (const PixelRect& part : parts)
+        for (int y = part.y; y < part.y + part.height; ++y)
+            for (int x = part.x; x < part.x + part.width; ++x) {
+                DepthPair::Apart apart = pair.atMost(x, y);
+                if (pair.over(apart, doubt.codes)) apart = pair.at(x, y);
+                const std::size_t i = std::size_t(y) * width + x;
+                marks[i] = pair.over(apart, doubt.codes) ? GridPixel::Over : GridPixel::Within;
+                upTo[i] = std::max(apart.centres, apart.sampled);
+            }
+}
+
+// Marks Beside the pixels Within `around` pixels of one Over.
+void markBesideOver(int width, int height, int around, std::vector<GridPixel>& marks) {
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            if (marks[std::size_t(y) * width + x] != GridPixel::Over) continue;
+            for (int ny = std::max(0, y - around); ny <= std::min(height - 1, y + around); ++ny)
+                for (int nx = std::max(0, x - around); nx <= std::min(width - 1, x + around);
+                     ++nx) {
+                    GridPixel& mark = marks[std::size_t(ny) * width + nx];
+                    if (mark == GridPixel::Within) mark = GridPixel::Beside;
+                }
+        }
+}
+
+// The render's pixels under the grid's pixels in doubt (Doubt), as
+// rectangles (one for each run of such grid pixels along a row), and the
+// largest difference of the grid's other pixels. Each of the render's
+// pixels lies under one grid pixel: the grid pixel's edges rounded down to
+// the render's. Only the grid's pixels `within`, if given.
+RenderPixels renderPixelsUnder(const DepthPair& pair, const Doubt& doubt, int width, int height,
+                               const std::vector<PixelRect>& within = {}) {
+    const Image& grid = pair.shallow;
+    const double across = double(width) / grid.width, down = double(height) / grid.height;
+    std::vector<GridPixel> marks(std::size_t(grid.width) * grid.height, GridPixel::Outside);
+    std::vector<double> upTo(marks.size(), 0.0);
+    markOver(pair, doubt,
+             within.empty() ? std::vector<PixelRect>{{0, 0, grid.width, grid.height}} : within,
+             marks, upTo);
+    if (doubt.around > 0) markBesideOver(grid.width, grid.height, doubt.around, marks);
+    RenderPixels under;
+    for (int py = 0; py < grid.height; ++py) {
         const int y0 = int(py * down), y1 = int((py + 1) * down);
-        constexpr int kNoRun = -1;  // not std::optional: GCC 12 warns it may be unset
-        int runStart = kNoRun;
-        for (int px = part.x; px <= part.x + part.width; ++px) {
-            DepthPair::Apart apart;
-            if (px < part.x + part.width) {
-                apart = pair.atMost(px, py);
-                if (pair.over(apart, codes) ||
-                    std::max(apart.centres, apart.sampled) > under.largestElsewhere)
-                    apart = pair.at(px, py);  // what it may be would change something
-            }
-            if (pair.over(apart, codes)) {
-                if (runStart == kNoRun) runStart = px;
+        int runStart = -1;
+        for (int px = 0; px <= grid.width; ++px) {
+            const std::size_t i = std::size_t(py) * grid.width + px;
+            const bool inDoubt =
+                px < grid.width && (marks[i] == GridPixel::Over || marks[i] == GridPixel::Beside);
+            if (inDoubt) {
+                if (runStart < 0) runStart = px;
                 continue;
             }
-            under.largestElsewhere =
-                std::max({under.largestElsewhere, apart.centres, apart.sampled});
-            if (runStart == kNoRun || y1 == y0) {
-                runStart = kNoRun;
-                continue;
+            // What it is at most would change the largest: then what it is.
+            if (px < grid.width && marks[i] == GridPixel::Within &&
+                upTo[i] > under.largestElsewhere) {
+                const DepthPair::Apart apart = pair.at(px, py);
+                under.largestElsewhere =
+                    std::max({under.largestElsewhere, apart.centres, apart.sampled});
             }
+            if (runStart < 0) continue;
             const int x0 = int(runStart * across), x1 = int(px * across);
-            runStart = kNoRun;
-            if (x1 == x0) continue;
+            runStart = -1;
+            if (x1 == x0 || y1 == y0) continue;
             under.rects.push_back({x0, y0, x1 - x0, y1 - y0});
             under.count += std::size_t(x1 - x0) * (y1 - y0);
         }
     }
-}
-
-// The render's pixels under the grid's pixels that may be over `codes`
-// (DepthPair::over()), as rectangles (one for each run of such grid pixels
-// along a row), and the largest difference of the grid's other pixels. Each
-// of the render's pixels lies under one grid pixel: the grid pixel's edges
-// rounded down to the render's. Only the grid's pixels `within`, if given.
-RenderPixels renderPixelsUnder(const DepthPair& pair, double codes, int width, int height,
-                               const std::vector<PixelRect>& within = {}) {
-    RenderPixels under;
-    const Image& grid = pair.shallow;
-    const double across = double(width) / grid.width, down = double(height) / grid.height;
-    const std::vector<PixelRect> whole{{0, 0, grid.width, grid.height}};
-    for (const PixelRect& part : within.empty() ? whole : within)
-        addRenderPixelsUnder(pair, codes, part, across, down, under);
     return under;
 }
 
@@ -504,16 +548,18 @@ double sampledLargest(ProbeRenders& probes, QualityPlan& plan, const RenderPixel
 }
 
 // The pixels of the picture a depth's check at its size left in doubt (over
-// kPictureShareOfLargest of the limit at the centres or with samples), and
-// the largest difference of all the others.
+// kPictureShareOfLargest of the limit at the centres or with samples, and
+// those kAroundInDoubt around them), and the largest difference of all the
+// others.
 using InDoubt = RenderPixels;
 
 std::optional<double> largestWithSamples(ProbeRenders& probes, QualityPlan& plan,
                                          const DepthPair& pair, int depth, int reference,
                                          double largestShare, SampledCheck check,
                                          InDoubt* inDoubt = nullptr) {
-    RenderPixels over = renderPixelsUnder(pair, largestShare * *plan.target.largestCodes,
-                                          probes.renderWidth(), probes.renderHeight());
+    const Doubt doubt{largestShare * *plan.target.largestCodes,
+                      check == SampledCheck::ProbeSearch ? 0 : kAroundInDoubt};
+    RenderPixels over = renderPixelsUnder(pair, doubt, probes.renderWidth(), probes.renderHeight());
     const double picture = double(probes.renderWidth()) * probes.renderHeight();
     if (double(over.count) > kMostRenderPixelsJudged * picture) return std::nullopt;
     const double largest = sampledLargest(probes, plan, over, depth, reference, check);
@@ -592,7 +638,7 @@ PictureDepthError pictureDepthError(ProbeRenders& probes, QualityPlan& plan, int
 PictureDepthError inDoubtDepthError(ProbeRenders& probes, QualityPlan& plan, int depth,
                                     int reference, int maxSamples, const InDoubt& before,
                                     double mseBefore, int boundsFrom) {
-    const double share = kPictureShareOfLargest * *plan.target.largestCodes;
+    const Doubt doubt{kPictureShareOfLargest * *plan.target.largestCodes, kAroundInDoubt};
     const Image shallow = probes.atRenderSize(depth, plan, 1, before.rects);
     DepthPair pair{shallow, probes.pictureAt(reference, plan, 1)};
     Image shallowSampled;
@@ -603,7 +649,7 @@ PictureDepthError inDoubtDepthError(ProbeRenders& probes, QualityPlan& plan, int
         pair.deepSampled = &probes.pictureAt(reference, plan, pair.samples);
     }
     InDoubt inDoubt =
-        renderPixelsUnder(pair, share, probes.renderWidth(), probes.renderHeight(), before.rects);
+        renderPixelsUnder(pair, doubt, probes.renderWidth(), probes.renderHeight(), before.rects);
     inDoubt.largestElsewhere = std::max(inDoubt.largestElsewhere, before.largestElsewhere);
     plan.depthLargestSamples = 1;
     const double largest =

@@ -4,9 +4,10 @@
 // points.csv, table.md, plot.png (error against time, Pareto front marked),
 // progressive.csv, progressive.png, truncation.png, reference.png, summary.md
 // and summary.json.
-//   whitted-tradeoff --report OUT.md --dirs DIR...
+//   whitted-tradeoff --report OUT.md --dirs DIR... [--quality-csv FILE]
 // writes docs/tradeoff.md from the summaries of earlier runs, presets included,
-// and rewrites each directory's summary.md in the same words.
+// and rewrites each directory's summary.md in the same words; with
+// bench_quality's CSV, its section on rendering to a quality too.
 // Exit codes as whitted-render: 0 success, 2 bad input, 1 any other failure.
 #include <unistd.h>
 
@@ -28,6 +29,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/depth_truncation.h"
+#include "analysis/quality_table.h"
 #include "analysis/tradeoff.h"
 #include "base/atomic_file.h"
 #include "cli_input.h"
@@ -36,6 +38,7 @@
 #include "scene/scene_io.h"
 #include "tradeoff/plots.h"
 #include "tradeoff/progress.h"
+#include "tradeoff/quality_section.h"
 #include "tradeoff/report.h"
 #include "tradeoff/results_csv.h"
 
@@ -164,7 +167,14 @@ tradeoff::SceneSummary readSummary(const fs::path& dir) {
 }
 
 int writeReport(const std::string& output, const std::vector<std::string>& dirs,
-                const std::string& command) {
+                const std::string& qualityCsv, const std::string& command) {
+    std::vector<QualityRow> qualityRows;
+    try {
+        if (!qualityCsv.empty()) qualityRows = readQualityCsv(qualityCsv);
+    } catch (const std::runtime_error& e) {
+        std::cerr << "whitted-tradeoff: " << e.what() << "\n";
+        return kExitBadInput;
+    }
     std::vector<tradeoff::SceneSummary> scenes;
     const fs::path base = fs::absolute(output).parent_path();
     for (const std::string& d : dirs) {
@@ -175,7 +185,9 @@ int writeReport(const std::string& output, const std::vector<std::string>& dirs,
         s.directory = fs::relative(fs::absolute(d), base).generic_string();
         scenes.push_back(std::move(s));
     }
-    writeText(output, tradeoff::report(scenes, command));
+    const std::string quality =
+        qualityCsv.empty() ? "" : tradeoff::qualitySection(qualityRows, qualityCsv);
+    writeText(output, tradeoff::report(scenes, command, quality));
     for (const tradeoff::PresetChoice& p : tradeoff::choosePresets(scenes))
         std::cout << p.name << ": " << p.samplesPerPixel << " spp, depth " << p.maxDepth << ", "
                   << precisionName(p.precision) << "\n";
@@ -185,7 +197,8 @@ int writeReport(const std::string& output, const std::vector<std::string>& dirs,
 // What the command line asks for.
 struct Flags {
     std::string scenePath, outDir, samples = "1,2,4,8,16,32,64,128,256", depths = "0-8",
-                                   precisions = "float,double", scales = "0.25,0.5,1", report;
+                                   precisions = "float,double", scales = "0.25,0.5,1", report,
+                                   qualityCsv;
     // One run for slow points, up to 9 for fast ones until they have taken
     // 0.3 s: the median tames the noise where it is largest (short renders), and
     // a full default run of the seed at 640x480 stays under ten minutes on two
@@ -222,6 +235,9 @@ void addFlags(CLI::App& app, Flags& f) {
                  "A small grid (tests): 1,4 spp; depths 0,2; scales 0.5,1; one run");
     app.add_option("--report", f.report, "Write the report from earlier runs' directories");
     app.add_option("--dirs", f.reportDirs, "With --report: the result directories");
+    app.add_option("--quality-csv", f.qualityCsv,
+                   "With --report: bench_quality's measurements of rendering to a quality "
+                   "(WHITTED_QUALITY_CSV)");
 }
 
 // The grid the flags ask for, or nothing, having said what is wrong.
@@ -363,7 +379,7 @@ int run(const Flags& f, int argc, char** argv) {
             std::cerr << "whitted-tradeoff: --report needs --dirs\n";
             return kExitBadInput;
         }
-        return writeReport(f.report, f.reportDirs, commandLine(argc, argv));
+        return writeReport(f.report, f.reportDirs, f.qualityCsv, commandLine(argc, argv));
     }
     if (f.scenePath.empty()) {
         std::cerr << "whitted-tradeoff: a scene file is required\n";

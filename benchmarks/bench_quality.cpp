@@ -10,12 +10,17 @@
 // Prints a Markdown table; `times` prints only the paired times of Draft and
 // Preview, of every scene or of the one named (seed, glass, ...).
 // WHITTED_REFERENCE_CACHE=DIR keeps the references in DIR (reference_cache.h).
+// WHITTED_QUALITY_CSV=FILE also writes the rows to FILE (quality_table.h), for
+// `whitted-tradeoff --report --quality-csv` (docs/tradeoff.md).
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
+#include <fstream>
 #include <string>
 #include <vector>
 
 #include "analysis/quality_check.h"
+#include "analysis/quality_table.h"
 #include "analysis/render_presets.h"
 #include "bench_scenes.h"
 #include "paired_times.h"
@@ -36,8 +41,36 @@ std::string measured(const ErrorStats& e) {
     return text;
 }
 
+std::string todayUtc() {
+    const std::time_t now = std::time(nullptr);
+    char text[16];
+    std::strftime(text, sizeof text, "%Y-%m-%d", std::gmtime(&now));
+    return text;
+}
+
+QualityRow csvRow(const NamedScene& n, const QualityTarget& target, const QualityCheck& c,
+                  const ErrorStats& preset, double timeAgainstPreset) {
+    return {todayUtc(),
+            n.name,
+            n.scene.render.width,
+            n.scene.render.height,
+            target.name,
+            target.psnrDb,
+            target.largestCodes,
+            c.plan.maxDepth,
+            c.plan.depthShort,
+            c.meanSamples,
+            c.error.psnrSrgb8,
+            c.error.largest,
+            c.met,
+            preset.psnrSrgb8,
+            preset.largest,
+            meetsTarget(preset, target),
+            timeAgainstPreset};
+}
+
 void row(const NamedScene& n, const QualityTarget& target, const RenderPreset& preset,
-         const Image& reference) {
+         const Image& reference, std::ofstream* csv) {
     const QualityCheck c = checkQuality(n.scene, target, reference);
     const Scene fixedScene = withPreset(n.scene, preset);
     const FixedCheck fixed = checkFixed(fixedScene, reference);
@@ -58,6 +91,7 @@ void row(const NamedScene& n, const QualityTarget& target, const RenderPreset& p
     else
         std::printf("none up to 256 spp |\n");
     std::fflush(stdout);
+    if (csv) *csv << qualityCsvLine(csvRow(n, target, c, fixed.error, times.ratio)) << std::endl;
 }
 
 // Only the times of ours and the preset, in pairs (pairedTimes(): at least
@@ -117,9 +151,19 @@ int main(int argc, char** argv) {
         "rays, time | fixed preset: measured, met | its rays, time | time ours / preset "
         "(pairs) | fewest fixed samples meeting it at our depth |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|\n");
+    std::ofstream csv;
+    if (const char* file = std::getenv("WHITTED_QUALITY_CSV")) {
+        csv.open(file);
+        if (!csv) {
+            std::fprintf(stderr, "bench_quality: %s: cannot write\n", file);
+            return 2;
+        }
+        csv << qualityCsvHeader() << "\n";
+    }
     for (const NamedScene& n : scenes(width, height)) {
         const Image reference = cachedReference(n.scene, n.name);
-        for (int i = 0; i < 3; ++i) row(n, targets[i], kRenderPresets[i], reference);
+        for (int i = 0; i < 3; ++i)
+            row(n, targets[i], kRenderPresets[i], reference, csv.is_open() ? &csv : nullptr);
     }
     return 0;
 }

@@ -311,13 +311,15 @@ std::vector<PresetChoice> choosePresets(const std::vector<SceneSummary>& scenes)
     return presets;
 }
 
-std::string report(const std::vector<SceneSummary>& scenes, const std::string& command) {
+std::string report(const std::vector<SceneSummary>& scenes, const std::string& command,
+                   const std::string& quality) {
     std::ostringstream md;
     introduction(md, scenes, command);
     const std::vector<PresetChoice> presets = choosePresets(scenes);
     presetTable(md, presets);
     presetsPerScene(md, presets, scenes);
     presetsAsCode(md, presets);
+    md << quality;
     for (const SceneSummary& s : scenes) md << sceneSection(s);
     return md.str();
 }

@@ -55,7 +55,9 @@ struct PresetChoice {
 };
 std::vector<PresetChoice> choosePresets(const std::vector<SceneSummary>& scenes);
 
-// The whole docs/tradeoff.md.
-std::string report(const std::vector<SceneSummary>& scenes, const std::string& command);
+// The whole docs/tradeoff.md; `quality`, if any, after the presets
+// (qualitySection()).
+std::string report(const std::vector<SceneSummary>& scenes, const std::string& command,
+                   const std::string& quality = {});
 
 }  // namespace whitted::tradeoff

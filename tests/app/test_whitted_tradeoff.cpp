@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "analysis/quality_table.h"
 #include "scene/scene_io.h"
 #include "support/core_support.h"
 #include "support/test_support.h"
@@ -67,6 +68,59 @@ TEST(WhittedTradeoff, QuickRun_WritesEveryFileWithOneRowPerPoint) {
     EXPECT_NE(md.find("## small"), std::string::npos);  // the scene file's name
     EXPECT_NE(md.find("(out/plot.png)"), std::string::npos);
     EXPECT_NE(rep.out.find("Draft: "), std::string::npos) << rep.out;
+}
+
+// bench_quality's rows (quality_table.h) become the report's section on
+// rendering to a quality: each row's target, what the plan chose, what was
+// measured beside the fixed preset, and the tally. A malformed row is bad
+// input: the file and line named, and the report left as it was.
+TEST(WhittedTradeoff, ReportWithQualityCsv_TargetsAgainstWhatWasMeasured) {
+    TempDir dir;
+    saveScene(test::seedScene(64, 48), dir / "small.json");
+    const fs::path out = dir / "out";
+    ASSERT_EQ(
+        tradeoff({(dir / "small.json").string(), "--out-dir", out.string(), "--quick"}).exitCode,
+        0);
+    const QualityRow draft{"2026-12-05", "glass", 640,   480,  "Draft", 20.0,
+                           std::nullopt, 2,       false, 1.0,  21.34,   163.0,
+                           true,         21.3,    163.0, true, 1.02};
+    const QualityRow final{"2026-12-05", "glass", 640,  480,  "Final", 50.0, 16.0,  36,  false,
+                           80.53,        55.04,   12.4, true, 52.1,    20.0, false, 0.61};
+    const fs::path csv = dir / "quality.csv";
+    std::ofstream(csv) << qualityCsvHeader() << "\n"
+                       << qualityCsvLine(draft) << "\n"
+                       << qualityCsvLine(final) << "\n";
+    const fs::path md = dir / "tradeoff.md";
+    const std::vector<std::string> report{"--report",   md.string(),     "--dirs",
+                                          out.string(), "--quality-csv", csv.string()};
+    const ProgramRun r = tradeoff(report);
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const std::string text = test::readFile(md);
+    EXPECT_NE(text.find("## Rendering to a quality"), std::string::npos);
+    EXPECT_NE(text.find("Measured on 2026-12-05 at 640x480"), std::string::npos);
+    EXPECT_NE(text.find("| glass | Draft: 20 dB | 2, 1.0 | 21.3 dB, 163 codes, met | "
+                        "21.3 dB, 163 codes, met | 1.02 |"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("| glass | Final: 50 dB, ≤ 16 codes | 36, 80.5 | 55.0 dB, 12 codes, met "
+                        "| 52.1 dB, 20 codes, **missed** | 0.61 |"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("Rendered to the target, 2 of 2 met it"), std::string::npos);
+    EXPECT_NE(text.find("The fixed presets met 1 of 2."), std::string::npos);
+
+    std::ofstream(csv, std::ios::app) << "2026-12-05,glass,640,480,Final,50,16,deep\n";
+    ProgramRun bad = tradeoff(report);
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.out.find("quality.csv: line 4: expected 17 columns"), std::string::npos)
+        << bad.out;
+    std::ofstream(csv, std::ios::trunc) << qualityCsvHeader() << "\n"
+                                        << "2026-12-05,glass,640,480,Final,50,16,deep,no,80,55,"
+                                           "12,yes,52,20,no,0.6\n";
+    bad = tradeoff(report);
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.out.find("quality.csv: line 2: malformed value"), std::string::npos) << bad.out;
+    EXPECT_EQ(test::readFile(md), text);
 }
 
 TEST(WhittedTradeoff, WidthAndHeight_OverrideTheScenesSize) {

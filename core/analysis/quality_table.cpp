@@ -12,7 +12,7 @@ namespace {
 constexpr const char* kHeader =
     "date,scene,width,height,target,target_psnr_db,target_max_error_codes,depth,depth_short,"
     "mean_spp,psnr_db,max_error_codes,met,preset_psnr_db,preset_max_error_codes,preset_met,"
-    "time_against_preset";
+    "time_against_preset,fixed_meeting,time_against_fixed_meeting";
 
 bool yesOrNo(const std::string& cell) {
     if (cell != "yes" && cell != "no") throw std::invalid_argument(cell);
@@ -38,6 +38,8 @@ QualityRow rowOf(const std::vector<std::string>& f) {
     r.presetLargestCodes = std::stod(f[14]);
     r.presetMet = yesOrNo(f[15]);
     r.timeAgainstPreset = std::stod(f[16]);
+    r.fixedMeeting = f[17];
+    if (!f[18].empty()) r.timeAgainstFixedMeeting = std::stod(f[18]);
     return r;
 }
 
@@ -51,12 +53,14 @@ std::string qualityCsvLine(const QualityRow& r) {
     std::ostringstream out;
     out.precision(6);
     auto yes = [](bool b) { return b ? "yes" : "no"; };
-    out << r.date << ',' << r.scene << ',' << r.width << ',' << r.height << ',' << r.target << ','
-        << r.targetPsnrDb << ',';
+    out << r.date << ',' << csvCell(r.scene) << ',' << r.width << ',' << r.height << ','
+        << csvCell(r.target) << ',' << r.targetPsnrDb << ',';
     if (r.targetLargestCodes) out << *r.targetLargestCodes;
     out << ',' << r.depth << ',' << yes(r.depthShort) << ',' << r.meanSamples << ',' << r.psnrDb
         << ',' << r.largestCodes << ',' << yes(r.met) << ',' << r.presetPsnrDb << ','
-        << r.presetLargestCodes << ',' << yes(r.presetMet) << ',' << r.timeAgainstPreset;
+        << r.presetLargestCodes << ',' << yes(r.presetMet) << ',' << r.timeAgainstPreset << ','
+        << csvCell(r.fixedMeeting) << ',';
+    if (r.timeAgainstFixedMeeting) out << *r.timeAgainstFixedMeeting;
     return out.str();
 }
 

@@ -27,6 +27,11 @@ struct QualityRow {
     double presetPsnrDb = 0.0, presetLargestCodes = 0.0;
     bool presetMet = false;
     double timeAgainstPreset = 0.0;  // ours (planning too) over the preset's
+    // The fixed setting the time is judged against: the preset where it meets
+    // the target, else the fewest samples a pixel that meet it at our depth
+    // ("32 spp"); empty where none up to 256 does.
+    std::string fixedMeeting;
+    std::optional<double> timeAgainstFixedMeeting;
 };
 
 std::string qualityCsvHeader();

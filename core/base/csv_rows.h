@@ -1,6 +1,5 @@
-// Reading back the plain CSV files the project writes itself (no quotes, no
-// commas within a cell): whitted-tradeoff's points and bench_quality's
-// measurements.
+// Reading back the CSV files the project writes itself: whitted-tradeoff's
+// points and bench_quality's measurements. No line breaks within a cell.
 #pragma once
 
 #include <exception>
@@ -15,6 +14,9 @@ struct CsvRow {
     std::string where;  // "FILE: line N", for messages
     std::vector<std::string> cells;
 };
+
+// `text` as a CSV cell: in double quotes if it holds a comma or a quote.
+std::string csvCell(const std::string& text);
 
 // The rows after the header line. Throws std::runtime_error naming the file
 // and line when the file cannot be opened, its first line is not `header`

@@ -72,7 +72,8 @@ TEST(WhittedTradeoff, QuickRun_WritesEveryFileWithOneRowPerPoint) {
 
 // bench_quality's rows (quality_table.h) become the report's section on
 // rendering to a quality: each row's target, what the plan chose, what was
-// measured beside the fixed preset, and the tally. A malformed row is bad
+// measured beside the fixed preset, and the tally; a scene's name may hold a
+// comma. A malformed row is bad
 // input: the file and line named, and the report left as it was.
 TEST(WhittedTradeoff, ReportWithQualityCsv_TargetsAgainstWhatWasMeasured) {
     TempDir dir;
@@ -81,15 +82,21 @@ TEST(WhittedTradeoff, ReportWithQualityCsv_TargetsAgainstWhatWasMeasured) {
     ASSERT_EQ(
         tradeoff({(dir / "small.json").string(), "--out-dir", out.string(), "--quick"}).exitCode,
         0);
-    const QualityRow draft{"2026-12-05", "glass", 640,   480,  "Draft", 20.0,
-                           std::nullopt, 2,       false, 1.0,  21.34,   163.0,
-                           true,         21.3,    163.0, true, 1.02};
-    const QualityRow final{"2026-12-05", "glass", 640,  480,  "Final", 50.0, 16.0,  36,  false,
-                           80.53,        55.04,   12.4, true, 52.1,    20.0, false, 0.61};
+    // clang-format off
+    const QualityRow draft{"2026-12-05", "glass", 640, 480, "Draft", 20.0, std::nullopt, 2,
+                           false, 1.0, 21.34, 163.0, true, 21.3, 163.0, true, 1.02,
+                           "the preset", 1.02};
+    const QualityRow final{"2026-12-05", "generated: 300 balls, seed 7", 640, 480, "Final", 50.0,
+                           16.0, 36, false, 80.53, 55.04, 12.4, true, 52.1, 20.0, false, 0.61,
+                           "256 spp", 0.2};
+    const QualityRow preview{"2026-12-05", "field", 640, 480, "Preview", 35.0, 64.0, 21, true,
+                             13.7, 46.1, 58.0, true, 36.8, 133.0, false, 3.12, "", std::nullopt};
+    // clang-format on
     const fs::path csv = dir / "quality.csv";
     std::ofstream(csv) << qualityCsvHeader() << "\n"
                        << qualityCsvLine(draft) << "\n"
-                       << qualityCsvLine(final) << "\n";
+                       << qualityCsvLine(final) << "\n"
+                       << qualityCsvLine(preview) << "\n";
     const fs::path md = dir / "tradeoff.md";
     const std::vector<std::string> report{"--report",   md.string(),     "--dirs",
                                           out.string(), "--quality-csv", csv.string()};
@@ -99,24 +106,29 @@ TEST(WhittedTradeoff, ReportWithQualityCsv_TargetsAgainstWhatWasMeasured) {
     EXPECT_NE(text.find("## Rendering to a quality"), std::string::npos);
     EXPECT_NE(text.find("Measured on 2026-12-05 at 640x480"), std::string::npos);
     EXPECT_NE(text.find("| glass | Draft: 20 dB | 2, 1.0 | 21.3 dB, 163 codes, met | "
-                        "21.3 dB, 163 codes, met | 1.02 |"),
+                        "21.3 dB, 163 codes, met | 1.02 (the preset) |"),
               std::string::npos)
         << text;
-    EXPECT_NE(text.find("| glass | Final: 50 dB, ≤ 16 codes | 36, 80.5 | 55.0 dB, 12 codes, met "
-                        "| 52.1 dB, 20 codes, **missed** | 0.61 |"),
+    EXPECT_NE(text.find("| generated: 300 balls, seed 7 | Final: 50 dB, ≤ 16 codes | 36, 80.5 | "
+                        "55.0 dB, 12 codes, met "
+                        "| 52.1 dB, 20 codes, **missed** | 0.20 (256 spp) |"),
               std::string::npos)
         << text;
-    EXPECT_NE(text.find("Rendered to the target, 2 of 2 met it"), std::string::npos);
-    EXPECT_NE(text.find("The fixed presets met 1 of 2."), std::string::npos);
+    EXPECT_NE(text.find("| field | Preview: 35 dB, ≤ 64 codes | 21*, 13.7 | 46.1 dB, 58 codes, "
+                        "met | 36.8 dB, 133 codes, **missed** | none up to 256 spp meets it |"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("Rendered to the target, 3 of 3 met it"), std::string::npos);
+    EXPECT_NE(text.find("The fixed presets met 1 of 3."), std::string::npos);
 
     std::ofstream(csv, std::ios::app) << "2026-12-05,glass,640,480,Final,50,16,deep\n";
     ProgramRun bad = tradeoff(report);
     EXPECT_EQ(bad.exitCode, 2);
-    EXPECT_NE(bad.out.find("quality.csv: line 4: expected 17 columns"), std::string::npos)
+    EXPECT_NE(bad.out.find("quality.csv: line 5: expected 19 columns"), std::string::npos)
         << bad.out;
     std::ofstream(csv, std::ios::trunc) << qualityCsvHeader() << "\n"
                                         << "2026-12-05,glass,640,480,Final,50,16,deep,no,80,55,"
-                                           "12,yes,52,20,no,0.6\n";
+                                           "12,yes,52,20,no,0.6,,\n";
     bad = tradeoff(report);
     EXPECT_EQ(bad.exitCode, 2);
     EXPECT_NE(bad.out.find("quality.csv: line 2: malformed value"), std::string::npos) << bad.out;

@@ -85,8 +85,9 @@ std::string qualitySection(const std::vector<QualityRow>& rows, const std::strin
        << csvFile << " build/bin/bench_quality " << rows.front().width << " " << rows.front().height
        << "`. The time is ours, planning included, over that of the preset where it meets the "
           "target (the median of pairs of runs), else of the fewest samples a pixel that meet it "
-          "at our depth (one run each), in one process; what a user waits for, whole runs, is "
-          "in quality.md.\n\n";
+          "at our depth (one run each), in one process. What a user waits for, whole runs "
+          "(`benchmarks/whole_run_presets.sh`), is in quality.md: there a Draft's few "
+          "milliseconds of planning are a few hundredths of the run.\n\n";
     table(md, rows);
     tally(md, rows);
     return md.str();

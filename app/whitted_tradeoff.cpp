@@ -18,7 +18,6 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -32,6 +31,7 @@
 #include "analysis/quality_table.h"
 #include "analysis/tradeoff.h"
 #include "base/atomic_file.h"
+#include "base/utc_date.h"
 #include "cli_input.h"
 #include "cli_main.h"
 #include "image/image_io.h"
@@ -92,14 +92,6 @@ std::string commandLine(int argc, char** argv) {
     std::string command = "build/bin/whitted-tradeoff";
     for (int i = 1; i < argc; ++i) command.append(" ").append(argv[i]);
     return command;
-}
-
-// Today's date (UTC), for the report's "measured on".
-std::string today() {
-    const std::time_t now = std::time(nullptr);
-    char buffer[32];
-    std::strftime(buffer, sizeof buffer, "%Y-%m-%d", std::gmtime(&now));
-    return buffer;
 }
 
 std::size_t gridSize(const TradeoffGrid& g) {
@@ -345,7 +337,7 @@ int measureScene(Scene scene, const Flags& f, const TradeoffGrid& grid, int argc
     tradeoff::SceneSummary summary;
     summary.name = name;
     summary.command = commandLine(argc, argv);
-    summary.date = today();
+    summary.date = todayUtc();
     const ReferenceRender ref = renderReference(scene, referenceSpp, stop);
     if (interrupted) return kExitFailure;
     summary.reference = ref.scene;

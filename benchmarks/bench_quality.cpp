@@ -14,7 +14,6 @@
 // `whitted-tradeoff --report --quality-csv` (docs/tradeoff.md).
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -22,6 +21,7 @@
 #include "analysis/quality_check.h"
 #include "analysis/quality_table.h"
 #include "analysis/render_presets.h"
+#include "base/utc_date.h"
 #include "bench_scenes.h"
 #include "paired_times.h"
 #include "reference_cache.h"
@@ -38,13 +38,6 @@ std::vector<NamedScene> scenes(int width, int height) {
 std::string measured(const ErrorStats& e) {
     char text[64];
     std::snprintf(text, sizeof text, "%.1f dB, %.0f codes", e.psnrSrgb8, e.largest);
-    return text;
-}
-
-std::string todayUtc() {
-    const std::time_t now = std::time(nullptr);
-    char text[16];
-    std::strftime(text, sizeof text, "%Y-%m-%d", std::gmtime(&now));
     return text;
 }
 

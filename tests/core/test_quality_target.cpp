@@ -264,9 +264,10 @@ struct RegionError {
 };
 
 // The largest error in `region` of bench_quality_fields' field `seed` at
-// 640x480 rendered to `target`, against 512 samples a pixel in double at
-// `referenceDepth` (the plan's own depth where none is given: then only
-// the sampling's error counts), pruned as convergedReference() prunes.
+// 640x480 rendered to `target`, against 512 samples a pixel: at
+// `referenceDepth` in double, pruned as convergedReference() prunes; where
+// none is given, at the plan's own depth and precision, so that only the
+// sampling's error counts.
 RegionError fieldErrorIn(int seed, const QualityTarget& target, const PixelRect& region,
                          std::optional<int> referenceDepth = {}) {
     const Scene field = sphereField(untunedField(seed));

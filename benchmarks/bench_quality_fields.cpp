@@ -92,16 +92,8 @@ Pixel worstPixel(const Image& image, const Image& reference) {
 // that is off.
 constexpr int kShallowerThanTheReference = kDeepReferenceDepth - 8;
 
-double referenceMovesAt(Scene scene, int x, int y) {
-    scene.render.precision = Precision::Double;
-    scene.render.samplesPerPixel = 256;
-    RenderOptions options = oneShotOptions();
-    options.regions = {{x, y, 1, 1}};
-    options.pruneBelowWeight = kReferencePruneWeight;
-    auto at = [&](int depth) {
-        scene.render.maxDepth = depth;
-        return render(scene, options).image;
-    };
+double referenceMovesAt(const Scene& scene, int x, int y) {
+    auto at = [&](int depth) { return convergedReference(scene, 256, depth, {{x, y, 1, 1}}); };
     return codesAt(at(kShallowerThanTheReference), at(kDeepReferenceDepth), x, y);
 }
 

@@ -14,12 +14,14 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-Image convergedReference(Scene scene, int samples, int depth) {
+Image convergedReference(Scene scene, int samples, int depth,
+                         const std::vector<PixelRect>& regions) {
     scene.render.precision = Precision::Double;
     scene.render.samplesPerPixel = samples;
     scene.render.maxDepth = depth;
     RenderOptions options = oneShotOptions();
     options.pruneBelowWeight = kReferencePruneWeight;
+    options.regions = regions;
     return render(scene, options).image;
 }
 

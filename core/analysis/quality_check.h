@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "analysis/depth_truncation.h"
 #include "analysis/quality_target.h"
@@ -17,7 +18,9 @@ namespace whitted {
 // The scene in double with `samples` samples a pixel (subPixelSample()'s
 // pattern) at `depth`, following no ray that passes on less than
 // kReferencePruneWeight of the light: what "converged" means in these checks.
-Image convergedReference(Scene scene, int samples = 512, int depth = 14);
+// Only `regions` of the picture, if given (RenderOptions::regions).
+Image convergedReference(Scene scene, int samples = 512, int depth = 14,
+                         const std::vector<PixelRect>& regions = {});
 
 // A hundredth of what a render to a quality leaves out (kQualityPruneWeight):
 // a ray this light changes a pixel near black by about a hundredth of a

@@ -209,10 +209,7 @@ class ProbeRenders {
     // than `depth` are let go: a check going on does not ask for them again.
     const Image& keptAtRenderSize(int depth, QualityPlan& plan, int samples,
                                   const std::vector<PixelRect>& regions, int ahead = 0) {
-        if (ahead > 0)
-            std::erase_if(keptByDepth_, [&](const auto& kept) {
-                return kept.first.second == samples && kept.first.first < depth;
-            });
+        if (ahead > 0) letGoShallower(keptByDepth_, depth, samples);
         KeptRegions& kept = keptRegions(depth, samples);
         std::vector<PixelRect> missing;
         for (const PixelRect& r : regions)
@@ -228,6 +225,16 @@ class ProbeRenders {
     }
 
   private:
+    // Lets go of what `byDepth` (by depth and samples) keeps of `samples` a
+    // pixel shallower than `depth`: a check going on past a depth does not
+    // ask for it again.
+    template <typename ByDepth>
+    static void letGoShallower(ByDepth& byDepth, int depth, int samples) {
+        std::erase_if(byDepth, [&](const auto& kept) {
+            return kept.first.second == samples && kept.first.first < depth;
+        });
+    }
+
     // The picture at `deepest` and at each of `shallower`, `samples` a pixel, in one render.
     void picturesFrom(int deepest, const std::vector<int>& shallower, int samples,
                       QualityPlan& plan) {
@@ -255,9 +262,7 @@ class ProbeRenders {
         std::vector<int> shallower;
         for (int d = depth; d < deepest; ++d)
             if (!pictureByDepth_.count({d, samples})) shallower.push_back(d);
-        std::erase_if(pictureByDepth_, [&](const auto& kept) {
-            return kept.first.second == samples && kept.first.first < depth;
-        });
+        letGoShallower(pictureByDepth_, depth, samples);
         picturesFrom(deepest, shallower, samples, plan);
     }
 

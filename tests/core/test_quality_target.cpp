@@ -277,16 +277,16 @@ RegionError fieldErrorIn(int seed, const QualityTarget& target, const PixelRect&
     RenderOptions options = oneShotOptions();
     applyPlan(plan, planned, options);
     const Image ours = render(planned, options).image;
-    Scene converged = planned;
-    converged.render.samplesPerPixel = 512;
-    converged.render.maxDepth = referenceDepth.value_or(plan.maxDepth);
-    RenderOptions fixed = oneShotOptions();
-    fixed.regions = {region};
+    Image reference;
     if (referenceDepth) {
-        converged.render.precision = Precision::Double;
-        fixed.pruneBelowWeight = kReferencePruneWeight;
+        reference = convergedReference(planned, 512, *referenceDepth, {region});
+    } else {
+        Scene converged = planned;
+        converged.render.samplesPerPixel = 512;
+        RenderOptions fixed = oneShotOptions();
+        fixed.regions = {region};
+        reference = render(converged, fixed).image;
     }
-    const Image reference = render(converged, fixed).image;
     return {measureError(cropImage(ours, region), cropImage(reference, region)).largest,
             plan.maxDepth};
 }

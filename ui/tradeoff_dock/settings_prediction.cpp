@@ -7,15 +7,11 @@
 #include <limits>
 
 #include "tracer/renderer.h"
+#include "tradeoff_dock/tradeoff_points.h"
 
 namespace whitted::ui {
 
 namespace {
-
-QString precisionText(Precision p) {
-    const auto name = precisionName(p);
-    return QString::fromUtf8(name.data(), qsizetype(name.size()));
-}
 
 // "4 spp, depth 2, float, 640 × 480"
 QString settingsText(const RenderSettings& r) {

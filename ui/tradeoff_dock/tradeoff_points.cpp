@@ -8,11 +8,6 @@ namespace whitted::ui {
 
 namespace {
 
-QString precisionText(Precision p) {
-    const auto name = precisionName(p);
-    return QString::fromUtf8(name.data(), qsizetype(name.size()));
-}
-
 QString scaleSuffix(double scale) {
     if (scale == 1.0) return {};
     if (scale == 0.5) return QStringLiteral(" ½");
@@ -39,6 +34,11 @@ QString secondsText(double s) {
     if (s < 0.1) return QObject::tr("%1 ms").arg(s * 1000, 0, 'f', 1);
     if (s < 10) return QObject::tr("%1 s").arg(s, 0, 'f', 2);
     return QObject::tr("%1 s").arg(s, 0, 'f', 0);
+}
+
+QString precisionText(Precision p) {
+    const auto name = precisionName(p);
+    return QString::fromUtf8(name.data(), qsizetype(name.size()));
 }
 
 QString settingsText(int samples, int depth, Precision precision) {

@@ -25,6 +25,8 @@ struct PinnedPoint {
     QString note;                     // why it was skipped; empty otherwise
 };
 
+// "float" or "double"
+QString precisionText(Precision precision);
 // "16 spp, depth 3, float"
 QString settingsText(int samples, int depth, Precision precision);
 // "16 spp d3 float" (and " ½" for a Measure point at half size): plot labels.

@@ -6,6 +6,8 @@
 
 #include <cmath>
 
+#include "tradeoff_dock/tradeoff_points.h"
+
 namespace whitted::ui {
 
 namespace {
@@ -37,11 +39,6 @@ QTableWidgetItem* psnr(double db) {
     // Identical images: +infinity, shown as such and sorted last.
     return new NumberItem(std::isfinite(db) ? QString::number(db, 'f', 1) : QStringLiteral("∞"),
                           db);
-}
-
-QString precisionText(Precision p) {
-    const auto name = precisionName(p);
-    return QString::fromUtf8(name.data(), qsizetype(name.size()));
 }
 
 QTableWidget* makeTable(const QString& name, const QStringList& headers) {

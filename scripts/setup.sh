@@ -27,6 +27,8 @@ packages=(
   slurmctld slurmd slurm-client munge
   # whole-process timings in docs (benchmarks/whole_run_presets.sh)
   hyperfine
+  # build time (docs/testing.md): a faster linker, objects kept between builds
+  mold ccache
 )
 
 missing=()

@@ -9,7 +9,7 @@
 // Usage: bench_quality [WIDTH HEIGHT [times [SCENE]]] (default 320 240).
 // Prints a Markdown table; `times` prints only the paired times of Draft and
 // Preview, of every scene or of the one named (seed, glass, ...).
-// WHITTED_REFERENCE_CACHE=DIR keeps the references in DIR (reference_cache.h).
+// WHITTED_REFERENCE_CACHE=DIR keeps the references in DIR (core/analysis/reference_cache.h).
 // WHITTED_QUALITY_CSV=FILE also writes the rows to FILE (quality_table.h), for
 // `whitted-tradeoff --report --quality-csv` (docs/tradeoff.md).
 #include <cstdio>
@@ -20,11 +20,11 @@
 
 #include "analysis/quality_check.h"
 #include "analysis/quality_table.h"
+#include "analysis/reference_cache.h"
 #include "analysis/render_presets.h"
 #include "base/utc_date.h"
 #include "bench_scenes.h"
 #include "paired_times.h"
-#include "reference_cache.h"
 
 using namespace whitted;
 using namespace whitted::bench;

@@ -11,7 +11,7 @@
 // probe to see; a reference that moves is not converged there.
 // Usage: bench_quality_fields [FIRST LAST [WIDTH]] (default 1 8 160; the
 // height is three quarters of the width). Prints a Markdown table.
-// WHITTED_REFERENCE_CACHE=DIR keeps the references in DIR (reference_cache.h);
+// WHITTED_REFERENCE_CACHE=DIR keeps the references in DIR (core/analysis/reference_cache.h);
 // WHITTED_NO_WHY=1 leaves out the examination of a missed target's worst
 // pixel (whyMissed(), half a minute a miss at 640x480).
 //
@@ -34,10 +34,10 @@
 #include <utility>
 
 #include "analysis/quality_check.h"
+#include "analysis/reference_cache.h"
 #include "image/image_compare.h"
 #include "image/image_error.h"
 #include "paired_times.h"
-#include "reference_cache.h"
 #include "sphere_field.h"
 #include "tracer/renderer.h"
 

@@ -1,9 +1,11 @@
-// The converged references the quality benches judge against, kept between
-// runs (issue 15): shared by bench_quality and bench_quality_fields.
-// At 640x480 a reference takes minutes, the renders it judges seconds; so
-// with WHITTED_REFERENCE_CACHE set to a folder, each is kept there as
-// OpenEXR by name and size and read back on the next run, and trying a
-// change to the sampling then costs only the renders.
+// The converged references that renders to a quality are judged against,
+// kept between runs: bench_quality, bench_quality_fields and
+// test_quality_target use them. At 640x480 a reference takes minutes, the
+// renders it judges seconds; so with WHITTED_REFERENCE_CACHE set to a
+// folder, each is kept there as OpenEXR by name and size and read back on
+// the next run, and trying a change to the sampling then costs only the
+// renders. The test suite makes its folder anew each run, so that its
+// references always come from the code under test.
 #pragma once
 
 #include <cctype>
@@ -14,20 +16,26 @@
 #include "analysis/quality_check.h"
 #include "image/image_io.h"
 
-namespace whitted::bench {
+namespace whitted {
 
-// The scene in double, 512 samples a pixel, kDeepReferenceDepth; `name`
-// says which scene it is, as the file's name in the cache (letters and
-// digits kept, the rest dashes, then the size and the depth).
-inline Image cachedReference(const Scene& scene, std::string name) {
+// Where the scene's reference is kept: in WHITTED_REFERENCE_CACHE's folder,
+// `name` (which scene it is; letters and digits kept, the rest dashes), then
+// the size and the depth. Empty when the variable is not set.
+inline std::filesystem::path cachedReferenceFile(const Scene& scene, std::string name) {
     const char* folder = std::getenv("WHITTED_REFERENCE_CACHE");
-    if (!folder) return convergedReference(scene, 512, kDeepReferenceDepth);
+    if (!folder) return {};
     for (char& c : name)
         if (!std::isalnum(static_cast<unsigned char>(c))) c = '-';
-    const std::filesystem::path file =
-        std::filesystem::path(folder) / (name + "-" + std::to_string(scene.render.width) + "x" +
-                                         std::to_string(scene.render.height) + "-depth" +
-                                         std::to_string(kDeepReferenceDepth) + ".exr");
+    return std::filesystem::path(folder) / (name + "-" + std::to_string(scene.render.width) + "x" +
+                                            std::to_string(scene.render.height) + "-depth" +
+                                            std::to_string(kDeepReferenceDepth) + ".exr");
+}
+
+// The scene in double, 512 samples a pixel, kDeepReferenceDepth: read from
+// its cachedReferenceFile() if there is one, rendered (and kept) otherwise.
+inline Image cachedReference(const Scene& scene, const std::string& name) {
+    const std::filesystem::path file = cachedReferenceFile(scene, name);
+    if (file.empty()) return convergedReference(scene, 512, kDeepReferenceDepth);
     if (std::filesystem::exists(file)) return readImage(file);
     std::filesystem::create_directories(file.parent_path());
     Image reference = convergedReference(scene, 512, kDeepReferenceDepth);
@@ -35,4 +43,4 @@ inline Image cachedReference(const Scene& scene, std::string name) {
     return reference;
 }
 
-}  // namespace whitted::bench
+}  // namespace whitted

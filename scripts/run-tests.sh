@@ -2,7 +2,9 @@
 # Builds the project (scripts/setup.sh) and runs the whole test suite; then,
 # unless --quick, the same suite under AddressSanitizer + UndefinedBehaviorSanitizer,
 # the threaded tests under ThreadSanitizer (CMakePresets.json), and the scene
-# loader's fuzzer (tests/fuzz). Stops at the first failing stage, with its exit code.
+# loader's fuzzer (tests/fuzz). Stops at the first failing stage, with its exit
+# code. Every run ends with each stage's time and the ten slowest tests
+# (docs/testing.md says what each stage covers).
 set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -10,32 +12,77 @@ quick=0
 if [[ "${1:-}" == "--quick" ]]; then
   quick=1
 fi
-bash scripts/setup.sh
+
+# Each stage's ctest output, for the ten slowest tests at the end.
+logs=$(mktemp -d)
+stage_names=()
+stage_seconds=()
+run_start=$SECONDS
+
+report() {
+  local status=$?
+  echo
+  echo "run-tests: time by stage"
+  local i
+  for i in "${!stage_names[@]}"; do
+    printf '  %5d s  %s\n' "${stage_seconds[$i]}" "${stage_names[$i]}"
+  done
+  printf '  %5d s  in all\n' $((SECONDS - run_start))
+  echo "run-tests: the ten slowest tests"
+  # ctest's lines: "12/521 Test  #45: Suite.Name .......   Passed    2.95 sec"
+  cat "$logs"/*.log 2>/dev/null |
+    awk -v OFS='\t' '/ Test +#[0-9]+: / && / sec$/ {
+        print $(NF - 1), $4 }' |
+    sort -rn | head -10 | awk -F'\t' '{ printf "  %7.2f s  %s\n", $1, $2 }'
+  rm -rf "$logs"
+  if ((status != 0)); then
+    echo "run-tests: FAILED in stage \"${current_stage:-set-up}\" (exit code $status)" >&2
+  fi
+  exit "$status"
+}
+trap report EXIT
+
+# stage NAME COMMAND...: runs the command, timing it under NAME.
+stage() {
+  current_stage=$1
+  shift
+  echo "run-tests: $current_stage" >&2
+  local start=$SECONDS
+  "$@"
+  stage_names+=("$current_stage")
+  stage_seconds+=($((SECONDS - start)))
+}
+
+# tests LOGNAME CTEST-ARGS...: ctest, its output also kept for the report.
+tests() {
+  local log="$logs/$1.log"
+  shift
+  ctest "$@" | tee "$log"
+}
+
+stage "set-up and build (Release)" bash scripts/setup.sh
 
 # GUI tests run without a display.
 export QT_QPA_PLATFORM=offscreen
-stage() {
-  echo "run-tests: $*" >&2
-}
-
-stage "test suite (Release)"
 # --no-tests=error: a suite that registered no test must not pass.
-ctest --test-dir build --output-on-failure -j2 --no-tests=error
+stage "test suite (Release)" tests release --test-dir build --output-on-failure -j2 --no-tests=error
 if ((quick)); then
   exit 0
 fi
 
-stage "test suite under AddressSanitizer + UndefinedBehaviorSanitizer"
-cmake --preset asan >/dev/null
-cmake --build --preset asan
-ctest --preset asan
+configure_quietly() {
+  cmake --preset "$1" >/dev/null
+}
 
-stage "renderer, worker and editor tests under ThreadSanitizer"
-cmake --preset tsan >/dev/null
-cmake --build --preset tsan
-ctest --preset tsan
+stage "build (AddressSanitizer + UndefinedBehaviorSanitizer)" \
+  eval 'configure_quietly asan && cmake --build --preset asan'
+stage "test suite under AddressSanitizer + UndefinedBehaviorSanitizer" tests asan --preset asan
 
-stage "scene loader fuzzing (corpus, then a short run)"
-CXX=clang++ cmake -S tests/fuzz -B build-fuzz -G Ninja >/dev/null
-cmake --build build-fuzz
-ctest --test-dir build-fuzz --output-on-failure --no-tests=error
+stage "build (ThreadSanitizer: threaded tests)" \
+  eval 'configure_quietly tsan && cmake --build --preset tsan'
+stage "renderer, worker and editor tests under ThreadSanitizer" tests tsan --preset tsan
+
+stage "build (scene loader fuzzer)" \
+  eval 'CXX=clang++ cmake -S tests/fuzz -B build-fuzz -G Ninja >/dev/null && cmake --build build-fuzz'
+stage "scene loader fuzzing (corpus, then a short run)" \
+  tests fuzz --test-dir build-fuzz --output-on-failure --no-tests=error

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Builds the project (scripts/setup.sh) and runs the whole test suite; then,
-# unless --quick, the same suite under AddressSanitizer + UndefinedBehaviorSanitizer,
+# Builds the project (scripts/setup.sh) and runs the whole test suite but the
+# long numerical validations (label validation); then, unless --quick, those,
+# the same suite under AddressSanitizer + UndefinedBehaviorSanitizer,
 # the threaded tests under ThreadSanitizer (CMakePresets.json), and the scene
 # loader's fuzzer (tests/fuzz). Stops at the first failing stage, with its exit
 # code. Every run ends with each stage's time and the ten slowest tests
@@ -65,10 +66,13 @@ stage "set-up and build (Release)" bash scripts/setup.sh
 # GUI tests run without a display.
 export QT_QPA_PLATFORM=offscreen
 # --no-tests=error: a suite that registered no test must not pass.
-stage "test suite (Release)" tests release --test-dir build --output-on-failure -j2 --no-tests=error
+stage "test suite (Release) but the long validations" \
+  tests release --test-dir build --output-on-failure -j2 --no-tests=error -LE validation
 if ((quick)); then
   exit 0
 fi
+stage "long numerical validations (Release)" \
+  tests validation --test-dir build --output-on-failure -j2 --no-tests=error -L validation
 
 configure_quietly() {
   cmake --preset "$1" >/dev/null

@@ -2,12 +2,14 @@
 // where the presets were never fitted: random fields of matte, mirror and
 // glass balls (app/field), each against a converged reference (double, 512
 // samples a pixel, depth 14). The targets must be met in at least 95% of the
-// twelve renders, which is all of them, and Final with no more rays than the fixed sample count
-// that would meet it at the same depth (rays, not seconds: a count does not depend on the machine's
-// load). Draft and Preview do not get there at this size: Draft starts with the pixels' centres,
-// but at 128x96, where balls are a few pixels wide, their estimate sends most tiles on to two
-// samples; Preview's planning and first two samples cost more than the fixed samples it needs.
-// Their ratios are printed, and docs/quality.md has them at 320x240.
+// twelve renders, which is all of them, and Final with no more rays than the
+// fixed sample count that would meet it at the same depth (rays, not seconds:
+// a count does not depend on the machine's load). Draft and Preview do not
+// get there at this size: Draft starts with the pixels' centres, but at
+// 128x96, where balls are a few pixels wide, their estimate sends most tiles
+// on to two samples; Preview's planning and first two samples cost more than
+// the fixed samples it needs. Their ratios are printed, and docs/quality.md
+// has them at 320x240.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -41,8 +43,8 @@ QualityTarget preset(const std::string& name) {
 struct FieldAndPreset {
     std::uint32_t seed;
     std::string preset;
-    // Final on the two smaller fields has a fixed sample count that meets
-    // it, so that the rays are compared somewhere; on the two larger none does.
+    // Final on the two smaller fields has a fixed sample count that meets it
+    // (on the two larger none does today): the rays are compared there at least.
     bool hasAFixedCountToBeat = false;
 };
 
@@ -62,7 +64,7 @@ TEST_P(PresetOnAField, MeetsItsTargetOnAFieldItWasNotFittedOn) {
         fixed.samples);
     EXPECT_TRUE(c.met);
     if (target.name != "Final") return;
-    EXPECT_EQ(fixed.samples > 0, GetParam().hasAFixedCountToBeat);
+    if (GetParam().hasAFixedCountToBeat) EXPECT_GT(fixed.samples, 0);
     if (fixed.samples > 0) {
         EXPECT_LE(c.rays, fixed.rays)
             << "Final took more rays than " << fixed.samples << " fixed samples";

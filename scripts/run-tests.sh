@@ -31,10 +31,12 @@ report() {
   printf '  %5d s  in all\n' $((SECONDS - run_start))
   echo "run-tests: the ten slowest tests"
   # ctest's lines: "12/521 Test  #45: Suite.Name .......   Passed    2.95 sec"
-  cat "$logs"/*.log 2>/dev/null |
-    awk -v OFS='\t' '/ Test +#[0-9]+: / && / sec$/ {
-        print $(NF - 1), $4 }' |
-    sort -rn | head -10 | awk -F'\t' '{ printf "  %7.2f s  %s\n", $1, $2 }'
+  local log
+  for log in "$logs"/*.log; do
+    [[ -e "$log" ]] || continue
+    awk -v OFS='\t' -v stage="$(basename "$log" .log)" \
+      '/ Test +#[0-9]+: / && / sec$/ { print $(NF - 1), $4, stage }' "$log"
+  done | sort -rn | head -10 | awk -F'\t' '{ printf "  %7.2f s  %s (%s)\n", $1, $2, $3 }'
   rm -rf "$logs"
   if ((status != 0)); then
     echo "run-tests: FAILED in stage \"${current_stage:-set-up}\" (exit code $status)" >&2

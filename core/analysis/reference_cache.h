@@ -4,8 +4,8 @@
 // renders it judges seconds; so with WHITTED_REFERENCE_CACHE set to a
 // folder, each is kept there as OpenEXR by name and size and read back on
 // the next run, and trying a change to the sampling then costs only the
-// renders. The test suite makes its folder anew each run, so that its
-// references always come from the code under test.
+// renders. The test suite renders its references anew each run
+// (make_quality_references), so that they come from the code under test.
 #pragma once
 
 #include <cctype>

@@ -22,6 +22,8 @@ run_start=$SECONDS
 
 report() {
   local status=$?
+  # A failure while reporting must not replace the suite's own exit code.
+  set +e +o pipefail
   echo
   echo "run-tests: time by stage"
   local i
@@ -36,7 +38,8 @@ report() {
     [[ -e "$log" ]] || continue
     awk -v OFS='\t' -v stage="$(basename "$log" .log)" \
       '/ Test +#[0-9]+: / && / sec$/ { print $(NF - 1), $4, stage }' "$log"
-  done | sort -rn | head -10 | awk -F'\t' '{ printf "  %7.2f s  %s (%s)\n", $1, $2, $3 }'
+  done | sort -rn |
+    awk -F'\t' 'NR <= 10 { printf "  %7.2f s  %s (%s)\n", $1, $2, $3 }'
   rm -rf "$logs"
   if ((status != 0)); then
     echo "run-tests: FAILED in stage \"${current_stage:-set-up}\" (exit code $status)" >&2

@@ -45,12 +45,12 @@
 namespace whitted {
 namespace {
 
+using test::kBand;
+using test::kSpheres;
 using test::Quad;
 using test::QVec;
 using test::Rng;
 
-constexpr double kBand = 16;  // K of delta = K eps (|o - c| + r)
-constexpr int kSpheres = 2000;
 constexpr int kRaysPerSphere = 16;
 
 struct Tally {

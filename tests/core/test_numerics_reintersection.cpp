@@ -31,12 +31,12 @@
 namespace whitted {
 namespace {
 
+using test::kBand;
+using test::kSpheres;
 using test::Quad;
 using test::QVec;
 using test::Rng;
 
-constexpr double kBand = 16;
-constexpr int kSpheres = 2000;
 constexpr int kRaysPerClass = 3;  // per sphere, per direction class, outwards and inwards
 constexpr int kClasses = 3;
 const char* const kClassNames[kClasses] = {"hemisphere", "grazing 1e-3", "grazing 1e-6"};

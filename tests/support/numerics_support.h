@@ -27,6 +27,12 @@
 
 namespace whitted::test {
 
+// The band of the intersection properties: a hit (or a miss) within
+// delta = K eps (|o - c| + r) of the exact answer is right, with K = kBand.
+constexpr double kBand = 16;
+// Random spheres a property is checked on, each with its own rays.
+constexpr int kSpheres = 2000;
+
 // ---- seeds --------------------------------------------------------------------
 
 // The seed of a property test: WHITTED_TEST_SEED (decimal or 0x...) when set, else a

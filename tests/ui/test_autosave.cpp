@@ -19,7 +19,6 @@
 #include "editor/main_window.h"
 #include "scene/scene_io.h"
 #include "support/core_support.h"
-#include "support/gui_test_main.h"
 #include "support/test_support.h"
 
 namespace whitted::ui {
@@ -183,7 +182,3 @@ TEST_F(AutosaveTest, KilledEditor_DiscardKeepsTheSceneAndRemovesTheCopy) {
 
 }  // namespace
 }  // namespace whitted::ui
-
-int main(int argc, char** argv) {
-    return whitted::test::runGuiTests(argc, argv, "test_autosave", false);
-}

@@ -38,7 +38,6 @@
 #include "scene/free_spot.h"
 #include "scene/scene_io.h"
 #include "support/export_support.h"
-#include "support/gui_test_main.h"
 #include "support/main_window_fixture.h"
 #include "support/test_support.h"
 #include "tracer/kernel_dispatch.h"
@@ -448,7 +447,3 @@ TEST_F(EditorCommandsTest, EveryFieldOfThePanels_HasAToolTip) {
 
 }  // namespace
 }  // namespace whitted::ui
-
-int main(int argc, char** argv) {
-    return whitted::test::runGuiTests(argc, argv, "test_editor_commands");
-}

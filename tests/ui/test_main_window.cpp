@@ -36,7 +36,6 @@
 #include "panels/number_field.h"
 #include "panels/scene_panel.h"
 #include "scene/scene_io.h"
-#include "support/gui_test_main.h"
 #include "support/main_window_fixture.h"
 #include "support/test_support.h"
 #include "tracer/renderer.h"
@@ -513,7 +512,3 @@ TEST_F(MainWindowTest, Stress_RandomEditsUndoRedoWhileRendering_FinalViewIsFresh
 
 }  // namespace
 }  // namespace whitted::ui
-
-int main(int argc, char** argv) {
-    return whitted::test::runGuiTests(argc, argv, "test_main_window");
-}

@@ -10,7 +10,6 @@
 
 #include "plot/plot_axis.h"
 #include "plot/scatter_plot.h"
-#include "support/qt_test_main.h"
 
 namespace whitted::ui {
 namespace {
@@ -203,7 +202,3 @@ TEST(ScatterPlot, UnshowableValuesAreLeftOut) {
 
 }  // namespace
 }  // namespace whitted::ui
-
-int main(int argc, char** argv) {
-    return whitted::test::runQtTests<QGuiApplication>(argc, argv);
-}

@@ -23,7 +23,6 @@
 #include "precision_dock/precision_view.h"
 #include "scene/scene_io.h"
 #include "scene/scene_transform.h"
-#include "support/gui_test_main.h"
 #include "support/main_window_fixture.h"
 #include "support/test_support.h"
 #include "viewport/image_convert.h"
@@ -276,7 +275,3 @@ TEST(FloatRangeWarningTest, StandInCheck_ShowsReason_ClickSwitchesToDouble_UndoR
 
 }  // namespace
 }  // namespace whitted::ui
-
-int main(int argc, char** argv) {
-    return whitted::test::runGuiTests(argc, argv, "test_precision_view");
-}

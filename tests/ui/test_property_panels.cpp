@@ -29,7 +29,6 @@
 #include "panels/scene_panel.h"
 #include "scene/material_presets.h"
 #include "scene/scene_io.h"
-#include "support/gui_test_main.h"
 #include "support/main_window_fixture.h"
 #include "support/test_support.h"
 #include "viewport/render_view.h"
@@ -411,7 +410,3 @@ TEST_F(PropertyPanelsTest, SmallBall_SliderAndArrowSteps_SmallAndFinerWithShift)
 
 }  // namespace
 }  // namespace whitted::ui
-
-int main(int argc, char** argv) {
-    return whitted::test::runGuiTests(argc, argv, "test_property_panels");
-}

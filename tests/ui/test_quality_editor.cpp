@@ -22,7 +22,6 @@
 #include "image/image_io.h"
 #include "panels/preset_controls.h"
 #include "support/export_support.h"
-#include "support/gui_test_main.h"
 #include "support/main_window_fixture.h"
 #include "support/test_support.h"
 #include "tradeoff_dock/tradeoff_points.h"
@@ -327,7 +326,3 @@ TEST_F(QualityEditorTest, ExportToPreview_WritesAFileThatMeetsIt_AndSaysWhatItRe
 
 }  // namespace
 }  // namespace whitted::ui
-
-int main(int argc, char** argv) {
-    return whitted::test::runGuiTests(argc, argv, "test_quality_editor");
-}

@@ -14,7 +14,6 @@
 #include "document/scene_document.h"
 #include "scene/scene_io.h"
 #include "support/core_support.h"
-#include "support/qt_test_main.h"
 
 namespace whitted::ui {
 namespace {
@@ -282,7 +281,3 @@ TEST(SceneDocument, EditItem_InAGesture_IsOneUndoStepThatUndoesExactly) {
 
 }  // namespace
 }  // namespace whitted::ui
-
-int main(int argc, char** argv) {
-    return whitted::test::runQtTests<QCoreApplication>(argc, argv);
-}

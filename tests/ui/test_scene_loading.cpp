@@ -18,7 +18,6 @@
 #include "editor/main_window.h"
 #include "scene/scene_io.h"
 #include "support/core_support.h"
-#include "support/gui_test_main.h"
 #include "support/test_support.h"
 
 namespace whitted::ui {
@@ -107,7 +106,3 @@ TEST_F(SceneLoadingTest, LargeFileBadAtTheEnd_KeepsTheOpenSceneAndNamesTheSphere
 
 }  // namespace
 }  // namespace whitted::ui
-
-int main(int argc, char** argv) {
-    return whitted::test::runGuiTests(argc, argv, "test_scene_loading");
-}

@@ -35,7 +35,6 @@
 #include "image/image_error.h"
 #include "plot/plot_widget.h"
 #include "scene/scene_io.h"
-#include "support/gui_test_main.h"
 #include "support/main_window_fixture.h"
 #include "support/test_support.h"
 #include "tradeoff_dock/settings_prediction.h"
@@ -804,7 +803,3 @@ TEST(TradeoffRecord, ViewPace_IsTheMedianOfWhatItsRendersTookBeyondTheProbes) {
 
 }  // namespace
 }  // namespace whitted::ui
-
-int main(int argc, char** argv) {
-    return whitted::test::runGuiTests(argc, argv, "test_tradeoff_view");
-}

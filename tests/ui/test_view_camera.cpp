@@ -4,6 +4,7 @@
 // undo step, the selection outlined, lights drawn and clickable, and the name of
 // what is under the cursor. Driven through the shown window's keys and mouse;
 // positions are checked against core's projection, pictures against core's render.
+#include <QApplication>
 #include <QPainter>
 #include <QTest>
 #include <QUndoStack>
@@ -16,7 +17,6 @@
 
 #include "camera/camera_control.h"
 #include "panels/scene_panel.h"
-#include "support/gui_test_main.h"
 #include "support/main_window_fixture.h"
 #include "viewport/view_overlay.h"
 
@@ -339,7 +339,3 @@ TEST_F(ViewCameraTest, LargeScene_MoveAndOrbit_RefitTheTreeAndShowTheExactPictur
 }
 
 }  // namespace whitted::ui
-
-int main(int argc, char** argv) {
-    return whitted::test::runGuiTests(argc, argv, "test_view_camera");
-}

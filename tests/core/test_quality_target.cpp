@@ -64,7 +64,9 @@ TEST_P(PresetOnAField, MeetsItsTargetOnAFieldItWasNotFittedOn) {
         fixed.samples);
     EXPECT_TRUE(c.met);
     if (target.name != "Final") return;
-    if (GetParam().hasAFixedCountToBeat) EXPECT_GT(fixed.samples, 0);
+    if (GetParam().hasAFixedCountToBeat) {
+        EXPECT_GT(fixed.samples, 0);
+    }
     if (fixed.samples > 0) {
         EXPECT_LE(c.rays, fixed.rays)
             << "Final took more rays than " << fixed.samples << " fixed samples";

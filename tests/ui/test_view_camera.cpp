@@ -307,7 +307,6 @@ TEST_F(ViewCameraTest, LightOutsideThePicture_MarkedAtTheEdgeTowardsIt) {
     EXPECT_EQ(window->scenePanel()->currentIndex(), 0);
 }
 
-}  // namespace
 // Issue 12 item 5: on a scene of 20,000 balls, moving one ball and orbiting
 // the camera refit the render worker's tree instead of building one (the
 // build is the costly part of an edit at this size), and the view shows
@@ -338,4 +337,5 @@ TEST_F(ViewCameraTest, LargeScene_MoveAndOrbit_RefitTheTreeAndShowTheExactPictur
     EXPECT_TRUE(sameImage(view->frame(), coreRender(doc->scene())));
 }
 
+}  // namespace
 }  // namespace whitted::ui

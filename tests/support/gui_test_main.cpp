@@ -1,5 +1,6 @@
 // The main() of the editor's GUI tests: one QApplication for the whole run,
-// offscreen unless QT_QPA_PLATFORM says otherwise, and each test's settings
+// offscreen on a laptop's 1366 x 768 screen (support/laptop_screen.json)
+// unless QT_QPA_PLATFORM names another platform, and each test's settings
 // and app data in Qt's test locations under the test's own name, never the
 // user's and never another test's (CTest runs two at a time).
 #include <QApplication>
@@ -34,6 +35,9 @@ class SettingsOfTheTestsOwn : public ::testing::EmptyTestEventListener {
 }  // namespace
 
 int main(int argc, char** argv) {
+    const QByteArray platform = qgetenv("QT_QPA_PLATFORM");
+    if (platform.isEmpty() || platform == "offscreen")
+        qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" WHITTED_TEST_SCREEN);
     QStandardPaths::setTestModeEnabled(true);
     return whitted::test::runQtTests<QApplication>(argc, argv, [] {
         // A test that closes its last window (Ctrl+Q) must not end the application

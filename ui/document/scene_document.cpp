@@ -273,6 +273,17 @@ void SceneDocument::endGesture() {
     if (--gestureDepth_ == 0) undo_.endMacro();
 }
 
+void SceneDocument::discardGesture() {
+    if (gestureDepth_ == 0) return;
+    if (--gestureDepth_ > 0) return;
+    undo_.endMacro();
+    // An obsolete step is taken off the stack by undo() without being undone:
+    // the scene is already as it was.
+    auto* step = const_cast<QUndoCommand*>(undo_.command(undo_.index() - 1));
+    step->setObsolete(true);
+    undo_.undo();
+}
+
 QString SceneDocument::uniqueName(ItemKind kind, const QString& stem) const {
     for (int n = itemCount(scene_, kind) + 1;; ++n) {
         const QString candidate = QStringLiteral("%1 %2").arg(stem).arg(n);

@@ -78,6 +78,10 @@ class SceneDocument : public QObject {
     // Everything edited between these two calls is a single undo step (a slider drag).
     void beginGesture(const QString& text);
     void endGesture();
+    // Ends the gesture and forgets its step, which must leave the scene as it
+    // found it: a gesture the user cancelled after its last edit put the scene
+    // back (Escape during a move in the view). Nothing is left to redo.
+    void discardGesture();
 
     // A name for a new item of `kind` that no other item of that kind has ("sphere 4").
     QString uniqueName(ItemKind kind, const QString& stem) const;

@@ -11,6 +11,7 @@
 #include <QProgressDialog>
 #include <QPushButton>
 #include <QScopedValueRollback>
+#include <QScreen>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTimer>
@@ -21,6 +22,7 @@
 #include "document/scene_loading.h"
 #include "editor/export_job.h"
 #include "editor/float_range_warning.h"
+#include "editor/window_placement.h"
 #include "panels/preset_controls.h"
 #include "panels/scene_panel.h"
 #include "tradeoff_dock/tradeoff_view.h"
@@ -90,14 +92,23 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(&doc_, &SceneDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(&doc_, &SceneDocument::filePathChanged, this, &MainWindow::updateTitle);
     connect(&worker_, &RenderWorker::frameReady, this, &MainWindow::onFrame);
+    connect(view_, &RenderView::moveMessage, this, [this](const QString& text) {
+        if (text.isEmpty())
+            statusBar()->clearMessage();
+        else
+            statusBar()->showMessage(text);
+    });
     connect(view_, &RenderView::picked, this, [this](ItemKind kind, int index) {
         if (index >= 0) scenePanel_->select(kind, index);
     });
 
     QSettings settings;
-    if (!restoreGeometry(settings.value("window/geometry").toByteArray())) {
+    if (!restoreGeometry(settings.value("window/geometry").toByteArray()) ||
+        !someScreenShows(geometry())) {
         // First start: room for the view, the docks only as wide as their forms.
-        resize(1400, 860);
+        const QRect available = screen()->availableGeometry();
+        resize(firstWindowSize(available.size()));
+        move(available.center() - rect().center());
         // Once shown: before that the docks have no width to give away.
         QTimer::singleShot(0, this, [this] {
             resizeDocks(

@@ -1,5 +1,6 @@
 #include "viewport/render_view.h"
 
+#include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QWheelEvent>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "camera/camera_control.h"
+#include "camera/view_move.h"
 #include "document/scene_document.h"
 
 namespace whitted::ui {
@@ -27,6 +29,11 @@ struct CameraActionEntry {
     // Reset and Frame also sit in the View menu, so they work from anywhere.
     Qt::ShortcutContext context = Qt::WidgetShortcut;
 };
+
+// Where a sphere (its centre) or a light is.
+Vec3 itemPosition(const Scene& s, ItemKind kind, int index) {
+    return kind == ItemKind::Sphere ? s.spheres[index].center : s.lights[index].position;
+}
 
 QAction* addCameraAction(QWidget* view, const CameraActionEntry& e) {
     auto* action = new QAction(e.text, view);
@@ -126,12 +133,18 @@ void RenderView::updateHover(const QPoint& pos) {
 }
 
 void RenderView::leaveEvent(QEvent*) {
+    pointer_ = {-1, -1};
     overlay_.hoverText.clear();
     update();
 }
 
 void RenderView::mousePressEvent(QMouseEvent* e) {
     setFocus();
+    if (move_) {
+        // Its release is then no click: dragButton_ stays empty.
+        finishMove(e->button() == Qt::LeftButton);
+        return;
+    }
     if (dragButton_ != Qt::NoButton) return;
     dragButton_ = e->button();
     pressPos_ = lastPos_ = e->position().toPoint();
@@ -140,6 +153,13 @@ void RenderView::mousePressEvent(QMouseEvent* e) {
 
 void RenderView::mouseMoveEvent(QMouseEvent* e) {
     const QPoint pos = e->position().toPoint();
+    pointer_ = pos;
+    if (move_) {
+        move_->pointer = pos;
+        move_->snap = e->modifiers().testFlag(Qt::ControlModifier);
+        applyMove();
+        return;
+    }
     if (dragButton_ == Qt::NoButton) {
         updateHover(pos);
         return;
@@ -217,6 +237,157 @@ void RenderView::frameSelectedSphere() {
                frameSphere(s.camera, sp.center, sp.radius), EditRun::Separate);
 }
 
+void RenderView::startMove() {
+    const Scene& s = doc_->scene();
+    const ItemKind kind = overlay_.selectedKind;
+    const int index = overlay_.selectedIndex;
+    if (move_ || dragButton_ != Qt::NoButton || kind == ItemKind::Material || index < 0 ||
+        index >= itemCount(s, kind))
+        return;
+    const Vec3 start = itemPosition(s, kind, index);
+    // The pointer grabs where it is; started from the menu, outside the view,
+    // it grabs the item's centre.
+    const QRect r = imageRect();
+    QPoint pointer = pointer_;
+    if (!rect().contains(pointer))
+        pointer = widgetPoint(s, r, start).value_or(r.center()).toPoint();
+    move_ = ItemMove{kind, index, start, imagePoint(s, r, pointer), pointer, {}, {}, false, false};
+    overlay_.hoverText.clear();
+    setFocus();
+    emit moveMessage(moveText());
+    update();
+}
+
+Vec3 RenderView::moveOffset() const {
+    const ItemMove& m = *move_;
+    if (!m.typed.isEmpty()) {
+        Vec3 unit(0.0);
+        unit[m.axis.value_or(0)] = 1;
+        bool number = false;
+        const double distance = m.typed.toDouble(&number);
+        return number ? unit * distance : Vec3(0.0);
+    }
+    const Scene& s = doc_->scene();
+    const QPointF to = imagePoint(s, imageRect(), m.pointer);
+    const Vec3 offset = viewMoveOffset(s.camera, s.render.width, s.render.height, m.start,
+                                       {m.from.x(), m.from.y()}, {to.x(), to.y()}, m.axis);
+    return m.snap ? snapToGrid(offset, kMoveGrid) : offset;
+}
+
+void RenderView::setItemPosition(const ItemMove& m, const Vec3& position) {
+    const QString text = tr("Move %1").arg(itemName(doc_->scene(), m.kind, m.index));
+    if (m.kind == ItemKind::Sphere)
+        doc_->editItem<Sphere>(m.index, text, [&](Sphere& sphere) { sphere.center = position; });
+    else
+        doc_->editItem<Light>(m.index, text, [&](Light& light) { light.position = position; });
+}
+
+void RenderView::applyMove() {
+    ItemMove& m = *move_;
+    const Vec3 position = m.start + moveOffset();
+    if (!m.recorded) {
+        // No step for a move that never moved.
+        if (position == m.start) {
+            emit moveMessage(moveText());
+            return;
+        }
+        doc_->beginGesture(tr("Move %1").arg(itemName(doc_->scene(), m.kind, m.index)));
+        m.recorded = true;
+    }
+    setItemPosition(m, position);
+    emit moveMessage(moveText());
+}
+
+void RenderView::finishMove(bool keep) {
+    const ItemMove m = *move_;
+    move_.reset();
+    if (m.recorded) {
+        const Vec3 now = itemPosition(doc_->scene(), m.kind, m.index);
+        // Kept where it started, a move leaves no step either.
+        if (keep && now != m.start) {
+            doc_->endGesture();
+        } else {
+            setItemPosition(m, m.start);
+            doc_->discardGesture();
+        }
+    }
+    emit moveMessage({});
+    update();
+}
+
+QString RenderView::moveText() const {
+    const ItemMove& m = *move_;
+    const Vec3 offset = moveOffset();
+    static const char* const kAxes[] = {"X", "Y", "Z"};
+    const QString along = m.axis ? tr(" along %1").arg(QLatin1String(kAxes[*m.axis])) : QString();
+    const QString typed = m.typed.isEmpty() ? QString() : tr(" (typed %1)").arg(m.typed);
+    return tr("Move %1 by %2, %3, %4%5%6. X, Y, Z: along an axis; type a distance; "
+              "Ctrl: snap to %7; Enter or click: done; Esc or right click: cancel")
+        .arg(itemName(doc_->scene(), m.kind, m.index))
+        .arg(offset.x, 0, 'g', 4)
+        .arg(offset.y, 0, 'g', 4)
+        .arg(offset.z, 0, 'g', 4)
+        .arg(along, typed)
+        .arg(kMoveGrid);
+}
+
+bool RenderView::event(QEvent* e) {
+    // During a move every key is the move's (X, a digit, Escape), not a shortcut's.
+    if (move_ && e->type() == QEvent::ShortcutOverride) {
+        e->accept();
+        return true;
+    }
+    return QWidget::event(e);
+}
+
+void RenderView::keyPressEvent(QKeyEvent* e) {
+    if (!move_) {
+        QWidget::keyPressEvent(e);
+        return;
+    }
+    ItemMove& m = *move_;
+    const QString text = e->text();
+    switch (e->key()) {
+        case Qt::Key_Escape:
+            finishMove(false);
+            return;
+        case Qt::Key_Return:
+        case Qt::Key_Enter:
+            finishMove(true);
+            return;
+        case Qt::Key_X:
+        case Qt::Key_Y:
+        case Qt::Key_Z: {
+            const int axis = e->key() - Qt::Key_X;
+            m.axis = m.axis == axis ? std::nullopt : std::optional<int>(axis);
+            break;
+        }
+        case Qt::Key_Backspace:
+            m.typed.chop(1);
+            break;
+        case Qt::Key_Minus:
+            // As in Blender: the sign of what is typed, at any time.
+            m.typed = m.typed.startsWith('-') ? m.typed.mid(1) : QStringLiteral("-") + m.typed;
+            break;
+        case Qt::Key_Control:
+            m.snap = true;
+            break;
+        default:
+            if (text.size() != 1 || !(text[0].isDigit() || text[0] == '.')) return;
+            m.typed += text;
+    }
+    applyMove();
+}
+
+void RenderView::keyReleaseEvent(QKeyEvent* e) {
+    if (move_ && e->key() == Qt::Key_Control) {
+        move_->snap = false;
+        applyMove();
+        return;
+    }
+    QWidget::keyReleaseEvent(e);
+}
+
 void RenderView::buildCameraActions() {
     // Each action calls the camera code itself: never a synthetic key event,
     // which would come back to the same shortcut (it overflowed the stack).
@@ -260,6 +431,11 @@ void RenderView::buildCameraActions() {
          {Qt::Key_Home},
          [this] { resetCamera(); },
          Qt::WindowShortcut},
+        {"moveSelected",
+         tr("Move Selected"),
+         {Qt::Key_G},
+         [this] { startMove(); },
+         Qt::WindowShortcut},
         {"frameSelected",
          tr("Frame Selected Sphere"),
          {Qt::Key_F},
@@ -274,6 +450,12 @@ QList<QPair<QString, QString>> RenderView::mouseControls() {
             {tr("Right or middle drag"), tr("Pan the camera")},
             {tr("Wheel"), tr("Move the camera nearer to or farther from what is under the cursor")},
             {tr("Click"), tr("Select the sphere or light under the cursor")},
+            {tr("G, then move"), tr("Move the selected sphere or light with the pointer")},
+            {tr("X, Y or Z while moving"), tr("Move along that axis only; again: freely")},
+            {tr("A number while moving"), tr("Move by exactly that much (G X 2 Enter)")},
+            {tr("Ctrl while moving"), tr("Snap the move to steps of %1").arg(kMoveGrid)},
+            {tr("Click or Enter while moving"), tr("Keep the move, one undo step")},
+            {tr("Esc or right click while moving"), tr("Put it back where it was")},
             {tr("Hover"), tr("Show the name of the sphere or light under the cursor")}};
 }
 

@@ -14,6 +14,14 @@
 // Camera moves are document edits: a drag, or a run of keys or wheel ticks less
 // than half a second apart, is one undo step. Over the picture the view draws
 // the selection, the lights and the name under the cursor (view_overlay.h).
+//
+// G moves the selected sphere or light with the pointer, as in Blender: in the
+// plane through it facing the camera, the point grabbed staying under the
+// pointer; X, Y or Z constrains it to that world axis (again: free again); a
+// typed number moves it by exactly that much along the axis (X when none);
+// Ctrl snaps the offset to a grid of kMoveGrid. A click or Enter keeps the
+// move, one undo step; Escape or a right click puts the item back exactly and
+// leaves no step. While it lasts every key is the move's, not a shortcut's.
 #pragma once
 
 #include <QAction>
@@ -22,6 +30,8 @@
 #include <QPair>
 #include <QPoint>
 #include <QWidget>
+
+#include <optional>
 
 #include "document/scene_document.h"
 #include "scene/scene.h"
@@ -49,6 +59,13 @@ class RenderView : public QWidget {
     void resetCamera();
     void frameSelectedSphere();
 
+    // Starts moving the selected sphere or light with the pointer (G); nothing
+    // when neither is selected.
+    void startMove();
+    bool moving() const { return move_.has_value(); }
+    // The grid Ctrl snaps a move to, in scene units.
+    static constexpr double kMoveGrid = 0.1;
+
     // The keyboard's camera moves, each an action with its shortcut and an
     // object name. Reset and Frame have window-wide shortcuts (they sit in the
     // View menu); the others act while the view has the keyboard focus.
@@ -68,6 +85,9 @@ class RenderView : public QWidget {
   signals:
     // A click picked a sphere or light; index -1: the click hit nothing.
     void picked(whitted::ui::ItemKind kind, int index);
+    // What a move in progress does and which keys it takes, for the status
+    // bar; empty when the move ends.
+    void moveMessage(const QString& text);
 
   protected:
     void paintEvent(QPaintEvent*) override;
@@ -76,6 +96,9 @@ class RenderView : public QWidget {
     void mouseReleaseEvent(QMouseEvent*) override;
     void wheelEvent(QWheelEvent*) override;
     void leaveEvent(QEvent*) override;
+    bool event(QEvent*) override;
+    void keyPressEvent(QKeyEvent*) override;
+    void keyReleaseEvent(QKeyEvent*) override;
 
   private:
     void moveCamera(const QString& text, const Camera& camera, EditRun run = EditRun::Join);
@@ -89,6 +112,24 @@ class RenderView : public QWidget {
     Vec3 keyPivot() const;
     void updateHover(const QPoint& pos);
 
+    // A move in progress (G): what moves, from where, and how.
+    struct ItemMove {
+        ItemKind kind;
+        int index;
+        Vec3 start;               // the item's position before the move, restored by Escape
+        QPointF from;             // the image point the pointer grabbed
+        QPoint pointer;           // where the pointer is now, in the widget
+        std::optional<int> axis;  // 0 x, 1 y, 2 z; none: the plane facing the camera
+        QString typed;            // a distance typed during the move
+        bool snap = false;        // Ctrl held
+        bool recorded = false;    // the gesture has begun: the item has moved
+    };
+    Vec3 moveOffset() const;
+    void applyMove();
+    void setItemPosition(const ItemMove& move, const Vec3& position);
+    void finishMove(bool keep);
+    QString moveText() const;
+
     SceneDocument* doc_;
     QImage frame_;
     QRectF frameShown_;  // the part of frame_ drawn into imageRect()
@@ -98,6 +139,8 @@ class RenderView : public QWidget {
     QPoint pressPos_, lastPos_;
     Qt::MouseButton dragButton_ = Qt::NoButton;
     bool dragging_ = false;
+    QPoint pointer_{-1, -1};  // the pointer's last place in the view
+    std::optional<ItemMove> move_;
     QList<QAction*> cameraActions_;
 };
 

@@ -1,0 +1,184 @@
+// Moving a sphere in the view with the mouse (G, as in Blender), driven as a
+// user drives it: mouse and key events sent to the shown window, never to the
+// view directly. The sphere follows the pointer, axes and typed numbers
+// constrain it, Ctrl snaps, Escape puts it back bit for bit, and each move is
+// one undo step that the saved file holds.
+#include <QStatusBar>
+
+#include "panels/scene_panel.h"
+
+#include "support/main_window_fixture.h"
+
+namespace whitted::ui {
+namespace {
+
+class ViewMoveTest : public MainWindowTest {
+  protected:
+    QWindow* shownWindow() const { return window->windowHandle(); }
+    // A view point in the window's coordinates, where QTest's events on the window go.
+    QPoint inWindow(QPoint viewPoint) const { return view->mapTo(window.get(), viewPoint); }
+    // Where the blue ball's centre is drawn in the view, in continuous widget coordinates.
+    QPointF drawnCentre() const {
+        const QRect r = view->imageRect();
+        const QPointF image = project(doc->scene(), ball().center);
+        return QPointF(r.left() + image.x() * r.width() / kWidth,
+                       r.top() + image.y() * r.height() / kHeight);
+    }
+    const Sphere& ball() const { return doc->scene().spheres[kBlueBall]; }
+
+    // Clicks the blue ball to select it and leaves the pointer on its centre.
+    QPoint selectBall() {
+        const QPoint centre = drawnCentre().toPoint();
+        QTest::mouseClick(shownWindow(), Qt::LeftButton, {}, inWindow(centre));
+        QTest::mouseMove(shownWindow(), inWindow(centre));
+        return centre;
+    }
+    void key(Qt::Key k, Qt::KeyboardModifiers modifiers = {}) {
+        QTest::keyClick(shownWindow(), k, modifiers);
+    }
+    // The pointer moved to `to` in ten steps, as a hand moves it.
+    void movePointer(QPoint from, QPoint to, Qt::KeyboardModifiers modifiers = {}) {
+        for (int i = 1; i <= 10; ++i)
+            QTest::mouseEvent(QTest::MouseMove, shownWindow(), Qt::NoButton, modifiers,
+                              inWindow(from + (to - from) * i / 10));
+    }
+    void click(QPoint at, Qt::MouseButton button = Qt::LeftButton) {
+        QTest::mouseClick(shownWindow(), button, {}, inWindow(at));
+    }
+};
+
+TEST_F(ViewMoveTest, G_ThenMouse_TheBallFollowsThePointer_OneUndoStepTheFileKeeps) {
+    const Vec3 start = ball().center;
+    const QPoint grab = selectBall();
+    ASSERT_EQ(window->scenePanel()->currentIndex(), int(kBlueBall));
+    const QPointF before = drawnCentre();
+    const int steps = doc->undoStack()->count();
+
+    key(Qt::Key_G);
+    EXPECT_TRUE(view->moving());
+    EXPECT_TRUE(window->statusBar()->currentMessage().contains("Move blue ball"))
+        << window->statusBar()->currentMessage().toStdString();
+    const QPoint by(60, -25);
+    movePointer(grab, grab + by);
+    click(grab + by);
+    EXPECT_FALSE(view->moving());
+
+    // The outline (and the centre it is drawn round) moved with the pointer.
+    const QPointF moved = drawnCentre() - before;
+    EXPECT_NEAR(moved.x(), by.x(), 2);
+    EXPECT_NEAR(moved.y(), by.y(), 2);
+    // In the plane facing the camera: as deep as it was.
+    const Camera& c = doc->scene().camera;
+    const Vec3 forward = glm::normalize(c.lookAt - c.position);
+    EXPECT_NEAR(glm::dot(ball().center - c.position, forward),
+                glm::dot(start - c.position, forward), 1e-9);
+    EXPECT_EQ(doc->undoStack()->count(), steps + 1);
+    EXPECT_EQ(doc->undoStack()->undoText(), QString("Move blue ball"));
+
+    // The picture shows it where it is.
+    const QImage expected = coreRender(doc->scene());
+    if (!QTest::qWaitFor([&] { return identical(view->frame(), expected); }, kRenderTimeoutMs)) {
+        EXPECT_TRUE(sameImage(view->frame(), expected));
+    }
+
+    // Saved, the file holds the moved centre; undo and redo take it back and forth.
+    const Vec3 after = ball().center;
+    key(Qt::Key_S, Qt::ControlModifier);
+    EXPECT_EQ(loadScene(scenePath.toStdString()).spheres[kBlueBall].center, after);
+    doc->undoStack()->undo();
+    EXPECT_EQ(ball().center, start);
+    doc->undoStack()->redo();
+    EXPECT_EQ(ball().center, after);
+}
+
+TEST_F(ViewMoveTest, G_X_Typed2_Enter_MovesExactlyTwoAlongX_MinusTypedMovesBack) {
+    const Vec3 start = ball().center;
+    selectBall();
+    key(Qt::Key_G);
+    key(Qt::Key_X);
+    key(Qt::Key_2);
+    key(Qt::Key_Return);
+    EXPECT_EQ(ball().center, start + Vec3(2, 0, 0));
+
+    key(Qt::Key_G);
+    key(Qt::Key_Z);
+    key(Qt::Key_Minus);
+    key(Qt::Key_1);
+    key(Qt::Key_Period);
+    key(Qt::Key_5);
+    key(Qt::Key_Return);
+    EXPECT_EQ(ball().center, start + Vec3(2, 0, 0) + Vec3(0, 0, -1.5));
+    EXPECT_EQ(doc->undoStack()->undoText(), QString("Move blue ball"));
+}
+
+TEST_F(ViewMoveTest, G_Y_ThenMouse_MovesAlongYAlone) {
+    const Vec3 start = ball().center;
+    const QPoint grab = selectBall();
+    key(Qt::Key_G);
+    key(Qt::Key_Y);
+    movePointer(grab, grab + QPoint(30, -40));
+    key(Qt::Key_Return);
+    EXPECT_EQ(ball().center.x, start.x);
+    EXPECT_EQ(ball().center.z, start.z);
+    EXPECT_GT(ball().center.y, start.y + 0.1) << "up the screen is up the y axis";
+}
+
+TEST_F(ViewMoveTest, CtrlWhileMoving_SnapsTheOffsetToTheGrid) {
+    const Vec3 start = ball().center;
+    const QPoint grab = selectBall();
+    key(Qt::Key_G);
+    movePointer(grab, grab + QPoint(47, 13), Qt::ControlModifier);
+    click(grab + QPoint(47, 13));
+    const Vec3 offset = ball().center - start;
+    EXPECT_NE(offset, Vec3(0.0));
+    for (int axis = 0; axis < 3; ++axis) {
+        const double steps = offset[axis] / RenderView::kMoveGrid;
+        EXPECT_NEAR(steps, std::round(steps), 1e-9) << axis;
+    }
+}
+
+TEST_F(ViewMoveTest, EscapeOrRightClick_PutTheBallBackBitForBit_AndLeaveNoStep) {
+    const Scene before = doc->scene();
+    const int steps = doc->undoStack()->count();
+    const QPoint grab = selectBall();
+    for (const bool escape : {true, false}) {
+        key(Qt::Key_G);
+        movePointer(grab, grab + QPoint(-50, 20));
+        EXPECT_NE(ball().center, before.spheres[kBlueBall].center) << "it moved meanwhile";
+        if (escape)
+            key(Qt::Key_Escape);
+        else
+            click(grab + QPoint(-50, 20), Qt::RightButton);
+        EXPECT_FALSE(view->moving());
+        EXPECT_EQ(doc->scene(), before);
+        EXPECT_EQ(doc->undoStack()->count(), steps);
+        EXPECT_FALSE(doc->undoStack()->canRedo());
+        EXPECT_FALSE(doc->isModified());
+        EXPECT_TRUE(window->statusBar()->currentMessage().isEmpty());
+        QTest::mouseMove(shownWindow(), inWindow(grab));
+    }
+}
+
+TEST_F(ViewMoveTest, KeysDuringAMove_AreTheMovesNotShortcuts) {
+    const Camera camera = doc->scene().camera;
+    selectBall();
+    key(Qt::Key_G);
+    key(Qt::Key_W);     // walk forward, outside a move
+    key(Qt::Key_Home);  // reset the camera
+    key(Qt::Key_Escape);
+    EXPECT_EQ(doc->scene().camera, camera);
+}
+
+TEST_F(ViewMoveTest, ALight_MovesAsASphereDoes) {
+    window->scenePanel()->select(ItemKind::Light, 0);
+    const Vec3 start = doc->scene().lights[0].position;
+    key(Qt::Key_G);
+    key(Qt::Key_Y);
+    key(Qt::Key_3);
+    key(Qt::Key_Enter);
+    EXPECT_EQ(doc->scene().lights[0].position, start + Vec3(0, 3, 0));
+    EXPECT_EQ(doc->undoStack()->undoText(), QString("Move key"));
+}
+
+}  // namespace
+}  // namespace whitted::ui

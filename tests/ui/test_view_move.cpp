@@ -169,6 +169,40 @@ TEST_F(ViewMoveTest, KeysDuringAMove_AreTheMovesNotShortcuts) {
     EXPECT_EQ(doc->scene().camera, camera);
 }
 
+TEST_F(ViewMoveTest, ShiftD_ACopyFollowsThePointer_TheOriginalStays_OneUndoStep) {
+    const Scene before = doc->scene();
+    const int steps = doc->undoStack()->count();
+    const QPoint grab = selectBall();
+    key(Qt::Key_D, Qt::ShiftModifier);
+    ASSERT_TRUE(view->moving());
+    movePointer(grab, grab + QPoint(-70, 0));
+    click(grab + QPoint(-70, 0));
+
+    const Scene& s = doc->scene();
+    ASSERT_EQ(s.spheres.size(), before.spheres.size() + 1);
+    EXPECT_EQ(s.spheres[kBlueBall], before.spheres[kBlueBall]) << "the original stays";
+    const Sphere& copy = s.spheres.back();
+    EXPECT_EQ(copy.radius, ball().radius);
+    EXPECT_EQ(copy.material, ball().material);
+    EXPECT_LT(project(s, copy.center).x(), project(s, ball().center).x() - 5) << "moved left";
+    EXPECT_EQ(doc->undoStack()->count(), steps + 1);
+    EXPECT_EQ(doc->undoStack()->undoText(), QString("Duplicate and move blue ball"));
+    doc->undoStack()->undo();
+    EXPECT_EQ(doc->scene(), before);
+}
+
+TEST_F(ViewMoveTest, ShiftD_ThenEscape_KeepsTheCopyOnTheOriginal) {
+    const Scene before = doc->scene();
+    const QPoint grab = selectBall();
+    key(Qt::Key_D, Qt::ShiftModifier);
+    movePointer(grab, grab + QPoint(40, 40));
+    key(Qt::Key_Escape);
+    ASSERT_EQ(doc->scene().spheres.size(), before.spheres.size() + 1);
+    EXPECT_EQ(doc->scene().spheres.back().center, ball().center);
+    doc->undoStack()->undo();
+    EXPECT_EQ(doc->scene(), before);
+}
+
 TEST_F(ViewMoveTest, ALight_MovesAsASphereDoes) {
     window->scenePanel()->select(ItemKind::Light, 0);
     const Vec3 start = doc->scene().lights[0].position;

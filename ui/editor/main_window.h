@@ -97,6 +97,10 @@ class MainWindow : public QMainWindow {
     void buildRenderMenu();
     void buildViewMenu();
     void buildHelpMenu();
+    // Blender's Shift+D: a copy of the selected sphere or light that moves with
+    // the pointer at once (RenderView::startMove); Escape leaves the copy where
+    // the original is. The copy and its move are one undo step.
+    void duplicateAndMove();
     void buildToolBar();
     void tickPreset();  // ticks the Render menu's preset the settings match
     QList<ControlRow> controls();

@@ -81,8 +81,27 @@ void MainWindow::buildEditMenu() {
     edit->addSeparator();
     edit->addAction(scenePanel_->addAction());
     edit->addAction(scenePanel_->duplicateAction());
+    QAction* duplicateAndMove =
+        edit->addAction(tr("Duplicate and &Move"), this, [this] { this->duplicateAndMove(); });
+    duplicateAndMove->setObjectName(QStringLiteral("duplicateAndMove"));
+    duplicateAndMove->setShortcut(QKeySequence(tr("Shift+D")));
     edit->addAction(scenePanel_->deleteAction());
     edit->addAction(scenePanel_->renameAction());
+}
+
+void MainWindow::duplicateAndMove() {
+    const ItemKind kind = scenePanel_->currentKind();
+    const int index = scenePanel_->currentIndex();
+    if (kind == ItemKind::Material || index < 0) return;
+    doc_.beginGesture(tr("Duplicate and move %1").arg(itemName(doc_.scene(), kind, index)));
+    scenePanel_->duplicateAction()->trigger();
+    if (!view_->startMove()) {
+        doc_.endGesture();
+        return;
+    }
+    connect(
+        view_, &RenderView::moveFinished, this, [this] { doc_.endGesture(); },
+        Qt::SingleShotConnection);
 }
 
 void MainWindow::buildRenderMenu() {

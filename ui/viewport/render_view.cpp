@@ -237,13 +237,13 @@ void RenderView::frameSelectedSphere() {
                frameSphere(s.camera, sp.center, sp.radius), EditRun::Separate);
 }
 
-void RenderView::startMove() {
+bool RenderView::startMove() {
     const Scene& s = doc_->scene();
     const ItemKind kind = overlay_.selectedKind;
     const int index = overlay_.selectedIndex;
     if (move_ || dragButton_ != Qt::NoButton || kind == ItemKind::Material || index < 0 ||
         index >= itemCount(s, kind))
-        return;
+        return false;
     const Vec3 start = itemPosition(s, kind, index);
     // The pointer grabs where it is; started from the menu, outside the view,
     // it grabs the item's centre.
@@ -256,6 +256,7 @@ void RenderView::startMove() {
     setFocus();
     emit moveMessage(moveText());
     update();
+    return true;
 }
 
 Vec3 RenderView::moveOffset() const {
@@ -312,6 +313,7 @@ void RenderView::finishMove(bool keep) {
         }
     }
     emit moveMessage({});
+    emit moveFinished();
     update();
 }
 

@@ -59,9 +59,9 @@ class RenderView : public QWidget {
     void resetCamera();
     void frameSelectedSphere();
 
-    // Starts moving the selected sphere or light with the pointer (G); nothing
-    // when neither is selected.
-    void startMove();
+    // Starts moving the selected sphere or light with the pointer (G); false,
+    // and nothing, when neither is selected.
+    bool startMove();
     bool moving() const { return move_.has_value(); }
     // The grid Ctrl snaps a move to, in scene units.
     static constexpr double kMoveGrid = 0.1;
@@ -88,6 +88,8 @@ class RenderView : public QWidget {
     // What a move in progress does and which keys it takes, for the status
     // bar; empty when the move ends.
     void moveMessage(const QString& text);
+    // A move ended, kept or put back.
+    void moveFinished();
 
   protected:
     void paintEvent(QPaintEvent*) override;

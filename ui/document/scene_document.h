@@ -80,7 +80,9 @@ class SceneDocument : public QObject {
     void endGesture();
     // Ends the gesture and forgets its step, which must leave the scene as it
     // found it: a gesture the user cancelled after its last edit put the scene
-    // back (Escape during a move in the view). Nothing is left to redo.
+    // back (Escape during a move in the view). Nothing is left to redo. Inside
+    // another gesture it only ends: the outer step keeps the cancelled edits,
+    // which together change nothing.
     void discardGesture();
 
     // A name for a new item of `kind` that no other item of that kind has ("sphere 4").

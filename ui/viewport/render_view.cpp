@@ -26,7 +26,7 @@ struct CameraActionEntry {
     QString text;
     QList<QKeySequence> keys;
     std::function<void()> run;
-    // Reset and Frame also sit in the View menu, so they work from anywhere.
+    // Reset, Frame and Move also sit in the View menu, so they work from anywhere.
     Qt::ShortcutContext context = Qt::WidgetShortcut;
 };
 

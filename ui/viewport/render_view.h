@@ -67,8 +67,8 @@ class RenderView : public QWidget {
     static constexpr double kMoveGrid = 0.1;
 
     // The keyboard's camera moves, each an action with its shortcut and an
-    // object name. Reset and Frame have window-wide shortcuts (they sit in the
-    // View menu); the others act while the view has the keyboard focus.
+    // object name. Reset, Frame and Move have window-wide shortcuts (they sit
+    // in the View menu); the others act while the view has the keyboard focus.
     const QList<QAction*>& cameraActions() const { return cameraActions_; }
 
     // What the mouse does in the view, for the help: (gesture, effect) pairs.

@@ -14,8 +14,9 @@
 
 namespace {
 
-// Each test starts with no saved window state, recent files or recovery
-// copies, and leaves no settings file behind.
+// Each test starts with no saved settings (window state, recent files) and
+// leaves no settings file behind; its app data (recovery copies) lies in a
+// folder of its own name.
 class SettingsOfTheTestsOwn : public ::testing::EmptyTestEventListener {
     void OnTestStart(const ::testing::TestInfo& test) override {
         QString name = QStringLiteral("%1.%2").arg(QString::fromLatin1(test.test_suite_name()),

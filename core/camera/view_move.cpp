@@ -59,6 +59,10 @@ Vec3 viewMoveOffset(const Camera& camera, int width, int height, const Vec3& anc
     return *end - *start;
 }
 
+Vec3 restingCentre(const Sphere& under, const Vec3& surfacePoint, double radius) {
+    return surfacePoint + glm::normalize(surfacePoint - under.center) * radius;
+}
+
 Vec3 snapToGrid(const Vec3& offset, double step) {
     return glm::round(offset / step) * step;
 }

@@ -19,6 +19,11 @@ namespace whitted {
 Vec3 viewMoveOffset(const Camera& camera, int width, int height, const Vec3& anchor,
                     ImagePoint from, ImagePoint to, std::optional<int> axis);
 
+// The centre of a sphere of `radius` that rests on `under` at `surfacePoint`,
+// a point of its surface: touching it there from outside (on the floor, on
+// the floor; on a ball, on that ball).
+Vec3 restingCentre(const Sphere& under, const Vec3& surfacePoint, double radius);
+
 // The offset with each component rounded to the nearest multiple of `step` (> 0).
 Vec3 snapToGrid(const Vec3& offset, double step);
 

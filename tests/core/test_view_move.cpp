@@ -73,6 +73,16 @@ TEST(ViewMove, Axis_AlongTheLineOfSight_DoesNotMove) {
     EXPECT_EQ(offset, Vec3(0.0));
 }
 
+TEST(ViewMove, RestingCentre_TouchesTheSphereFromOutsideAtThePoint) {
+    const Sphere ball{"ball", {1, 2, 3}, 2, "m"};
+    const Vec3 top = ball.center + Vec3(0, 2, 0);
+    EXPECT_EQ(restingCentre(ball, top, 0.5), Vec3(1, 4.5, 3));
+    // The seed's floor: a sphere of radius 99999 whose top is y = -0.5.
+    const Sphere floor{"floor", {0, -99999.5, 0}, 99999, "m"};
+    const Vec3 onFloor = restingCentre(floor, {0, -0.5, 0}, 0.25);
+    EXPECT_NEAR(onFloor.y, -0.25, 1e-9);
+}
+
 TEST(ViewMove, SnapToGrid_RoundsEachComponentToTheStep) {
     const Vec3 snapped = snapToGrid({0.123, -0.26, 1.05001}, 0.1);
     EXPECT_NEAR(snapped.x, 0.1, 1e-15);

@@ -203,6 +203,33 @@ TEST_F(ViewMoveTest, ShiftD_ThenEscape_KeepsTheCopyOnTheOriginal) {
     EXPECT_EQ(doc->scene(), before);
 }
 
+// Shift+A with the pointer over the picture: a new sphere resting on what the
+// pointer is on, moving with it at once; a click leaves it there.
+TEST_F(ViewMoveTest, ShiftA_OnTheFloor_ANewSphereRestsOnIt_OnABall_TouchesIt) {
+    const Scene before = doc->scene();
+    const Sphere floor = before.spheres[kFloor];
+    // A point of the floor in front of the balls, and the blue ball's centre.
+    const QPoint onFloor = widgetPoint(project(before, Vec3(0.2, -0.5, 0.8)));
+    const QPoint onBall = drawnCentre().toPoint();
+    for (const QPoint at : {onFloor, onBall}) {
+        const std::size_t count = doc->scene().spheres.size();
+        QTest::mouseMove(shownWindow(), inWindow(at));
+        key(Qt::Key_A, Qt::ShiftModifier);
+        ASSERT_TRUE(view->moving());
+        click(at);
+        ASSERT_EQ(doc->scene().spheres.size(), count + 1);
+        const Sphere& added = doc->scene().spheres.back();
+        const Sphere& under = at == onFloor ? floor : before.spheres[kBlueBall];
+        EXPECT_NEAR(glm::length(added.center - under.center), under.radius + added.radius,
+                    1e-9 * (under.radius + added.radius))
+            << "touching " << under.name;
+        EXPECT_EQ(doc->undoStack()->undoText(), QString("Add sphere"));
+        // One step takes it away again, before the next is added from the seed.
+        doc->undoStack()->undo();
+        EXPECT_EQ(doc->scene(), before);
+    }
+}
+
 TEST_F(ViewMoveTest, ALight_MovesAsASphereDoes) {
     window->scenePanel()->select(ItemKind::Light, 0);
     const Vec3 start = doc->scene().lights[0].position;

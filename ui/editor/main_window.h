@@ -101,6 +101,13 @@ class MainWindow : public QMainWindow {
     // the pointer at once (RenderView::startMove); Escape leaves the copy where
     // the original is. The copy and its move are one undo step.
     void duplicateAndMove();
+    // Shift+A on the Spheres tab with the pointer over the picture: a new
+    // sphere resting on what is under the pointer, then moving with it as
+    // after Shift+D. False, and nothing, when the pointer is elsewhere.
+    bool addSphereAtPointer();
+    // The move of what was just added or copied inside the gesture begun for
+    // it; the gesture ends with the move.
+    void moveWithinGesture();
     void buildToolBar();
     void tickPreset();  // ticks the Render menu's preset the settings match
     QList<ControlRow> controls();

@@ -16,6 +16,7 @@ namespace whitted::ui {
 
 void MainWindow::buildDocks() {
     scenePanel_ = new ScenePanel(&doc_);
+    scenePanel_->setAddSphereHere([this] { return addSphereAtPointer(); });
     auto* sceneDock = new QDockWidget(tr("Scene"), this);
     sceneDock->setObjectName("sceneDock");
     sceneDock->setWidget(scenePanel_);

@@ -95,6 +95,19 @@ void MainWindow::duplicateAndMove() {
     if (kind == ItemKind::Material || index < 0) return;
     doc_.beginGesture(tr("Duplicate and move %1").arg(itemName(doc_.scene(), kind, index)));
     scenePanel_->duplicateAction()->trigger();
+    moveWithinGesture();
+}
+
+bool MainWindow::addSphereAtPointer() {
+    const auto centre = view_->restingSpotUnderPointer(ScenePanel::kNewSphereRadius);
+    if (!centre) return false;
+    doc_.beginGesture(tr("Add sphere"));
+    scenePanel_->addSphere(centre);
+    moveWithinGesture();
+    return true;
+}
+
+void MainWindow::moveWithinGesture() {
     if (!view_->startMove()) {
         doc_.endGesture();
         return;

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <array>
+#include <functional>
+#include <optional>
 
 #include <QWidget>
 
@@ -39,6 +41,15 @@ class ScenePanel : public QWidget {
     // For the Edit menu: the buttons' behaviour on the current tab. Their shortcuts
     // (Ctrl+D, Delete, F2) work once the window holds the actions, e.g. in a menu.
     QAction* addAction() const { return addAction_; }
+
+    // A new sphere, of radius kNewSphereRadius, at `centre`, or where the camera
+    // looks (a free spot beside what is there); selected. One undo step.
+    void addSphere(std::optional<Vec3> centre);
+    static constexpr double kNewSphereRadius = 0.5;
+    // What Add does on the Spheres tab first: a handler that places the sphere
+    // itself (the window's: where the user points in the view) and returns
+    // true, or returns false to leave it to addSphere({}).
+    void setAddSphereHere(std::function<bool()> handler) { addSphereHere_ = std::move(handler); }
     QAction* duplicateAction() const { return duplicateAction_; }
     QAction* deleteAction() const { return deleteAction_; }
     QAction* renameAction() const { return renameAction_; }
@@ -89,6 +100,7 @@ class ScenePanel : public QWidget {
     std::array<Tab, 3> tabs_;
     QAction* addAction_;
     QAction* duplicateAction_;
+    std::function<bool()> addSphereHere_;
     QAction* deleteAction_;
     QAction* renameAction_;
     ItemKind announcedKind_ = ItemKind::Sphere;

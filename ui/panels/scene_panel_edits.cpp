@@ -51,30 +51,39 @@ Material defaultMaterial(const std::string& name) {
 
 }  // namespace
 
+void ScenePanel::addSphere(std::optional<Vec3> centre) {
+    const QString name = doc_->uniqueName(ItemKind::Sphere, tr("sphere"));
+    const std::string newMaterial =
+        doc_->uniqueName(ItemKind::Material, tr("material")).toStdString();
+    QString error;
+    const bool ok = doc_->edit(
+        tr("Add sphere %1").arg(name),
+        [&](Scene& s) {
+            if (s.materials.empty()) s.materials.push_back(defaultMaterial(newMaterial));
+            Sphere sphere;
+            sphere.name = name.toStdString();
+            sphere.radius = kNewSphereRadius;
+            sphere.center = centre.value_or(freeSpotForSphere(s, sphere.radius));
+            sphere.material = s.materials.front().name;
+            s.spheres.push_back(std::move(sphere));
+        },
+        &error);
+    if (!ok) {
+        showRefusal(this, error);
+        return;
+    }
+    select(ItemKind::Sphere, itemCount(doc_->scene(), ItemKind::Sphere) - 1);
+}
+
 void ScenePanel::addItem(ItemKind kind) {
     const Scene& scene = doc_->scene();
     const Vec3 lookAt = scene.camera.lookAt;
     QString error;
     bool ok = false;
     switch (kind) {
-        case ItemKind::Sphere: {
-            const QString name = doc_->uniqueName(kind, tr("sphere"));
-            const std::string newMaterial =
-                doc_->uniqueName(ItemKind::Material, tr("material")).toStdString();
-            ok = doc_->edit(
-                tr("Add sphere %1").arg(name),
-                [&](Scene& s) {
-                    if (s.materials.empty()) s.materials.push_back(defaultMaterial(newMaterial));
-                    Sphere sphere;
-                    sphere.name = name.toStdString();
-                    sphere.radius = 0.5;
-                    sphere.center = freeSpotForSphere(s, sphere.radius);
-                    sphere.material = s.materials.front().name;
-                    s.spheres.push_back(std::move(sphere));
-                },
-                &error);
-            break;
-        }
+        case ItemKind::Sphere:
+            if (!addSphereHere_ || !addSphereHere_()) addSphere({});
+            return;
         case ItemKind::Light: {
             const QString name = doc_->uniqueName(kind, tr("light"));
             ok = doc_->edit(

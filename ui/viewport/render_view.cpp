@@ -259,6 +259,16 @@ bool RenderView::startMove() {
     return true;
 }
 
+std::optional<Vec3> RenderView::restingSpotUnderPointer(double radius) const {
+    const Scene& s = doc_->scene();
+    const QRect r = imageRect();
+    if (!r.contains(pointer_)) return std::nullopt;
+    const QPointF image = imagePoint(s, r, pointer_);
+    const auto pick = pickSurface(s, image.x(), image.y());
+    if (!pick) return std::nullopt;
+    return restingCentre(s.spheres[pick->sphere], pick->point, radius);
+}
+
 Vec3 RenderView::moveOffset() const {
     const ItemMove& m = *move_;
     if (!m.typed.isEmpty()) {

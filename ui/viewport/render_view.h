@@ -62,6 +62,10 @@ class RenderView : public QWidget {
     // Starts moving the selected sphere or light with the pointer (G); false,
     // and nothing, when neither is selected.
     bool startMove();
+    // Where a sphere of `radius` added at the pointer goes: resting on the
+    // surface under it (the floor, a ball); nothing when the pointer is not
+    // over the picture or sees only the sky.
+    std::optional<Vec3> restingSpotUnderPointer(double radius) const;
     bool moving() const { return move_.has_value(); }
     // The grid Ctrl snaps a move to, in scene units.
     static constexpr double kMoveGrid = 0.1;

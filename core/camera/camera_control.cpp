@@ -145,17 +145,15 @@ Scene spheresNearLine(const Scene& scene, const Vec3& origin, const Vec3& dir,
 }  // namespace
 
 std::optional<SurfacePick> pickSurface(const Scene& scene, double x, double y) {
-    const int i = static_cast<int>(std::floor(x)), j = static_cast<int>(std::floor(y));
     const CameraBasis<double> view =
         makeCameraBasis<double>(scene.camera, scene.render.width, scene.render.height);
     std::vector<int> index;
-    const Scene near = spheresNearLine(scene, scene.camera.position,
-                                       cameraDirection(view, i, j, x - i, y - j), index);
+    const Scene near =
+        spheresNearLine(scene, scene.camera.position, cameraDirectionAt(view, x, y), index);
     if (near.spheres.empty()) return std::nullopt;
     // The tracer's own intersection and tie rule, on those spheres alone.
     const PreparedScene<double> s = prepareScene<double>(near);
-    const Ray<double> ray{s.camera.origin, cameraDirection(s.camera, i, j, x - i, y - j), -1, false,
-                          true};
+    const Ray<double> ray{s.camera.origin, cameraDirectionAt(s.camera, x, y), -1, false, true};
     const auto hit = closestHit(s, ray);
     if (!hit) return std::nullopt;
     // Prepared positions are relative to frameOrigin: back to scene coordinates.

@@ -13,8 +13,7 @@ namespace {
 
 // The unit direction of the line of sight through image point p, as the tracer's.
 Vec3 sightThrough(const CameraBasis<double>& view, ImagePoint p) {
-    const int i = static_cast<int>(std::floor(p.x)), j = static_cast<int>(std::floor(p.y));
-    return cameraDirection(view, i, j, p.x - i, p.y - j);
+    return cameraDirectionAt(view, p.x, p.y);
 }
 
 // Where the line of sight through p meets the plane through `anchor` facing the camera.

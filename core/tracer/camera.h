@@ -51,4 +51,13 @@ Vec<T> cameraDirection(const CameraBasis<T>& b, int i, int j, T u, T v) {
     return glm::normalize(b.forward + x * b.right + y * b.up);
 }
 
+// Unit direction through continuous image point (x, y), in pixels (the
+// centre of pixel (i, j) is (i + 0.5, j + 0.5)): the editor's picks and moves
+// look through the same rays as the render.
+template <typename T>
+Vec<T> cameraDirectionAt(const CameraBasis<T>& b, T x, T y) {
+    const int i = static_cast<int>(std::floor(x)), j = static_cast<int>(std::floor(y));
+    return cameraDirection(b, i, j, x - T(i), y - T(j));
+}
+
 }  // namespace whitted

@@ -254,7 +254,7 @@ bool RenderView::startMove() {
     move_ = ItemMove{kind, index, start, imagePoint(s, r, pointer), pointer, {}, {}, false, false};
     overlay_.hoverText.clear();
     setFocus();
-    emit moveMessage(moveText());
+    emit moveMessage(moveText(Vec3(0.0)));
     update();
     return true;
 }
@@ -285,8 +285,12 @@ Vec3 RenderView::moveOffset() const {
     return m.snap ? snapToGrid(offset, kMoveGrid) : offset;
 }
 
+QString RenderView::moveStepName(const ItemMove& m) const {
+    return tr("Move %1").arg(itemName(doc_->scene(), m.kind, m.index));
+}
+
 void RenderView::setItemPosition(const ItemMove& m, const Vec3& position) {
-    const QString text = tr("Move %1").arg(itemName(doc_->scene(), m.kind, m.index));
+    const QString text = moveStepName(m);
     if (m.kind == ItemKind::Sphere)
         doc_->editItem<Sphere>(m.index, text, [&](Sphere& sphere) { sphere.center = position; });
     else
@@ -295,18 +299,19 @@ void RenderView::setItemPosition(const ItemMove& m, const Vec3& position) {
 
 void RenderView::applyMove() {
     ItemMove& m = *move_;
-    const Vec3 position = m.start + moveOffset();
+    const Vec3 offset = moveOffset();
+    const Vec3 position = m.start + offset;
     if (!m.recorded) {
         // No step for a move that never moved.
         if (position == m.start) {
-            emit moveMessage(moveText());
+            emit moveMessage(moveText(offset));
             return;
         }
-        doc_->beginGesture(tr("Move %1").arg(itemName(doc_->scene(), m.kind, m.index)));
+        doc_->beginGesture(moveStepName(m));
         m.recorded = true;
     }
     setItemPosition(m, position);
-    emit moveMessage(moveText());
+    emit moveMessage(moveText(offset));
 }
 
 void RenderView::finishMove(bool keep) {
@@ -327,15 +332,14 @@ void RenderView::finishMove(bool keep) {
     update();
 }
 
-QString RenderView::moveText() const {
+QString RenderView::moveText(const Vec3& offset) const {
     const ItemMove& m = *move_;
-    const Vec3 offset = moveOffset();
     static const char* const kAxes[] = {"X", "Y", "Z"};
     const QString along = m.axis ? tr(" along %1").arg(QLatin1String(kAxes[*m.axis])) : QString();
     const QString typed = m.typed.isEmpty() ? QString() : tr(" (typed %1)").arg(m.typed);
-    return tr("Move %1 by %2, %3, %4%5%6. X, Y, Z: along an axis; type a distance; "
+    return tr("%1 by %2, %3, %4%5%6. X, Y, Z: along an axis; type a distance; "
               "Ctrl: snap to %7; Enter or click: done; Esc or right click: cancel")
-        .arg(itemName(doc_->scene(), m.kind, m.index))
+        .arg(moveStepName(m))
         .arg(offset.x, 0, 'g', 4)
         .arg(offset.y, 0, 'g', 4)
         .arg(offset.z, 0, 'g', 4)

@@ -134,7 +134,9 @@ class RenderView : public QWidget {
     void applyMove();
     void setItemPosition(const ItemMove& move, const Vec3& position);
     void finishMove(bool keep);
-    QString moveText() const;
+    // The undo step's name, "Move blue ball".
+    QString moveStepName(const ItemMove& move) const;
+    QString moveText(const Vec3& offset) const;
 
     SceneDocument* doc_;
     QImage frame_;

@@ -245,7 +245,7 @@ std::string vec(const Vec3& v) {
     return out.append("]");
 }
 
-using Fields = std::vector<std::pair<const char*, std::string>>;
+using Fields = detail::JsonFields;
 
 std::string object(const Fields& fields) {
     std::string out = "{";
@@ -256,21 +256,52 @@ std::string object(const Fields& fields) {
     return out + "}";
 }
 
-template <typename T, typename F>
-std::string list(const std::vector<T>& items, F toObject) {
-    if (items.empty()) return "[]";
-    std::string out = "[\n";
-    for (size_t i = 0; i < items.size(); ++i)
-        out.append("    ").append(toObject(items[i])).append(i + 1 < items.size() ? ",\n" : "\n");
-    return out + "  ]";
-}
-
 }  // namespace
 
+std::string detail::jsonItem(const Material& m) {
+    Fields f = {{"name", quoted(m.name)},
+                {"diffuse", vec(m.diffuse)},
+                {"specular", num(m.specular)},
+                {"shininess", num(m.shininess)},
+                {"reflectivity", num(m.reflectivity)},
+                {"transparency", num(m.transparency)},
+                {"ior", num(m.ior)}};
+    if (m.checker)
+        f.push_back({"checker",
+                     object({{"color", vec(m.checker->color)}, {"size", num(m.checker->size)}})});
+    return object(f);
+}
+
+std::string detail::jsonItem(const Light& l) {
+    return object({{"name", quoted(l.name)},
+                   {"position", vec(l.position)},
+                   {"color", vec(l.color)},
+                   {"intensity", num(l.intensity)}});
+}
+
+std::string detail::jsonItem(const Sphere& s) {
+    return object({{"name", quoted(s.name)},
+                   {"center", vec(s.center)},
+                   {"radius", num(s.radius)},
+                   {"material", quoted(s.material)}});
+}
+
+std::string detail::jsonDocument(const JsonFields& top) {
+    std::string out = "{\n";
+    for (size_t i = 0; i < top.size(); ++i)
+        out.append("  \"")
+            .append(top[i].first)
+            .append("\": ")
+            .append(top[i].second)
+            .append(i + 1 < top.size() ? ",\n" : "\n");
+    return out + "}\n";
+}
+
 std::string sceneToJson(const Scene& s) {
+    using detail::jsonList;
     const Camera& c = s.camera;
     const RenderSettings& r = s.render;
-    Fields top = {
+    return detail::jsonDocument({
         {"format", quoted("whitted-scene")},
         {"version", num(kSceneFormatVersion)},
         {"camera", object({{"position", vec(c.position)},
@@ -284,44 +315,10 @@ std::string sceneToJson(const Scene& s) {
                            {"precision", quoted(std::string(precisionName(r.precision)))}})},
         {"background", vec(s.background)},
         {"ambient", vec(s.ambient)},
-        {"materials", list(s.materials,
-                           [](const Material& m) {
-                               Fields f = {{"name", quoted(m.name)},
-                                           {"diffuse", vec(m.diffuse)},
-                                           {"specular", num(m.specular)},
-                                           {"shininess", num(m.shininess)},
-                                           {"reflectivity", num(m.reflectivity)},
-                                           {"transparency", num(m.transparency)},
-                                           {"ior", num(m.ior)}};
-                               if (m.checker)
-                                   f.push_back(
-                                       {"checker", object({{"color", vec(m.checker->color)},
-                                                           {"size", num(m.checker->size)}})});
-                               return object(f);
-                           })},
-        {"lights", list(s.lights,
-                        [](const Light& l) {
-                            return object({{"name", quoted(l.name)},
-                                           {"position", vec(l.position)},
-                                           {"color", vec(l.color)},
-                                           {"intensity", num(l.intensity)}});
-                        })},
-        {"spheres", list(s.spheres,
-                         [](const Sphere& sp) {
-                             return object({{"name", quoted(sp.name)},
-                                            {"center", vec(sp.center)},
-                                            {"radius", num(sp.radius)},
-                                            {"material", quoted(sp.material)}});
-                         })},
-    };
-    std::string out = "{\n";
-    for (size_t i = 0; i < top.size(); ++i)
-        out.append("  \"")
-            .append(top[i].first)
-            .append("\": ")
-            .append(top[i].second)
-            .append(i + 1 < top.size() ? ",\n" : "\n");
-    return out + "}\n";
+        {"materials", jsonList(s.materials)},
+        {"lights", jsonList(s.lights)},
+        {"spheres", jsonList(s.spheres)},
+    });
 }
 
 std::string sceneContentDigest(const Scene& scene) {

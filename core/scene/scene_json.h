@@ -1,6 +1,7 @@
 // What the scene file's parts share and nothing else needs: the reader
-// (scene_json_read.cpp), the file loader (scene_load.cpp) and the writer
-// (scene_io.cpp).
+// (scene_json_read.cpp), the file loader (scene_load.cpp), the writer
+// (scene_io.cpp) and the clipboard's fragments (scene_fragment.cpp), which
+// write their items exactly as the file does.
 #pragma once
 
 #include <cstddef>
@@ -8,6 +9,8 @@
 #include <iterator>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "scene/scene.h"
 
@@ -15,6 +18,25 @@ namespace whitted::detail {
 
 // `s` as a JSON string literal, quotes and escapes included.
 std::string quoted(const std::string& s);
+
+// One element of a list as the scene file writes it: one line, keys in SPEC order.
+std::string jsonItem(const Material& m);
+std::string jsonItem(const Light& l);
+std::string jsonItem(const Sphere& s);
+
+// A list's elements one a line, indented as inside the file's top-level object.
+template <typename T>
+std::string jsonList(const std::vector<T>& items) {
+    if (items.empty()) return "[]";
+    std::string out = "[\n";
+    for (std::size_t i = 0; i < items.size(); ++i)
+        out.append("    ").append(jsonItem(items[i])).append(i + 1 < items.size() ? ",\n" : "\n");
+    return out + "  ]";
+}
+
+// A top-level object of the given keys and values (already JSON), one a line.
+using JsonFields = std::vector<std::pair<const char*, std::string>>;
+std::string jsonDocument(const JsonFields& top);
 
 // A text handed over a chunk at a time, for files too large to hold whole.
 class ChunkedText {

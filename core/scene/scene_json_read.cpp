@@ -224,13 +224,19 @@ class StreamingSax {
 };
 
 template <typename... Input>
+json parseTop(const Reader& reader, Lists& lists, Input&&... input) {
+    json root;
+    StreamingSax sax(root, lists, reader, reader.file());
+    json::sax_parse(std::forward<Input>(input)..., &sax);
+    return root;
+}
+
+template <typename... Input>
 Scene parse(const std::string& sourceName, std::uintmax_t textBytes, Input&&... input) {
     const Reader reader(sourceName);
-    json root;
     Lists lists;
     lists.textBytes = textBytes;
-    StreamingSax sax(root, lists, reader, sourceName);
-    json::sax_parse(std::forward<Input>(input)..., &sax);
+    const json root = parseTop(reader, lists, std::forward<Input>(input)...);
     Scene scene = reader.read(root, lists);
     if (auto problem = validateScene(scene))
         throw SceneError(sourceName, problem->jsonPath, problem->reason);
@@ -238,6 +244,11 @@ Scene parse(const std::string& sourceName, std::uintmax_t textBytes, Input&&... 
 }
 
 }  // namespace
+
+json detail::parseTopLevel(const std::string& text, const Reader& reader, Lists& lists) {
+    lists.textBytes = text.size();
+    return parseTop(reader, lists, text);
+}
 
 Scene parseScene(const std::string& text, const std::string& sourceName) {
     return parse(sourceName, text.size(), text);

@@ -1,7 +1,8 @@
 // The scene file's DOM reader: one JSON value to Scene structs, checking
 // structure (keys, types, finiteness) with the JSON path of every refusal.
 // The streaming parser (scene_json_read.cpp) hands it the small top-level
-// DOM and each list element alone; only that file includes this one.
+// DOM and each list element alone; only that parser and the clipboard's
+// (scene_fragment.cpp), which reads its items as a file's, include this one.
 #pragma once
 
 #include <cmath>
@@ -52,6 +53,7 @@ struct Lists {
 class Reader {
   public:
     explicit Reader(std::string file) : file_(std::move(file)) {}
+    const std::string& file() const { return file_; }
 
     [[noreturn]] void fail(const std::string& path, const std::string& reason) const {
         throw SceneError(file_, path, reason);
@@ -140,11 +142,7 @@ class Reader {
         const json* format = find(root, "", "format", true);
         if (!format->is_string() || format->get<std::string>() != "whitted-scene")
             fail("format", "expected \"whitted-scene\", found " + format->dump());
-        const int version = integer(*find(root, "", "version", true), "version");
-        if (version > kSceneFormatVersion)
-            fail("version", std::to_string(version) + " is newer than this program reads (" +
-                                std::to_string(kSceneFormatVersion) + ")");
-        if (version < 1) fail("version", "must be at least 1");
+        readVersion(root, kSceneFormatVersion);
 
         Scene scene;
         readCamera(*find(root, "", "camera", true), scene.camera);
@@ -155,6 +153,15 @@ class Reader {
         take(root, "lights", lists.lights, scene.lights);
         take(root, "spheres", lists.spheres, scene.spheres);
         return scene;
+    }
+
+    // A document's "version", no newer than `newest`.
+    void readVersion(const json& root, int newest) const {
+        const int version = integer(*find(root, "", "version", true), "version");
+        if (version > newest)
+            fail("version", std::to_string(version) + " is newer than this program reads (" +
+                                std::to_string(newest) + ")");
+        if (version < 1) fail("version", "must be at least 1");
     }
 
     // The reading of one list element: its value, its JSON path, its struct.
@@ -243,5 +250,12 @@ class Reader {
   private:
     std::string file_;
 };
+
+// The text's JSON syntax checked whole, its top-level values as a DOM (the
+// return value) and the elements of its top-level "materials", "lights" and
+// "spheres" read into `lists`, as parseScene reads a file; Reader::read or
+// Reader::take then reports the lists' first refusal. Throws SceneError for
+// bad syntax, naming reader.file().
+json parseTopLevel(const std::string& text, const Reader& reader, Lists& lists);
 
 }  // namespace whitted::detail

@@ -121,7 +121,7 @@ namespace {
 // one ray took 220 ms at 100,000 spheres, too slow for the cursor; the margin
 // is far wider than any rounding, so no sphere the ray hits is left out.
 Scene spheresNearLine(const Scene& scene, const Vec3& origin, const Vec3& dir,
-                      std::vector<int>& index) {
+                      const std::vector<int>& ignored, std::vector<int>& index) {
     Scene near{scene.camera,
                scene.render,
                scene.background,
@@ -136,6 +136,7 @@ Scene spheresNearLine(const Scene& scene, const Vec3& origin, const Vec3& dir,
         const double offLine = glm::length(toCentre - along * dir);
         const double margin = 1e-6 * (sp.radius + glm::length(toCentre));
         if (offLine > sp.radius + margin || along < -sp.radius - margin) continue;
+        if (std::binary_search(ignored.begin(), ignored.end(), static_cast<int>(k))) continue;
         near.spheres.push_back(sp);
         index.push_back(static_cast<int>(k));
     }
@@ -144,12 +145,13 @@ Scene spheresNearLine(const Scene& scene, const Vec3& origin, const Vec3& dir,
 
 }  // namespace
 
-std::optional<SurfacePick> pickSurface(const Scene& scene, double x, double y) {
+std::optional<SurfacePick> pickSurface(const Scene& scene, double x, double y,
+                                       const std::vector<int>& ignored) {
     const CameraBasis<double> view =
         makeCameraBasis<double>(scene.camera, scene.render.width, scene.render.height);
     std::vector<int> index;
-    const Scene near =
-        spheresNearLine(scene, scene.camera.position, cameraDirectionAt(view, x, y), index);
+    const Scene near = spheresNearLine(scene, scene.camera.position, cameraDirectionAt(view, x, y),
+                                       ignored, index);
     if (near.spheres.empty()) return std::nullopt;
     // The tracer's own intersection and tie rule, on those spheres alone.
     const PreparedScene<double> s = prepareScene<double>(near);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "scene/scene.h"
 
@@ -59,8 +60,10 @@ struct SurfacePick {
 
 // The surface seen through image point (x, y), in pixels of the scene's render
 // size (x right, y down, continuous: the centre of pixel (i, j) is (i+0.5, j+0.5)),
-// or nothing. Uses the tracer's own intersection in double.
-std::optional<SurfacePick> pickSurface(const Scene& scene, double x, double y);
+// or nothing. Uses the tracer's own intersection in double. The spheres at
+// `ignored` (ascending indices) are looked through: those being moved.
+std::optional<SurfacePick> pickSurface(const Scene& scene, double x, double y,
+                                       const std::vector<int>& ignored = {});
 
 // pickSurface()'s sphere.
 std::optional<int> pickSphere(const Scene& scene, double x, double y);

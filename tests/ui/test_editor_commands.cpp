@@ -365,8 +365,14 @@ TEST_F(EditorCommandsTest, KeyboardHelp_ListsEveryShortcutAndTheMouse) {
             lines << key + " = " + table->item(r, 2)->text();
     for (const QString& expected :
          {QStringLiteral("Home = Reset Camera"), QStringLiteral("F = Frame Selected Sphere"),
-          QStringLiteral("Left = Orbit Left"), QStringLiteral("W = Walk Forward"),
-          QStringLiteral("Ctrl+Z = Undo"), QStringLiteral("Ctrl+S = Save"),
+          QStringLiteral("Left = Orbit Left"), QStringLiteral("W = Fly Forward"),
+          QStringLiteral("G = Move Selected"), QStringLiteral("S = Scale Selected Spheres"),
+          QStringLiteral("B = Box Select"), QStringLiteral("A = All"),
+          QStringLiteral("Alt+A = None"), QStringLiteral("Ctrl+I = Invert"),
+          QStringLiteral("Shift+L = Same Material"), QStringLiteral("Shift+D = Duplicate and Move"),
+          QStringLiteral("Ctrl+C = Copy"), QStringLiteral("Ctrl+V = Paste"),
+          QStringLiteral("Shift+` = Fly Mode"), QStringLiteral("Ctrl+Z = Undo"),
+          QStringLiteral("Ctrl+S = Save"),
           QStringLiteral("Left drag = Orbit the camera about the point where the drag starts")})
         EXPECT_TRUE(lines.contains(expected)) << expected.toStdString();
     // Every action with a shortcut is listed with it.

@@ -202,7 +202,10 @@ TEST_F(ViewCameraTest, CameraRun_KeysWithinHalfASecondAreOneUndoStep) {
     for (int i = 0; i < 5; ++i) QTest::keyClick(view, Qt::Key_Left);
     EXPECT_EQ(undo->count(), 1);
     EXPECT_EQ(undo->undoText(), QStringLiteral("Orbit camera"));
-    QTest::keyClick(view, Qt::Key_W);  // another kind of move in the same run
+    // Another kind of move in the same run: W walks in fly mode (Shift+`).
+    QTest::keyClick(view, Qt::Key_AsciiTilde, Qt::ShiftModifier);
+    ASSERT_TRUE(view->flying());
+    QTest::keyClick(view, Qt::Key_W);
     EXPECT_EQ(undo->count(), 1);
     EXPECT_EQ(undo->undoText(), QStringLiteral("Move camera"));
     const Camera afterRun = doc->scene().camera;

@@ -23,6 +23,9 @@ class ListDelta {
     // Item `index` alone changed, from `before` to `after` (an item edit).
     ListDelta(std::size_t index, T before, T after)
         : index_{index}, before_{std::move(before)}, after_{std::move(after)} {}
+    // Items `index` (ascending) changed from `before` to `after` (an items edit).
+    ListDelta(std::vector<std::size_t> index, std::vector<T> before, std::vector<T> after)
+        : index_{std::move(index)}, before_{std::move(before)}, after_{std::move(after)} {}
     ListDelta(const std::vector<T>& before, const std::vector<T>& after) {
         if (before.size() != after.size()) {
             whole_ = true;
@@ -38,6 +41,15 @@ class ListDelta {
             }
     }
     bool empty() const { return !whole_ && index_.empty(); }
+    // Whether applying the change to `list` adds, removes, renames or
+    // reorders items.
+    bool changesStructure(const std::vector<T>& list, bool forward) const {
+        if (whole_) return true;
+        const std::vector<T>& to = forward ? after_ : before_;
+        for (std::size_t k = 0; k < index_.size(); ++k)
+            if (list[index_[k]].name != to[k].name) return true;
+        return false;
+    }
     // Applies the change forwards (redo) or backwards (undo); true when it
     // added, removed, renamed or reordered items.
     bool apply(std::vector<T>& list, bool forward) const {
@@ -71,8 +83,11 @@ struct SceneDelta {
     // An item edit of `scene`: one item of one list, the rest as it is.
     template <class T>
     static SceneDelta item(const Scene& scene, std::size_t index, T before, T after) {
+        return items(scene, ListDelta<T>(index, std::move(before), std::move(after)));
+    }
+    template <class T>
+    static SceneDelta items(const Scene& scene, ListDelta<T> change) {
         SceneDelta delta(head(scene));
-        ListDelta<T> change(index, std::move(before), std::move(after));
         if constexpr (std::is_same_v<T, Sphere>)
             delta.spheres = std::move(change);
         else if constexpr (std::is_same_v<T, Light>)
@@ -159,9 +174,22 @@ void SceneDocument::applyDelta(const SceneDelta& delta, bool forward) {
     scene_.render = head.render;
     scene_.background = head.background;
     scene_.ambient = head.ambient;
+    const bool moves = [&] {
+        switch (selection_.kind()) {
+            case ItemKind::Sphere:
+                return delta.spheres.changesStructure(scene_.spheres, forward);
+            case ItemKind::Light:
+                return delta.lights.changesStructure(scene_.lights, forward);
+            case ItemKind::Material:
+                return delta.materials.changesStructure(scene_.materials, forward);
+        }
+        return false;
+    }();
+    if (moves) selection_.rememberNames(scene_);
     bool structural = delta.spheres.apply(scene_.spheres, forward);
     structural = delta.lights.apply(scene_.lights, forward) || structural;
     structural = delta.materials.apply(scene_.materials, forward) || structural;
+    if (moves) selection_.followNames(scene_);
     if (structural) emit structureChanged();
     emit sceneChanged();
 }
@@ -178,6 +206,7 @@ void SceneDocument::reset(const Scene& scene, const QString& filePath) {
     scene_ = scene;
     ++contentRevision_;
     resetSceneValid_ = !validateScene(scene_);
+    selection_.clear();
     filePath_ = filePath;
     emit filePathChanged(filePath_);
     emit structureChanged();
@@ -256,6 +285,57 @@ bool SceneDocument::editItem(int index, const QString& text, const std::function
     push(SceneDelta::item(scene_, i, list[i], std::move(after)), text, EditRun::Separate);
     return true;
 }
+
+template <class T>
+bool SceneDocument::editItems(const std::vector<int>& indices, const QString& text,
+                              const std::function<void(T&, int)>& change, QString* error) {
+    std::vector<T>& list = itemsOf<T>(scene_);
+    std::vector<std::size_t> changed;
+    std::vector<T> before, after;
+    for (int index : indices) {
+        if (index < 0 || index >= static_cast<int>(list.size())) continue;
+        const auto i = static_cast<std::size_t>(index);
+        T item = list[i];
+        change(item, index);
+        if (item == list[i]) continue;
+        changed.push_back(i);
+        before.push_back(list[i]);
+        after.push_back(std::move(item));
+    }
+    if (changed.empty()) return true;
+    if (!(undo_.index() > 0 || resetSceneValid_))
+        return edit(
+            text,
+            [&](Scene& s) {
+                for (std::size_t k = 0; k < changed.size(); ++k)
+                    itemsOf<T>(s)[changed[k]] = after[k];
+            },
+            error);
+    // Each checked in the scene as it would be, as editItem() does, and put back.
+    std::optional<SceneProblem> problem;
+    for (std::size_t k = 0; k < changed.size() && !problem; ++k) {
+        std::swap(list[changed[k]], after[k]);
+        if (list[changed[k]].name != before[k].name)
+            problem = SceneProblem{"", "a name cannot change with others"};
+        else
+            problem = validateItemEdit<T>(scene_, changed[k]);
+        if (problem && error) *error = editProblemText(*problem, scene_);
+        std::swap(list[changed[k]], after[k]);
+    }
+    if (problem) return false;
+    push(SceneDelta::items(scene_,
+                           ListDelta<T>(std::move(changed), std::move(before), std::move(after))),
+         text, EditRun::Separate);
+    return true;
+}
+
+template bool SceneDocument::editItems<Sphere>(const std::vector<int>&, const QString&,
+                                               const std::function<void(Sphere&, int)>&, QString*);
+template bool SceneDocument::editItems<Light>(const std::vector<int>&, const QString&,
+                                              const std::function<void(Light&, int)>&, QString*);
+template bool SceneDocument::editItems<Material>(const std::vector<int>&, const QString&,
+                                                 const std::function<void(Material&, int)>&,
+                                                 QString*);
 
 template bool SceneDocument::editItem<Sphere>(int, const QString&,
                                               const std::function<void(Sphere&)>&, QString*);

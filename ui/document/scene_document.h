@@ -15,12 +15,10 @@
 #include <QString>
 #include <QUndoStack>
 
+#include "document/scene_selection.h"
 #include "scene/scene.h"
 
 namespace whitted::ui {
-
-// What a list or property panel shows.
-enum class ItemKind { Sphere, Light, Material };
 
 // Whether an edit may join the step before it: camera moves made in a run
 // (arrow keys held or tapped, wheel ticks) are one undo step, not dozens.
@@ -41,6 +39,9 @@ class SceneDocument : public QObject {
     // depth, precision). A render's time speaks for the revision it showed.
     std::uint64_t contentRevision() const { return contentRevision_; }
     QUndoStack* undoStack() { return &undo_; }
+    // What is selected; emptied by reset(), following its items across edits.
+    SceneSelection* selection() { return &selection_; }
+    const SceneSelection* selection() const { return &selection_; }
 
     // Replaces the whole scene (New, Open) and forgets the undo history.
     void reset(const Scene& scene, const QString& filePath);
@@ -74,6 +75,13 @@ class SceneDocument : public QObject {
     template <class T>
     bool editItem(int index, const QString& text, const std::function<void(T&)>& change,
                   QString* error = nullptr);
+    // editItem() for several items of one list at once (a change to every
+    // selected sphere), one undo step, in time proportional to how many:
+    // `change` is called with each item and its index. Refused as a whole
+    // when any item would be invalid; names must stay as they are.
+    template <class T>
+    bool editItems(const std::vector<int>& indices, const QString& text,
+                   const std::function<void(T&, int)>& change, QString* error = nullptr);
 
     // Everything edited between these two calls is a single undo step (a slider drag).
     void beginGesture(const QString& text);
@@ -105,6 +113,7 @@ class SceneDocument : public QObject {
     Scene scene_;
     QString filePath_;
     QUndoStack undo_;
+    SceneSelection selection_;
     int gestureDepth_ = 0;
     bool runOpen_ = false;  // the top step is a camera run that the next Join edit may extend
     bool resetSceneValid_ = false;  // what reset() was given passed validateScene

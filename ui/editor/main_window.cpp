@@ -98,9 +98,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         else
             statusBar()->showMessage(text);
     });
-    connect(view_, &RenderView::picked, this, [this](ItemKind kind, int index) {
-        if (index >= 0) scenePanel_->select(kind, index);
-    });
 
     QSettings settings;
     if (!restoreGeometry(settings.value("window/geometry").toByteArray()) ||

@@ -101,6 +101,16 @@ class MainWindow : public QMainWindow {
     // the pointer at once (RenderView::startMove); Escape leaves the copy where
     // the original is. The copy and its move are one undo step.
     void duplicateAndMove();
+    // Edit > Select: All (A), None (Alt+A), Invert (Ctrl+I) of the list shown,
+    // and Same Material (Shift+L).
+    void buildSelectMenu(QMenu* menu);
+    // The spheres of the selected materials, or of the selected spheres' materials.
+    void selectSameMaterial();
+    // Ctrl+C and Ctrl+V: the selection as a scene-file fragment (scene_fragment.h)
+    // on the system clipboard, so it pastes into any editor window.
+    void buildClipboardActions(QMenu* edit);
+    void copySelection();
+    void pasteClipboard();
     // Shift+A on the Spheres tab with the pointer over the picture: a new
     // sphere resting on what is under the pointer, then moving with it as
     // after Shift+D. False, and nothing, when the pointer is elsewhere.

@@ -55,7 +55,6 @@ void MainWindow::buildDocks() {
     connect(scenePanel_, &ScenePanel::selectionChanged, this,
             [this, tabs](ItemKind kind, int index) {
                 propertyPanel_->showItem(kind, index);
-                view_->setSelection(kind, index);
                 if (index >= 0) tabs->setCurrentWidget(propertyPanel_);
             });
 }

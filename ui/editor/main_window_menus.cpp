@@ -9,6 +9,10 @@
 #include <QToolBar>
 #include <QToolButton>
 
+#include <string>
+#include <unordered_set>
+#include <vector>
+
 #include "document/scene_undo_keys.h"
 #include "editor/help_dialogs.h"
 #include "editor/main_window.h"
@@ -87,15 +91,81 @@ void MainWindow::buildEditMenu() {
     duplicateAndMove->setShortcut(QKeySequence(tr("Shift+D")));
     edit->addAction(scenePanel_->deleteAction());
     edit->addAction(scenePanel_->renameAction());
+    edit->addSeparator();
+    buildClipboardActions(edit);
+    edit->addSeparator();
+    buildSelectMenu(edit->addMenu(tr("&Select")));
+}
+
+void MainWindow::buildSelectMenu(QMenu* menu) {
+    auto add = [&](const QString& text, const char* name, const QKeySequence& key, auto run) {
+        QAction* a = menu->addAction(text, this, run);
+        a->setObjectName(QLatin1String(name));
+        a->setShortcut(key);
+        return a;
+    };
+    SceneSelection* selection = doc_.selection();
+    // Of the list shown: the spheres, lights or materials tab.
+    add(tr("&All"), "selectAll", QKeySequence(Qt::Key_A), [this, selection] {
+        const ItemKind kind = scenePanel_->currentKind();
+        std::vector<int> all(itemCount(doc_.scene(), kind));
+        for (int i = 0; i < int(all.size()); ++i) all[i] = i;
+        selection->set(kind, std::move(all), selection->active());
+    });
+    add(tr("&None"), "selectNone", QKeySequence(Qt::ALT | Qt::Key_A),
+        [selection] { selection->clear(); });
+    add(tr("&Invert"), "selectInvert", QKeySequence(Qt::CTRL | Qt::Key_I), [this, selection] {
+        const ItemKind kind = scenePanel_->currentKind();
+        std::vector<int> others;
+        for (int i = 0; i < itemCount(doc_.scene(), kind); ++i)
+            if (!selection->contains(kind, i)) others.push_back(i);
+        selection->set(kind, std::move(others));
+    });
+    add(tr("Same &Material"), "selectSameMaterial", QKeySequence(Qt::SHIFT | Qt::Key_L),
+        [this] { selectSameMaterial(); })
+        ->setStatusTip(tr("Select every sphere of the selected materials, or of the selected "
+                          "spheres' materials"));
+}
+
+void MainWindow::selectSameMaterial() {
+    SceneSelection* selection = doc_.selection();
+    const Scene& s = doc_.scene();
+    std::unordered_set<std::string> materials;
+    for (int i : selection->indices()) {
+        if (selection->kind() == ItemKind::Material) materials.insert(s.materials[i].name);
+        if (selection->kind() == ItemKind::Sphere) materials.insert(s.spheres[i].material);
+    }
+    if (materials.empty()) return;
+    std::vector<int> spheres;
+    for (int i = 0; i < int(s.spheres.size()); ++i)
+        if (materials.contains(s.spheres[i].material)) spheres.push_back(i);
+    const int active = selection->kind() == ItemKind::Sphere ? selection->active() : -1;
+    selection->set(ItemKind::Sphere, std::move(spheres), active);
 }
 
 void MainWindow::duplicateAndMove() {
-    const ItemKind kind = scenePanel_->currentKind();
-    const int index = scenePanel_->currentIndex();
-    if (kind == ItemKind::Material || index < 0) return;
-    doc_.beginGesture(tr("Duplicate and move %1").arg(itemName(doc_.scene(), kind, index)));
-    scenePanel_->duplicateAction()->trigger();
+    const SceneSelection& selection = *doc_.selection();
+    if (selection.kind() == ItemKind::Material || selection.empty()) return;
+    doc_.beginGesture(
+        tr("Duplicate and move %1")
+            .arg(selection.count() == 1
+                     ? itemName(doc_.scene(), selection.kind(), selection.active())
+                     : tr("%1 %2s").arg(selection.count()).arg(kindNoun(selection.kind()))));
+    scenePanel_->duplicateItem(selection.kind());
     moveWithinGesture();
+}
+
+void MainWindow::buildClipboardActions(QMenu* edit) {
+    QAction* copy = edit->addAction(themeIcon("edit-copy"), tr("&Copy"), QKeySequence::Copy, this,
+                                    [this] { copySelection(); });
+    copy->setObjectName(QStringLiteral("copy"));
+    copy->setStatusTip(
+        tr("Copy the selected spheres (with their materials) or lights, to paste "
+           "into this or another scene"));
+    QAction* paste = edit->addAction(themeIcon("edit-paste"), tr("&Paste"), QKeySequence::Paste,
+                                     this, [this] { pasteClipboard(); });
+    paste->setObjectName(QStringLiteral("paste"));
+    paste->setStatusTip(tr("Add the copied spheres and lights to this scene"));
 }
 
 bool MainWindow::addSphereAtPointer() {

@@ -152,7 +152,15 @@ void NumberSpinBox::mousePressEvent(QMouseEvent* event) {
     QDoubleSpinBox::mousePressEvent(event);
 }
 
+void NumberSpinBox::setMixed(bool mixed) {
+    if (mixed == mixed_) return;
+    mixed_ = mixed;
+    lineEdit()->setPlaceholderText(mixed ? tr("mixed") : QString());
+    lineEdit()->setText(mixed ? QString() : prefix() + textFromValue(value()) + suffix());
+}
+
 QString NumberSpinBox::textFromValue(double value) const {
+    if (mixed_) return {};
     const QLocale locale = displayLocale(this->locale());
     const double magnitude = std::abs(value);
     if (magnitude == 0.0) return locale.toString(0);
@@ -317,6 +325,7 @@ void DoubleField::refresh() {
     if (spec_.stepOf) spin_->setSingleStep(spec_.stepOf(doc_->scene()));
     {
         const QSignalBlocker block(spin_);
+        spin_->setMixed(mixedOf_ && mixedOf_(doc_->scene()));
         spin_->setValue(value);
     }
     // Moving the handle under the user's mouse would make it jump during a drag.

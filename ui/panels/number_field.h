@@ -29,6 +29,10 @@ class NumberSpinBox : public QDoubleSpinBox {
     QSize minimumSizeHint() const override;
     // Holding Shift steps by a tenth of the usual step (arrows, keys and wheel).
     void stepBy(int steps) override;
+    // Shows no number but "mixed" (the selected items' values differ) until
+    // the user types one.
+    void setMixed(bool mixed);
+    bool mixed() const { return mixed_; }
 
   protected:
     void keyPressEvent(QKeyEvent* event) override;
@@ -44,6 +48,7 @@ class NumberSpinBox : public QDoubleSpinBox {
     double stepSize(int steps) const;  // the unmodified step from the current value
 
     bool fine_ = false;  // the event being handled holds Shift
+    bool mixed_ = false;
 };
 
 enum class SliderScale { None, Linear, Log };
@@ -122,6 +127,8 @@ class DoubleField : public QWidget {
 
     // Shows the scene's value; emits nothing.
     void refresh();
+    // Whether the items the field edits hold different values ("mixed").
+    void setMixedOf(std::function<bool(const Scene&)> mixed) { mixedOf_ = std::move(mixed); }
 
     NumberSpinBox* spinBox() const { return spin_; }
     QSlider* slider() const { return slider_; }  // nullptr without one
@@ -141,6 +148,7 @@ class DoubleField : public QWidget {
     Getter get_;
     Commit commit_;
     TextFn undoText_;
+    std::function<bool(const Scene&)> mixedOf_;
     NumberSpinBox* spin_;
     QSlider* slider_ = nullptr;
     bool gestureOpen_ = false;

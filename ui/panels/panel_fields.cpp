@@ -46,4 +46,13 @@ void refreshAll(const std::vector<DoubleField*>& fields) {
     for (DoubleField* field : fields) field->refresh();
 }
 
+std::vector<int> editTargets(const SceneDocument& doc, ItemKind kind, int shown) {
+    const SceneSelection& selection = *doc.selection();
+    std::vector<int> targets{shown};
+    if (!selection.contains(kind, shown)) return targets;
+    for (int i : selection.indices())
+        if (i != shown) targets.push_back(i);
+    return targets;
+}
+
 }  // namespace whitted::ui

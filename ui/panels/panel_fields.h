@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include <QString>
@@ -60,32 +61,60 @@ DoubleField* makeField(SceneDocument* doc, const QString& name, const DoubleFiel
 // Which item of type T (Sphere, Light, Material) a page's fields edit: its
 // index in its list, found in the scene (-1 or out of range: none).
 using Locate = std::function<int(const Scene&)>;
+// Which items a page's fields edit at once: the shown item first, then the
+// rest of the selection it belongs to.
+using Targets = std::function<std::vector<int>(const Scene&)>;
+
+// The shown item of `kind`, then the other selected items when the shown one
+// is selected with them: what a property page's edit changes.
+std::vector<int> editTargets(const SceneDocument& doc, ItemKind kind, int shown);
 
 // A field for the double that `access(item)` points to (nullptr: none) in the
-// item `locate` finds. Its edits are item edits (SceneDocument::editItem), in
-// time proportional to the item, not the scene.
+// items `targets` finds: it shows the first one's value, "mixed" when the
+// others differ, and sets them all in one item edit
+// (SceneDocument::editItems), in time proportional to the items, not the scene.
 template <class T, class Access>
-DoubleField* makeItemField(SceneDocument* doc, const QString& name, const DoubleFieldSpec& spec,
-                           Locate locate, Access access, DoubleField::TextFn text,
-                           std::vector<DoubleField*>& fields) {
+DoubleField* makeItemsField(SceneDocument* doc, const QString& name, const DoubleFieldSpec& spec,
+                            Targets targets, Access access, DoubleField::TextFn text,
+                            std::vector<DoubleField*>& fields) {
+    auto valueOf = [access](const Scene& s, int i) -> std::optional<double> {
+        const T* item = itemAt(itemsOf<T>(s), i);
+        const double* v = item ? access(*item) : nullptr;
+        return v ? std::optional<double>(*v) : std::nullopt;
+    };
     auto* field = new DoubleField(
         doc, name, spec,
-        [locate, access](const Scene& s) {
-            const T* item = itemAt(itemsOf<T>(s), locate(s));
-            const double* v = item ? access(*item) : nullptr;
-            return v ? *v : 0.0;
+        [targets, valueOf](const Scene& s) {
+            const std::vector<int> items = targets(s);
+            return items.empty() ? 0.0 : valueOf(s, items.front()).value_or(0.0);
         },
-        [locate, access](SceneDocument& d, const QString& text, double value, QString* error) {
-            return d.editItem<T>(
-                locate(d.scene()), text,
-                [&](T& item) {
+        [targets, access](SceneDocument& d, const QString& text, double value, QString* error) {
+            return d.editItems<T>(
+                targets(d.scene()), text,
+                [&](T& item, int) {
                     if (double* v = access(item)) *v = value;
                 },
                 error);
         },
         std::move(text));
+    field->setMixedOf([targets, valueOf](const Scene& s) {
+        const std::vector<int> items = targets(s);
+        for (std::size_t k = 1; k < items.size(); ++k)
+            if (valueOf(s, items[k]) != valueOf(s, items.front())) return true;
+        return false;
+    });
     fields.push_back(field);
     return field;
+}
+
+// makeItemsField for the one item `locate` finds.
+template <class T, class Access>
+DoubleField* makeItemField(SceneDocument* doc, const QString& name, const DoubleFieldSpec& spec,
+                           Locate locate, Access access, DoubleField::TextFn text,
+                           std::vector<DoubleField*>& fields) {
+    return makeItemsField<T>(
+        doc, name, spec, [locate](const Scene& s) { return std::vector<int>{locate(s)}; }, access,
+        std::move(text), fields);
 }
 
 // Three fields in a row, named <name>X, <name>Y, <name>Z, made by `field(axis,
@@ -117,18 +146,18 @@ QWidget* makeVectorRow(SceneDocument* doc, const QString& name, const DoubleFiel
         fields);
 }
 
-// A row for the Vec3 that `access(item)` points to in the item `locate` finds,
-// edited as makeItemField's fields are.
+// A row for the Vec3 that `access(item)` points to in the items `targets`
+// finds, edited as makeItemsField's fields are.
 template <class T, class Access>
-QWidget* makeItemVectorRow(SceneDocument* doc, const QString& name, const DoubleFieldSpec& spec,
-                           Locate locate, Access access, const DoubleField::TextFn& text,
-                           std::vector<DoubleField*>& fields) {
+QWidget* makeItemsVectorRow(SceneDocument* doc, const QString& name, const DoubleFieldSpec& spec,
+                            Targets targets, Access access, const DoubleField::TextFn& text,
+                            std::vector<DoubleField*>& fields) {
     return makeVectorRow(
         name,
         [&](int axis, const QString& objectName) {
             std::vector<DoubleField*> one;
-            return makeItemField<T>(
-                doc, objectName, spec, locate,
+            return makeItemsField<T>(
+                doc, objectName, spec, targets,
                 [access, axis](auto& item) {
                     auto* v = access(item);
                     return v ? &(*v)[axis] : nullptr;

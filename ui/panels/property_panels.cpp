@@ -44,6 +44,8 @@ PropertyPanel::PropertyPanel(SceneDocument* doc, QWidget* parent)
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(pages_);
     connect(doc_, &SceneDocument::sceneChanged, this, &PropertyPanel::refresh);
+    // Shift+click adds to what the page edits: its name and mixed fields change.
+    connect(doc_->selection(), &SceneSelection::changed, this, &PropertyPanel::refresh);
     refresh();
 }
 
@@ -58,7 +60,10 @@ bool PropertyPanel::valid() const {
 }
 
 QString PropertyPanel::itemLabel() const {
-    return itemName(doc_->scene(), kind_, index_);
+    const int others = int(editTargets(*doc_, kind_, index_).size()) - 1;
+    const QString name = itemName(doc_->scene(), kind_, index_);
+    return others == 0 ? name
+                       : tr("%1 and %n other %2(s)", nullptr, others).arg(name, kindNoun(kind_));
 }
 
 std::function<QString()> PropertyPanel::changeText(const QString& what) const {
@@ -66,19 +71,27 @@ std::function<QString()> PropertyPanel::changeText(const QString& what) const {
 }
 
 void PropertyPanel::editLight(const QString& what, const std::function<void(Light&)>& change) {
-    if (!editItemOrTell(this, doc_, index_, changeText(what)(), change)) refresh();
+    QString error;
+    if (doc_->editItems<Light>(
+            editTargets(*doc_, ItemKind::Light, index_), changeText(what)(),
+            [&](Light& light, int) { change(light); }, &error))
+        return;
+    showRefusal(this, error);
+    refresh();
 }
 
 QWidget* PropertyPanel::buildLightPage() {
     auto* page = new QWidget;
     page->setObjectName(QStringLiteral("lightPage"));
     QFormLayout* form = makeForm(page);
-    const Locate locate = [this](const Scene&) { return index_; };
+    const Targets targets = [this](const Scene&) {
+        return editTargets(*doc_, ItemKind::Light, index_);
+    };
 
     lightName_ = makeNameLabel(QStringLiteral("lightName"));
     form->addRow(tr("Light:"), lightName_);
-    form->addRow(tr("Position:"), makeItemVectorRow<Light>(
-                                      doc_, QStringLiteral("lightPosition"), kCoordinate, locate,
+    form->addRow(tr("Position:"), makeItemsVectorRow<Light>(
+                                      doc_, QStringLiteral("lightPosition"), kCoordinate, targets,
                                       [](auto& l) { return &l.position; },
                                       changeText(tr("position")), lightFields_));
 
@@ -89,9 +102,9 @@ QWidget* PropertyPanel::buildLightPage() {
     form->addRow(tr("Colour:"), lightColor_);
     form->addRow(
         tr("Intensity:"),
-        makeItemField<Light>(
+        makeItemsField<Light>(
             doc_, QStringLiteral("lightIntensity"),
-            DoubleFieldSpec::range(0.0, 1000.0, 0.1).linearSlider(0.0, 10.0), locate,
+            DoubleFieldSpec::range(0.0, 1000.0, 0.1).linearSlider(0.0, 10.0), targets,
             [](auto& l) { return &l.intensity; }, changeText(tr("intensity")), lightFields_));
     return page;
 }
@@ -109,7 +122,7 @@ void PropertyPanel::refresh() {
             break;
         case ItemKind::Light: {
             const Light& light = scene.lights[index_];
-            lightName_->setText(QString::fromStdString(light.name));
+            lightName_->setText(itemLabel());
             refreshAll(lightFields_);
             lightColor_->setColor(light.color);
             pages_->setCurrentWidget(lightPage_);

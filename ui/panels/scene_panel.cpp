@@ -11,6 +11,8 @@
 #include <QLineEdit>
 #include <QListView>
 #include <QPushButton>
+#include <QScopedValueRollback>
+#include <QSignalBlocker>
 #include <QSortFilterProxyModel>
 #include <QTabWidget>
 #include <QVBoxLayout>
@@ -57,10 +59,8 @@ ScenePanel::ScenePanel(SceneDocument* doc, QWidget* parent)
     buildTab(ItemKind::Light, tr("Lights"), QStringLiteral("lightList"));
     buildTab(ItemKind::Material, tr("Materials"), QStringLiteral("materialList"));
 
-    connect(tabWidget_, &QTabWidget::currentChanged, this, [this] {
-        updateEnabled();
-        announce();
-    });
+    connect(tabWidget_, &QTabWidget::currentChanged, this, [this] { updateEnabled(); });
+    connect(doc_->selection(), &SceneSelection::changed, this, &ScenePanel::showSelection);
     updateEnabled();
 }
 
@@ -84,7 +84,7 @@ void ScenePanel::buildTab(ItemKind kind, const QString& title, const QString& li
     t.view->setModel(t.shown);
     // Uniform sizes let the view lay out 100,000 rows without measuring each one.
     t.view->setUniformItemSizes(true);
-    t.view->setSelectionMode(QAbstractItemView::SingleSelection);
+    t.view->setSelectionMode(QAbstractItemView::ExtendedSelection);
     t.view->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
                             QAbstractItemView::SelectedClicked);
     QHBoxLayout* buttons = buildTabButtons(kind, page);
@@ -97,8 +97,9 @@ void ScenePanel::buildTab(ItemKind kind, const QString& title, const QString& li
 
     connect(t.view->selectionModel(), &QItemSelectionModel::selectionChanged, this,
             [this, kind] { onViewSelectionChanged(kind); });
+    // A reset drops the list's selection; the document's followed its items.
     connect(t.model, &QAbstractItemModel::modelReset, this,
-            [this, kind] { restoreSelection(kind); });
+            [this, kind] { showSelectionIn(kind); });
     connect(t.model, &SceneListModel::editRefused, this,
             [this](const QString& reason) { showRefusal(this, reason); });
 }
@@ -141,22 +142,26 @@ ItemKind ScenePanel::currentKind() const {
 }
 
 int ScenePanel::currentIndex() const {
-    return selectedRow(currentKind());
+    const SceneSelection* selection = doc_->selection();
+    return selection->kind() == currentKind() ? selection->active() : -1;
 }
 
-int ScenePanel::selectedRow(ItemKind kind) const {
-    const Tab& t = tab(kind);
-    const QModelIndexList rows = t.view->selectionModel()->selectedRows();
-    return rows.isEmpty() ? -1 : t.shown->mapToSource(rows.first()).row();
+std::vector<int> ScenePanel::selectedRows(ItemKind kind) const {
+    const SceneSelection* selection = doc_->selection();
+    return selection->kind() == kind ? selection->indices() : std::vector<int>{};
 }
 
 // A selected item the filter hides is deselected (the buttons and the Edit
 // menu act only on what the list shows); one it keeps stays selected, in view.
 void ScenePanel::setFilter(ItemKind kind, const QString& text) {
-    Tab& t = tab(kind);
-    const int selected = t.selectedRow;
-    t.shown->setFilterFixedString(text);
-    selectRow(kind, selected);
+    tab(kind).shown->setFilterFixedString(text);
+    SceneSelection* selection = doc_->selection();
+    if (selection->kind() != kind) return;
+    std::vector<int> kept;
+    for (int row : selection->indices())
+        if (shownRow(kind, row) >= 0) kept.push_back(row);
+    selection->set(kind, std::move(kept), selection->active());
+    showSelectionIn(kind);
 }
 
 // The row in the list as shown, or -1 when the filter hides it.
@@ -165,53 +170,78 @@ int ScenePanel::shownRow(ItemKind kind, int row) const {
     return row < 0 ? -1 : t.shown->mapFromSource(t.model->index(row)).row();
 }
 
-// What is selected from elsewhere (a click in the picture, a new item) must be
-// seen: a filter that hides it is cleared.
 void ScenePanel::select(ItemKind kind, int index) {
     tabWidget_->setCurrentIndex(static_cast<int>(kind));
-    Tab& t = tab(kind);
-    if (index >= 0 && index < t.model->rowCount() && shownRow(kind, index) < 0) t.filter->clear();
-    selectRow(kind, index);
-}
-
-void ScenePanel::selectRow(ItemKind kind, int row) {
-    Tab& t = tab(kind);
-    const int shown = row < t.model->rowCount() ? shownRow(kind, row) : -1;
-    if (shown < 0) {
-        t.view->selectionModel()->clear();
-        onViewSelectionChanged(kind);  // clear() does not always report an empty selection
-        return;
-    }
-    const QModelIndex index = t.shown->index(shown, 0);
-    t.view->selectionModel()->setCurrentIndex(index, QItemSelectionModel::ClearAndSelect);
-    t.view->scrollTo(index);
+    if (index >= itemCount(doc_->scene(), kind)) index = -1;
+    doc_->selection()->selectOne(kind, index);
+    showSelectionIn(kind);  // scrolled to, even when it was selected already
 }
 
 void ScenePanel::onViewSelectionChanged(ItemKind kind) {
-    Tab& t = tab(kind);
-    t.selectedRow = selectedRow(kind);
-    t.selectedName = itemName(doc_->scene(), kind, t.selectedRow);
-    updateEnabled();
-    if (kind == currentKind()) announce();
+    if (showing_) return;
+    const Tab& t = tab(kind);
+    std::vector<int> rows;
+    for (const QModelIndex& index : t.view->selectionModel()->selectedRows())
+        rows.push_back(t.shown->mapToSource(index).row());
+    const QModelIndex current = t.view->selectionModel()->currentIndex();
+    const int active = current.isValid() ? t.shown->mapToSource(current).row() : -1;
+    // Emptying another tab's list leaves the selection of this kind alone.
+    if (rows.empty() && doc_->selection()->kind() != kind) return;
+    doc_->selection()->set(kind, std::move(rows), active);
 }
 
-void ScenePanel::restoreSelection(ItemKind kind) {
-    // A reset drops the selection silently. Follow the item by name (undo of a
-    // delete elsewhere moves it), else keep the row, else select nothing.
+void ScenePanel::showSelection() {
+    const ItemKind kind = doc_->selection()->kind();
+    // What is selected from elsewhere (a click in the picture, a new item) is shown.
+    if (!doc_->selection()->empty()) tabWidget_->setCurrentIndex(static_cast<int>(kind));
+    for (ItemKind k : kKinds) showSelectionIn(k);
+    updateEnabled();
+    announce();
+}
+
+void ScenePanel::showSelectionIn(ItemKind kind) {
     Tab& t = tab(kind);
-    int row = -1;
-    if (!t.selectedName.isEmpty()) {
-        for (int i = 0; i < itemCount(doc_->scene(), kind) && row < 0; ++i)
-            if (itemName(doc_->scene(), kind, i) == t.selectedName) row = i;
-        if (row < 0 && t.selectedRow < itemCount(doc_->scene(), kind)) row = t.selectedRow;
+    const std::vector<int> rows = selectedRows(kind);
+    // A filter that hides a selected item is cleared, so that it can be seen.
+    for (int row : rows)
+        if (shownRow(kind, row) < 0) {
+            const QSignalBlocker block(t.filter);
+            t.filter->clear();
+            t.shown->setFilterFixedString(QString());
+            break;
+        }
+    // Runs of neighbouring rows as one range each: a box of 100,000 spheres
+    // is far fewer ranges than rows when the scene lists them in order.
+    QItemSelection ranges;
+    int first = -1, last = -1;
+    auto flush = [&] {
+        if (first >= 0) ranges.select(t.shown->index(first, 0), t.shown->index(last, 0));
+    };
+    for (int row : rows) {
+        const int shown = shownRow(kind, row);
+        if (shown == last + 1 && first >= 0) {
+            last = shown;
+            continue;
+        }
+        flush();
+        first = last = shown;
     }
-    selectRow(kind, row);
+    flush();
+    const QScopedValueRollback<bool> showing(showing_, true);
+    QItemSelectionModel* model = t.view->selectionModel();
+    model->select(ranges, QItemSelectionModel::ClearAndSelect);
+    const int active = doc_->selection()->kind() == kind ? doc_->selection()->active() : -1;
+    if (active >= 0) {
+        const QModelIndex index = t.shown->index(shownRow(kind, active), 0);
+        model->setCurrentIndex(index, QItemSelectionModel::NoUpdate);
+        t.view->scrollTo(index);
+    }
 }
 
 void ScenePanel::updateEnabled() {
     for (ItemKind kind : kKinds) {
         Tab& t = tab(kind);
-        const bool any = selectedRow(kind) >= 0;
+        const bool any = !selectedRows(kind).empty();
         t.duplicate->setEnabled(any);
         t.remove->setEnabled(any);
         t.rename->setEnabled(any);
@@ -223,8 +253,8 @@ void ScenePanel::updateEnabled() {
 }
 
 void ScenePanel::announce() {
-    const ItemKind kind = currentKind();
-    const int index = currentIndex();
+    const ItemKind kind = doc_->selection()->kind();
+    const int index = doc_->selection()->active();
     if (kind == announcedKind_ && index == announcedIndex_) return;
     announcedKind_ = kind;
     announcedIndex_ = index;

@@ -1,10 +1,14 @@
 // The scene panel (for a dock): tabs listing spheres, lights and materials, with
-// Add, Duplicate, Delete and Rename, each one undo step.
+// Add, Duplicate, Delete and Rename, each one undo step. The lists show the
+// document's selection (SceneSelection) and set it: a click selects one item,
+// Shift+click a range, Ctrl+click adds or removes one. Duplicate and Delete act
+// on every selected item, Rename on the active one.
 #pragma once
 
 #include <array>
 #include <functional>
 #include <optional>
+#include <vector>
 
 #include <QWidget>
 
@@ -32,11 +36,12 @@ class ScenePanel : public QWidget {
   public:
     explicit ScenePanel(SceneDocument* doc, QWidget* parent = nullptr);
 
-    // Switches to the kind's tab, selects row `index` and scrolls to it; -1 clears
-    // the tab's selection. Emits selectionChanged when that changes what is selected.
+    // Selects item `index` of the kind alone (-1: nothing), shows its tab and
+    // scrolls to it. Emits selectionChanged when the active item changes.
     void select(ItemKind kind, int index);
-    ItemKind currentKind() const;
-    int currentIndex() const;  // -1 when nothing is selected in the current tab
+    ItemKind currentKind() const;  // the tab shown
+    // The active item of the selection, when it is of the tab shown; else -1.
+    int currentIndex() const;
 
     // For the Edit menu: the buttons' behaviour on the current tab. Their shortcuts
     // (Ctrl+D, Delete, F2) work once the window holds the actions, e.g. in a menu.
@@ -51,11 +56,15 @@ class ScenePanel : public QWidget {
     // true, or returns false to leave it to addSphere({}).
     void setAddSphereHere(std::function<bool()> handler) { addSphereHere_ = std::move(handler); }
     QAction* duplicateAction() const { return duplicateAction_; }
+    // Copies every selected item of `kind`, named "<name> copy", and selects
+    // the copies. One undo step.
+    void duplicateItem(ItemKind kind);
     QAction* deleteAction() const { return deleteAction_; }
     QAction* renameAction() const { return renameAction_; }
 
   signals:
-    void selectionChanged(whitted::ui::ItemKind kind, int index);  // index -1: none
+    // The active item changed (index -1: none).
+    void selectionChanged(whitted::ui::ItemKind kind, int index);
 
   private:
     struct Tab {
@@ -69,21 +78,21 @@ class ScenePanel : public QWidget {
         QPushButton* duplicate = nullptr;
         QPushButton* remove = nullptr;
         QPushButton* rename = nullptr;
-        // What was selected, to find it again after the list is reset.
-        int selectedRow = -1;
-        QString selectedName;
     };
 
     Tab& tab(ItemKind kind) { return tabs_[static_cast<int>(kind)]; }
     const Tab& tab(ItemKind kind) const { return tabs_[static_cast<int>(kind)]; }
-    int selectedRow(ItemKind kind) const;
+    // The selected items of a tab's kind (none when the selection is of another).
+    std::vector<int> selectedRows(ItemKind kind) const;
     void buildTab(ItemKind kind, const QString& title, const QString& listName);
     QHBoxLayout* buildTabButtons(ItemKind kind, QWidget* page);
-    void selectRow(ItemKind kind, int row);
     void setFilter(ItemKind kind, const QString& text);
     int shownRow(ItemKind kind, int row) const;
+    // The user changed a list's selection: it becomes the document's.
     void onViewSelectionChanged(ItemKind kind);
-    void restoreSelection(ItemKind kind);
+    // The document's selection changed: the lists show it.
+    void showSelection();
+    void showSelectionIn(ItemKind kind);
     void updateEnabled();
     void announce();
 
@@ -91,8 +100,9 @@ class ScenePanel : public QWidget {
     void addItem(ItemKind kind);
     QMenu* buildAddMaterialMenu(QWidget* parent);
     void addMaterial(const MaterialPreset* preset);  // nullptr: a plain material
-    void duplicateItem(ItemKind kind);
     void deleteItem(ItemKind kind);
+    // True, with the refusal shown, when a sphere uses one of these materials.
+    bool materialsInUse(const std::vector<int>& rows);
     void renameItem(ItemKind kind);
 
     SceneDocument* doc_;
@@ -103,6 +113,7 @@ class ScenePanel : public QWidget {
     std::function<bool()> addSphereHere_;
     QAction* deleteAction_;
     QAction* renameAction_;
+    bool showing_ = false;  // showSelection() is setting the lists' selections
     ItemKind announcedKind_ = ItemKind::Sphere;
     int announcedIndex_ = -2;  // nothing announced yet
 };

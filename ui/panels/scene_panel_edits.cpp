@@ -3,6 +3,9 @@
 #include "panels/scene_panel.h"
 
 #include <algorithm>
+#include <string>
+#include <unordered_set>
+#include <vector>
 
 #include <QAction>
 #include <QListView>
@@ -21,23 +24,24 @@ namespace whitted::ui {
 
 namespace {
 
-bool nameTaken(const Scene& scene, ItemKind kind, const QString& name) {
-    for (int i = 0; i < itemCount(scene, kind); ++i)
-        if (itemName(scene, kind, i) == name) return true;
-    return false;
+// Every name of a kind, for copies to be named against.
+std::unordered_set<std::string> namesOf(const Scene& scene, ItemKind kind) {
+    std::unordered_set<std::string> names;
+    for (int i = 0; i < itemCount(scene, kind); ++i) names.insert(itemNameOf(scene, kind, i));
+    return names;
 }
 
 // "blue ball" -> "blue ball copy", then "blue ball copy 2"; a copy of a copy
-// counts on rather than growing "copy copy".
-QString copyName(const Scene& scene, ItemKind kind, const QString& original) {
+// counts on rather than growing "copy copy". The name is added to `taken`.
+std::string copyName(std::unordered_set<std::string>& taken, const QString& original) {
     static const QRegularExpression copySuffix(QStringLiteral("^(.*) copy( \\d+)?$"));
     const auto match = copySuffix.match(original);
     const QString stem = (match.hasMatch() ? match.captured(1) : original) + QObject::tr(" copy");
-    if (!nameTaken(scene, kind, stem)) return stem;
-    for (int n = 2;; ++n) {
-        const QString candidate = QStringLiteral("%1 %2").arg(stem).arg(n);
-        if (!nameTaken(scene, kind, candidate)) return candidate;
-    }
+    std::string name = stem.toStdString();
+    for (int n = 2; taken.contains(name); ++n)
+        name = QStringLiteral("%1 %2").arg(stem).arg(n).toStdString();
+    taken.insert(name);
+    return name;
 }
 
 Material defaultMaterial(const std::string& name) {
@@ -145,97 +149,118 @@ void ScenePanel::addMaterial(const MaterialPreset* preset) {
     select(ItemKind::Material, itemCount(doc_->scene(), ItemKind::Material) - 1);
 }
 
-void ScenePanel::duplicateItem(ItemKind kind) {
-    const int row = selectedRow(kind);
-    if (row < 0) return;
-    const QString original = itemName(doc_->scene(), kind, row);
-    const std::string name = copyName(doc_->scene(), kind, original).toStdString();
-    QString error;
-    const bool ok = doc_->edit(
-        tr("Duplicate %1 %2").arg(kindNoun(kind), original),
-        [&](Scene& s) {
-            auto copy = [&](auto& list) {
-                auto item = list[row];
-                item.name = name;
-                list.push_back(std::move(item));
-            };
-            switch (kind) {
-                case ItemKind::Sphere:
-                    copy(s.spheres);
-                    break;
-                case ItemKind::Light:
-                    copy(s.lights);
-                    break;
-                case ItemKind::Material:
-                    copy(s.materials);
-                    break;
-            }
-        },
-        &error);
-    if (!ok) {
-        showRefusal(this, error);
-        return;
+namespace {
+
+// Every item of `list` at `rows` (ascending), copied to the end under `names`.
+template <class T>
+void appendCopies(std::vector<T>& list, const std::vector<int>& rows,
+                  const std::vector<std::string>& names) {
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+        T item = list[rows[k]];
+        item.name = names[k];
+        list.push_back(std::move(item));
     }
-    select(kind, itemCount(doc_->scene(), kind) - 1);
 }
 
-void ScenePanel::deleteItem(ItemKind kind) {
-    const int row = selectedRow(kind);
-    if (row < 0) return;
-    const int shownBefore = shownRow(kind, row);
+// `list` without the items at `rows` (ascending).
+template <class T>
+void eraseRows(std::vector<T>& list, const std::vector<int>& rows) {
+    std::vector<T> kept;
+    kept.reserve(list.size() - rows.size());
+    std::size_t next = 0;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        if (next < rows.size() && rows[next] == static_cast<int>(i)) {
+            ++next;
+            continue;
+        }
+        kept.push_back(std::move(list[i]));
+    }
+    list = std::move(kept);
+}
+
+// "blue ball" for one item, "3 spheres" for several: what an undo step names.
+QString whatIsSelected(const Scene& scene, ItemKind kind, const std::vector<int>& rows) {
+    if (rows.size() == 1) return kindNoun(kind) + QLatin1Char(' ') + itemName(scene, kind, rows[0]);
+    return QObject::tr("%1 %2s").arg(rows.size()).arg(kindNoun(kind));
+}
+
+}  // namespace
+
+void ScenePanel::duplicateItem(ItemKind kind) {
+    const std::vector<int> rows = selectedRows(kind);
+    if (rows.empty()) return;
     const Scene& scene = doc_->scene();
-    const QString name = itemName(scene, kind, row);
-    if (kind == ItemKind::Material) {
-        // Deleting it would leave spheres naming a missing material (SPEC §6).
-        const std::string material = name.toStdString();
+    const int count = itemCount(scene, kind);
+    std::unordered_set<std::string> taken = namesOf(scene, kind);
+    std::vector<std::string> names;
+    for (int row : rows) names.push_back(copyName(taken, itemName(scene, kind, row)));
+    const bool ok = editOrTell(
+        this, doc_, tr("Duplicate %1").arg(whatIsSelected(scene, kind, rows)), [&](Scene& s) {
+            switch (kind) {
+                case ItemKind::Sphere:
+                    return appendCopies(s.spheres, rows, names);
+                case ItemKind::Light:
+                    return appendCopies(s.lights, rows, names);
+                case ItemKind::Material:
+                    return appendCopies(s.materials, rows, names);
+            }
+        });
+    if (!ok) return;
+    std::vector<int> copies(rows.size());
+    for (std::size_t k = 0; k < rows.size(); ++k) copies[k] = count + static_cast<int>(k);
+    doc_->selection()->set(kind, std::move(copies));
+}
+
+// Materials that spheres use cannot go (SPEC §6): the refusal names one user.
+bool ScenePanel::materialsInUse(const std::vector<int>& rows) {
+    const Scene& scene = doc_->scene();
+    for (int row : rows) {
+        const std::string& material = scene.materials[row].name;
         int users = 0;
         QString firstUser;
         for (const Sphere& sphere : scene.spheres) {
             if (sphere.material != material) continue;
             if (users++ == 0) firstUser = QString::fromStdString(sphere.name);
         }
-        if (users > 0) {
-            const QString who =
-                users == 1 ? tr("sphere \"%1\" uses it").arg(firstUser)
-                           : tr("spheres \"%1\" and %n other(s) use it", nullptr, users - 1)
-                                 .arg(firstUser);
-            showRefusal(this, tr("Material \"%1\" cannot be deleted: %2.\n"
-                                 "Assign another material first.")
-                                  .arg(name, who));
-            return;
-        }
+        if (users == 0) continue;
+        const QString who =
+            users == 1
+                ? tr("sphere \"%1\" uses it").arg(firstUser)
+                : tr("spheres \"%1\" and %n other(s) use it", nullptr, users - 1).arg(firstUser);
+        showRefusal(this, tr("Material \"%1\" cannot be deleted: %2.\n"
+                             "Assign another material first.")
+                              .arg(QString::fromStdString(material), who));
+        return true;
     }
-    QString error;
-    const bool ok = doc_->edit(
-        tr("Delete %1 %2").arg(kindNoun(kind), name),
-        [&](Scene& s) {
+    return false;
+}
+
+void ScenePanel::deleteItem(ItemKind kind) {
+    const std::vector<int> rows = selectedRows(kind);
+    if (rows.empty()) return;
+    if (kind == ItemKind::Material && materialsInUse(rows)) return;
+    const int shownBefore = shownRow(kind, rows.front());
+    const bool ok = editOrTell(
+        this, doc_, tr("Delete %1").arg(whatIsSelected(doc_->scene(), kind, rows)), [&](Scene& s) {
             switch (kind) {
                 case ItemKind::Sphere:
-                    s.spheres.erase(s.spheres.begin() + row);
-                    break;
+                    return eraseRows(s.spheres, rows);
                 case ItemKind::Light:
-                    s.lights.erase(s.lights.begin() + row);
-                    break;
+                    return eraseRows(s.lights, rows);
                 case ItemKind::Material:
-                    s.materials.erase(s.materials.begin() + row);
-                    break;
+                    return eraseRows(s.materials, rows);
             }
-        },
-        &error);
-    if (!ok) {
-        showRefusal(this, error);
-        return;
-    }
-    // The next item shown takes the deleted one's place, so repeated Delete
-    // walks the list (the filtered list, when there is a filter).
+        });
+    if (!ok) return;
+    // The next item shown takes the first deleted one's place, so repeated
+    // Delete walks the list (the filtered list, when there is a filter).
     Tab& t = tab(kind);
     const int next = std::min(shownBefore, t.shown->rowCount() - 1);
-    tabWidget_->setCurrentIndex(static_cast<int>(kind));
-    selectRow(kind, next < 0 ? -1 : t.shown->mapToSource(t.shown->index(next, 0)).row());
+    select(kind, next < 0 ? -1 : t.shown->mapToSource(t.shown->index(next, 0)).row());
 }
 
 void ScenePanel::renameItem(ItemKind kind) {
-    const int row = selectedRow(kind);
+    const int row = doc_->selection()->kind() == kind ? doc_->selection()->active() : -1;
     if (row < 0) return;
     Tab& t = tab(kind);
     tabWidget_->setCurrentIndex(static_cast<int>(kind));

@@ -32,7 +32,7 @@ SpherePage::SpherePage(SceneDocument* doc, QWidget* parent)
     setObjectName(QStringLiteral("spherePage"));
     QFormLayout* form = makeForm(this);
     auto sphere = [this](auto& s) { return itemAt(s.spheres, index_); };
-    const Locate locate = [this](const Scene&) { return index_; };
+    const Targets targets = [this](const Scene&) { return this->targets(); };
     auto text = [this](const QString& what) {
         return [this, what] { return tr("Change %1 of %2").arg(what, sphereName()); };
     };
@@ -43,12 +43,12 @@ SpherePage::SpherePage(SceneDocument* doc, QWidget* parent)
         return centreStep(sp ? sp->radius : 1.0);
     });
     form->addRow(tr("Centre:"),
-                 makeItemVectorRow<Sphere>(
-                     doc_, QStringLiteral("sphereCenter"), centre, locate,
+                 makeItemsVectorRow<Sphere>(
+                     doc_, QStringLiteral("sphereCenter"), centre, targets,
                      [](auto& sp) { return &sp.center; }, text(tr("centre")), fields_));
     form->addRow(tr("Radius:"),
-                 makeItemField<Sphere>(
-                     doc_, QStringLiteral("sphereRadius"), kLength, locate,
+                 makeItemsField<Sphere>(
+                     doc_, QStringLiteral("sphereRadius"), kLength, targets,
                      [](auto& sp) { return &sp.radius; }, text(tr("radius")), fields_));
     form->addRow(tr("Material:"), buildMaterialChoice());
     form->addRow(QString(), users_);  // "Shared by 3 spheres" says what it is
@@ -73,10 +73,13 @@ QWidget* SpherePage::buildMaterialChoice() {
     connect(material_, &QComboBox::currentIndexChanged, this, [this](int i) {
         if (i < 0 || i >= static_cast<int>(doc_->scene().materials.size())) return;
         const std::string material = doc_->scene().materials[i].name;
-        if (!editItemOrTell<Sphere>(this, doc_, index_,
-                                    tr("Change material of %1").arg(sphereName()),
-                                    [material](Sphere& sp) { sp.material = material; }))
+        QString error;
+        if (!doc_->editItems<Sphere>(
+                targets(), tr("Change material of %1").arg(sphereName()),
+                [material](Sphere& sp, int) { sp.material = material; }, &error)) {
+            showRefusal(this, error);
             refresh();
+        }
     });
     makeUnique_ = new QPushButton(tr("Make unique"));
     makeUnique_->setObjectName(QStringLiteral("sphereMakeUnique"));
@@ -106,8 +109,14 @@ int SpherePage::materialIndex(const Scene& scene) const {
     return sphere ? findMaterial(scene, sphere->material) : -1;
 }
 
+std::vector<int> SpherePage::targets() const {
+    return editTargets(*doc_, ItemKind::Sphere, index_);
+}
+
 QString SpherePage::sphereName() const {
-    return itemName(doc_->scene(), ItemKind::Sphere, index_);
+    const std::size_t others = targets().size() - 1;
+    const QString name = itemName(doc_->scene(), ItemKind::Sphere, index_);
+    return others == 0 ? name : tr("%1 and %n other sphere(s)", nullptr, int(others)).arg(name);
 }
 
 QString SpherePage::materialName() const {
@@ -117,7 +126,7 @@ QString SpherePage::materialName() const {
 void SpherePage::refresh() {
     const Sphere* sphere = itemAt(doc_->scene().spheres, index_);
     if (!sphere) return;
-    name_->setText(QString::fromStdString(sphere->name));
+    name_->setText(sphereName());
     refreshAll(fields_);
     refreshMaterialChoice(*sphere);
     materialRows_->refresh();
@@ -135,7 +144,11 @@ void SpherePage::refreshMaterialChoice(const Sphere& sphere) {
             for (const Material& m : scene.materials)
                 material_->addItem(QString::fromStdString(m.name));
         }
-        material_->setCurrentIndex(findMaterial(scene, sphere.material));
+        // Spheres of several materials show none until one is chosen for all.
+        bool mixed = false;
+        for (int i : targets()) mixed = mixed || scene.spheres[i].material != sphere.material;
+        material_->setPlaceholderText(tr("mixed"));
+        material_->setCurrentIndex(mixed ? -1 : findMaterial(scene, sphere.material));
     }
     const int users = spheresUsing(scene, sphere.material);
     users_->setText(users > 1 ? tr("Shared by %1 spheres").arg(users)

@@ -32,6 +32,9 @@ class SpherePage : public QWidget {
     QWidget* buildMaterialChoice();
     void refreshMaterialChoice(const Sphere& sphere);
     int materialIndex(const Scene& scene) const;  // of the shown sphere's material, or -1
+    // The shown sphere, then the others selected with it: what an edit changes.
+    std::vector<int> targets() const;
+    // "ball", or "ball and 3 other spheres" for an undo step's name.
     QString sphereName() const;
     QString materialName() const;
 

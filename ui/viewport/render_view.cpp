@@ -19,21 +19,18 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kClickSlop = 4;           // pixels a press may move and still be a click
 constexpr double kKeyOrbit = kPi / 36;  // 5 degrees per arrow key
-constexpr double kKeyWalk = 0.05;       // of the distance to look_at per W/A/S/D/Q/E
+constexpr double kKeyWalk = 0.05;       // of the distance to look_at per fly mode's W/A/S/D/Q/E
 
 struct CameraActionEntry {
     const char* name;
     QString text;
     QList<QKeySequence> keys;
     std::function<void()> run;
-    // Reset, Frame and Move also sit in the View menu, so they work from anywhere.
+    // Reset, Frame, Move, Scale, Box Select and Fly Mode also sit in the View
+    // menu, so they work from anywhere.
     Qt::ShortcutContext context = Qt::WidgetShortcut;
+    bool walk = false;  // a fly mode key: enabled in fly mode alone
 };
-
-// Where a sphere (its centre) or a light is.
-Vec3 itemPosition(const Scene& s, ItemKind kind, int index) {
-    return kind == ItemKind::Sphere ? s.spheres[index].center : s.lights[index].position;
-}
 
 QAction* addCameraAction(QWidget* view, const CameraActionEntry& e) {
     auto* action = new QAction(e.text, view);
@@ -55,6 +52,7 @@ RenderView::RenderView(SceneDocument* doc, QWidget* parent) : QWidget(parent), d
     buildCameraActions();
     // The overlay follows the camera at once; the picture follows when rendered.
     connect(doc_, &SceneDocument::sceneChanged, this, qOverload<>(&QWidget::update));
+    connect(doc_->selection(), &SceneSelection::changed, this, qOverload<>(&QWidget::update));
 }
 
 void RenderView::setFrame(const QImage& image, QSizeF shown) {
@@ -66,12 +64,6 @@ void RenderView::setFrame(const QImage& image, QSizeF shown) {
 void RenderView::setHomeCamera(const Camera& camera) {
     home_ = camera;
     pivot_.reset();
-}
-
-void RenderView::setSelection(ItemKind kind, int index) {
-    overlay_.selectedKind = kind;
-    overlay_.selectedIndex = index;
-    update();
 }
 
 QRect RenderView::imageRect() const {
@@ -88,7 +80,7 @@ void RenderView::paintEvent(QPaintEvent*) {
     // Scaled while a new frame is on its way: the old image, stretched, beats a blank.
     p.setRenderHint(QPainter::SmoothPixmapTransform, frame_.width() > imageRect().width());
     p.drawImage(QRectF(imageRect()), frame_, frameShown_);
-    paintViewOverlay(p, doc_->scene(), imageRect(), overlay_);
+    paintViewOverlay(p, doc_->scene(), imageRect(), *doc_->selection(), overlay_);
 }
 
 void RenderView::moveCamera(const QString& text, const Camera& camera, EditRun run) {
@@ -142,13 +134,27 @@ void RenderView::mousePressEvent(QMouseEvent* e) {
     setFocus();
     if (move_) {
         // Its release is then no click: dragButton_ stays empty.
-        finishMove(e->button() == Qt::LeftButton);
+        if (!move_->byDrag)
+            finishMove(e->button() == Qt::LeftButton);
+        else if (e->button() == Qt::RightButton)
+            finishMove(false);
+        return;
+    }
+    if (boxWaiting_ && e->button() != Qt::LeftButton) {
+        boxWaiting_ = false;
+        emit moveMessage({});
         return;
     }
     if (dragButton_ != Qt::NoButton) return;
     dragButton_ = e->button();
     pressPos_ = lastPos_ = e->position().toPoint();
     dragging_ = false;
+    // Alt+drag on a selected item moves the selection at once.
+    if (e->button() == Qt::LeftButton && e->modifiers().testFlag(Qt::AltModifier)) {
+        const auto [kind, index] = itemAt(e->position());
+        if (doc_->selection()->contains(kind, index) && beginGesture(Gesture::Move, true))
+            dragButton_ = Qt::NoButton;
+    }
 }
 
 void RenderView::mouseMoveEvent(QMouseEvent* e) {
@@ -157,11 +163,17 @@ void RenderView::mouseMoveEvent(QMouseEvent* e) {
     if (move_) {
         move_->pointer = pos;
         move_->snap = e->modifiers().testFlag(Qt::ControlModifier);
+        move_->drop = e->modifiers().testFlag(Qt::ShiftModifier);
         applyMove();
         return;
     }
     if (dragButton_ == Qt::NoButton) {
         updateHover(pos);
+        return;
+    }
+    if (boxWaiting_ && dragButton_ == Qt::LeftButton) {
+        overlay_.box = QRect(pressPos_, pos).normalized();
+        update();
         return;
     }
     if (!dragging_) {
@@ -196,8 +208,17 @@ void RenderView::mouseMoveEvent(QMouseEvent* e) {
 }
 
 void RenderView::mouseReleaseEvent(QMouseEvent* e) {
+    if (move_ && move_->byDrag && e->button() == Qt::LeftButton) return finishMove(true);
     if (e->button() != dragButton_) return;
     dragButton_ = Qt::NoButton;
+    if (boxWaiting_ && e->button() == Qt::LeftButton) {
+        boxWaiting_ = false;
+        const QRect box = std::exchange(overlay_.box, QRect());
+        emit moveMessage({});
+        update();
+        if (!box.isEmpty()) boxSelect(box, e->modifiers().testFlag(Qt::ShiftModifier));
+        return;
+    }
     if (dragging_) {
         dragging_ = false;
         overlay_.pivot.reset();
@@ -206,8 +227,7 @@ void RenderView::mouseReleaseEvent(QMouseEvent* e) {
         return;
     }
     if (e->button() != Qt::LeftButton) return;
-    const auto [kind, index] = itemAt(e->position());
-    emit picked(kind, index);
+    clickSelect(e->position(), e->modifiers().testFlag(Qt::ShiftModifier));
 }
 
 void RenderView::wheelEvent(QWheelEvent* e) {
@@ -227,36 +247,14 @@ void RenderView::resetCamera() {
 
 void RenderView::frameSelectedSphere() {
     const Scene& s = doc_->scene();
-    const int selected = overlay_.selectedIndex;
-    if (overlay_.selectedKind != ItemKind::Sphere || selected < 0 ||
+    const int selected = doc_->selection()->active();
+    if (doc_->selection()->kind() != ItemKind::Sphere || selected < 0 ||
         selected >= int(s.spheres.size()))
         return;
     const Sphere& sp = s.spheres[selected];
     pivot_ = sp.center;
     moveCamera(tr("Frame %1").arg(QString::fromStdString(sp.name)),
                frameSphere(s.camera, sp.center, sp.radius), EditRun::Separate);
-}
-
-bool RenderView::startMove() {
-    const Scene& s = doc_->scene();
-    const ItemKind kind = overlay_.selectedKind;
-    const int index = overlay_.selectedIndex;
-    if (move_ || dragButton_ != Qt::NoButton || kind == ItemKind::Material || index < 0 ||
-        index >= itemCount(s, kind))
-        return false;
-    const Vec3 start = itemPosition(s, kind, index);
-    // The pointer grabs where it is; started from the menu, outside the view,
-    // it grabs the item's centre.
-    const QRect r = imageRect();
-    QPoint pointer = pointer_;
-    if (!rect().contains(pointer))
-        pointer = widgetPoint(s, r, start).value_or(r.center()).toPoint();
-    move_ = ItemMove{kind, index, start, imagePoint(s, r, pointer), pointer, {}, {}, false, false};
-    overlay_.hoverText.clear();
-    setFocus();
-    emit moveMessage(moveText(Vec3(0.0)));
-    update();
-    return true;
 }
 
 std::optional<Vec3> RenderView::restingSpotUnderPointer(double radius) const {
@@ -269,135 +267,36 @@ std::optional<Vec3> RenderView::restingSpotUnderPointer(double radius) const {
     return restingCentre(s.spheres[pick->sphere], pick->point, radius);
 }
 
-Vec3 RenderView::moveOffset() const {
-    const ItemMove& m = *move_;
-    if (!m.typed.isEmpty()) {
-        Vec3 unit(0.0);
-        unit[m.axis.value_or(0)] = 1;
-        bool number = false;
-        const double distance = m.typed.toDouble(&number);
-        return number ? unit * distance : Vec3(0.0);
-    }
-    const Scene& s = doc_->scene();
-    const QPointF to = imagePoint(s, imageRect(), m.pointer);
-    const Vec3 offset = viewMoveOffset(s.camera, s.render.width, s.render.height, m.start,
-                                       {m.from.x(), m.from.y()}, {to.x(), to.y()}, m.axis);
-    return m.snap ? snapToGrid(offset, kMoveGrid) : offset;
-}
-
-QString RenderView::moveStepName(const ItemMove& m) const {
-    return tr("Move %1").arg(itemName(doc_->scene(), m.kind, m.index));
-}
-
-void RenderView::setItemPosition(const ItemMove& m, const Vec3& position) {
-    const QString text = moveStepName(m);
-    if (m.kind == ItemKind::Sphere)
-        doc_->editItem<Sphere>(m.index, text, [&](Sphere& sphere) { sphere.center = position; });
-    else
-        doc_->editItem<Light>(m.index, text, [&](Light& light) { light.position = position; });
-}
-
-void RenderView::applyMove() {
-    ItemMove& m = *move_;
-    const Vec3 offset = moveOffset();
-    const Vec3 position = m.start + offset;
-    if (!m.recorded) {
-        // No step for a move that never moved.
-        if (position == m.start) {
-            emit moveMessage(moveText(offset));
-            return;
-        }
-        doc_->beginGesture(moveStepName(m));
-        m.recorded = true;
-    }
-    setItemPosition(m, position);
-    emit moveMessage(moveText(offset));
-}
-
-void RenderView::finishMove(bool keep) {
-    const ItemMove m = *move_;
-    move_.reset();
-    if (m.recorded) {
-        const Vec3 now = itemPosition(doc_->scene(), m.kind, m.index);
-        // Kept where it started, a move leaves no step either.
-        if (keep && now != m.start) {
-            doc_->endGesture();
-        } else {
-            setItemPosition(m, m.start);
-            doc_->discardGesture();
-        }
-    }
-    emit moveMessage({});
-    emit moveFinished();
-    update();
-}
-
-QString RenderView::moveText(const Vec3& offset) const {
-    const ItemMove& m = *move_;
-    static const char* const kAxes[] = {"X", "Y", "Z"};
-    const QString along = m.axis ? tr(" along %1").arg(QLatin1String(kAxes[*m.axis])) : QString();
-    const QString typed = m.typed.isEmpty() ? QString() : tr(" (typed %1)").arg(m.typed);
-    return tr("%1 by %2, %3, %4%5%6. X, Y, Z: along an axis; type a distance; "
-              "Ctrl: snap to %7; Enter or click: done; Esc or right click: cancel")
-        .arg(moveStepName(m))
-        .arg(offset.x, 0, 'g', 4)
-        .arg(offset.y, 0, 'g', 4)
-        .arg(offset.z, 0, 'g', 4)
-        .arg(along, typed)
-        .arg(kMoveGrid);
-}
-
 bool RenderView::event(QEvent* e) {
-    // During a move every key is the move's (X, a digit, Escape), not a shortcut's.
-    if (move_ && e->type() == QEvent::ShortcutOverride) {
-        e->accept();
-        return true;
+    // During a gesture or a box every key is its own (X, a digit, Escape), not
+    // a shortcut's; in fly mode the walk keys and Escape are.
+    if (e->type() == QEvent::ShortcutOverride) {
+        const int key = static_cast<QKeyEvent*>(e)->key();
+        static const QList<int> flyKeys = {Qt::Key_W, Qt::Key_A, Qt::Key_S,     Qt::Key_D,
+                                           Qt::Key_Q, Qt::Key_E, Qt::Key_Escape};
+        if (move_ || (boxWaiting_ && key == Qt::Key_Escape) || (flying_ && flyKeys.contains(key))) {
+            e->accept();
+            return true;
+        }
     }
     return QWidget::event(e);
 }
 
 void RenderView::keyPressEvent(QKeyEvent* e) {
-    if (!move_) {
-        QWidget::keyPressEvent(e);
-        return;
+    if (move_) return gestureKey(e);
+    if (boxWaiting_ && e->key() == Qt::Key_Escape) {
+        boxWaiting_ = false;
+        overlay_.box = QRect();
+        emit moveMessage({});
+        return update();
     }
-    ItemMove& m = *move_;
-    const QString text = e->text();
-    switch (e->key()) {
-        case Qt::Key_Escape:
-            finishMove(false);
-            return;
-        case Qt::Key_Return:
-        case Qt::Key_Enter:
-            finishMove(true);
-            return;
-        case Qt::Key_X:
-        case Qt::Key_Y:
-        case Qt::Key_Z: {
-            const int axis = e->key() - Qt::Key_X;
-            m.axis = m.axis == axis ? std::nullopt : std::optional<int>(axis);
-            break;
-        }
-        case Qt::Key_Backspace:
-            m.typed.chop(1);
-            break;
-        case Qt::Key_Minus:
-            // As in Blender: the sign of what is typed, at any time.
-            m.typed = m.typed.startsWith('-') ? m.typed.mid(1) : QStringLiteral("-") + m.typed;
-            break;
-        case Qt::Key_Control:
-            m.snap = true;
-            break;
-        default:
-            if (text.size() != 1 || !(text[0].isDigit() || text[0] == '.')) return;
-            m.typed += text;
-    }
-    applyMove();
+    if (flying_) return flyKey(e);
+    QWidget::keyPressEvent(e);
 }
 
 void RenderView::keyReleaseEvent(QKeyEvent* e) {
-    if (move_ && e->key() == Qt::Key_Control) {
-        move_->snap = false;
+    if (move_ && (e->key() == Qt::Key_Control || e->key() == Qt::Key_Shift)) {
+        (e->key() == Qt::Key_Control ? move_->snap : move_->drop) = false;
         applyMove();
         return;
     }
@@ -428,12 +327,12 @@ void RenderView::buildCameraActions() {
         {"orbitRight", tr("Orbit Right"), {Qt::Key_Right}, turn(-kKeyOrbit, 0)},
         {"orbitUp", tr("Orbit Up"), {Qt::Key_Up}, turn(0, kKeyOrbit)},
         {"orbitDown", tr("Orbit Down"), {Qt::Key_Down}, turn(0, -kKeyOrbit)},
-        {"walkForward", tr("Walk Forward"), {Qt::Key_W}, walkBy(0, 0, kKeyWalk)},
-        {"walkBack", tr("Walk Back"), {Qt::Key_S}, walkBy(0, 0, -kKeyWalk)},
-        {"walkLeft", tr("Walk Left"), {Qt::Key_A}, walkBy(-kKeyWalk, 0, 0)},
-        {"walkRight", tr("Walk Right"), {Qt::Key_D}, walkBy(kKeyWalk, 0, 0)},
-        {"walkUp", tr("Rise"), {Qt::Key_E}, walkBy(0, kKeyWalk, 0)},
-        {"walkDown", tr("Sink"), {Qt::Key_Q}, walkBy(0, -kKeyWalk, 0)},
+        {"walkForward", tr("Fly Forward"), {Qt::Key_W}, walkBy(0, 0, kKeyWalk), {}, true},
+        {"walkBack", tr("Fly Back"), {Qt::Key_S}, walkBy(0, 0, -kKeyWalk), {}, true},
+        {"walkLeft", tr("Fly Left"), {Qt::Key_A}, walkBy(-kKeyWalk, 0, 0), {}, true},
+        {"walkRight", tr("Fly Right"), {Qt::Key_D}, walkBy(kKeyWalk, 0, 0), {}, true},
+        {"walkUp", tr("Rise"), {Qt::Key_E}, walkBy(0, kKeyWalk, 0), {}, true},
+        {"walkDown", tr("Sink"), {Qt::Key_Q}, walkBy(0, -kKeyWalk, 0), {}, true},
         {"zoomIn",
          tr("Zoom In"),
          {Qt::Key_Plus, Qt::Key_Equal},
@@ -452,27 +351,62 @@ void RenderView::buildCameraActions() {
          {Qt::Key_G},
          [this] { startMove(); },
          Qt::WindowShortcut},
+        {"scaleSelected",
+         tr("Scale Selected Spheres"),
+         {Qt::Key_S},
+         [this] { startScale(); },
+         Qt::WindowShortcut},
+        {"boxSelect",
+         tr("Box Select"),
+         {Qt::Key_B},
+         [this] { startBoxSelect(); },
+         Qt::WindowShortcut},
+        {"flyMode",
+         tr("Fly Mode"),
+         // Shift+` arrives as ~ with or without Shift, by keyboard layout.
+         {QKeySequence(Qt::SHIFT | Qt::Key_QuoteLeft), QKeySequence(Qt::SHIFT | Qt::Key_AsciiTilde),
+          QKeySequence(Qt::Key_AsciiTilde)},
+         [this] { setFlying(!flying_); },
+         Qt::WindowShortcut},
         {"frameSelected",
          tr("Frame Selected Sphere"),
          {Qt::Key_F},
          [this] { frameSelectedSphere(); },
          Qt::WindowShortcut},
     };
-    for (const CameraActionEntry& e : entries) cameraActions_.push_back(addCameraAction(this, e));
+    for (const CameraActionEntry& e : entries) {
+        QAction* action = addCameraAction(this, e);
+        cameraActions_.push_back(action);
+        if (!e.walk) continue;
+        action->setEnabled(false);
+        walkActions_.push_back(action);
+    }
 }
 
 QList<QPair<QString, QString>> RenderView::mouseControls() {
-    return {{tr("Left drag"), tr("Orbit the camera about the point where the drag starts")},
-            {tr("Right or middle drag"), tr("Pan the camera")},
-            {tr("Wheel"), tr("Move the camera nearer to or farther from what is under the cursor")},
-            {tr("Click"), tr("Select the sphere or light under the cursor")},
-            {tr("G, then move"), tr("Move the selected sphere or light with the pointer")},
-            {tr("X, Y or Z while moving"), tr("Move along that axis only; again: freely")},
-            {tr("A number while moving"), tr("Move by exactly that much (G X 2 Enter)")},
-            {tr("Ctrl while moving"), tr("Snap the move to steps of %1").arg(kMoveGrid)},
-            {tr("Click or Enter while moving"), tr("Keep the move, one undo step")},
-            {tr("Esc or right click while moving"), tr("Put it back where it was")},
-            {tr("Hover"), tr("Show the name of the sphere or light under the cursor")}};
+    return {
+        {tr("Left drag"), tr("Orbit the camera about the point where the drag starts")},
+        {tr("Right or middle drag"), tr("Pan the camera")},
+        {tr("Wheel"), tr("Move the camera nearer to or farther from what is under the cursor")},
+        {tr("Click"), tr("Select the sphere or light under the cursor")},
+        {tr("Shift+click"), tr("Add it to the selection, or take it out")},
+        {tr("B, then drag"),
+         tr("Select the spheres (or lights) inside the box; Shift: add to the selection")},
+        {tr("G, then move"), tr("Move the selected spheres or lights with the pointer")},
+        {tr("Alt+drag on a selected sphere"), tr("Move the selection; let go to keep it")},
+        {tr("X, Y or Z while moving"), tr("Move along that axis only; again: freely")},
+        {tr("A number while moving"), tr("Move by exactly that much (G X 2 Enter)")},
+        {tr("Ctrl while moving"), tr("Snap the move to steps of %1").arg(kMoveGrid)},
+        {tr("Shift while moving"),
+         tr("Drop the sphere onto what is under the pointer: on the floor, or touching a ball")},
+        {tr("S, then move"),
+         tr("Scale the selected spheres' radii: away from their middle grows them")},
+        {tr("A number while scaling"), tr("Scale by exactly that factor (S 2 Enter)")},
+        {tr("Click or Enter while moving or scaling"), tr("Keep it, one undo step")},
+        {tr("Esc or right click while moving or scaling"), tr("Put it back where it was")},
+        {tr("W/A/S/D/E/Q in fly mode (Shift+`)"),
+         tr("Fly forward, left, back, right, up, down; Esc leaves fly mode")},
+        {tr("Hover"), tr("Show the name of the sphere or light under the cursor")}};
 }
 
 }  // namespace whitted::ui

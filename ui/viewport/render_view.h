@@ -15,13 +15,26 @@
 // than half a second apart, is one undo step. Over the picture the view draws
 // the selection, the lights and the name under the cursor (view_overlay.h).
 //
-// G moves the selected sphere or light with the pointer, as in Blender: in the
-// plane through it facing the camera, the point grabbed staying under the
+// Left drag orbits, but Alt+left drag on a selected item moves the selection
+// (as G does, kept on release). Click selects what is under the pointer,
+// Shift+click adds it to the selection or takes it out; B, then a drag,
+// selects the spheres and lights inside the box (Shift: adds to the selection).
+//
+// G moves the selection with the pointer, as in Blender: in the plane through
+// the active item facing the camera, the point grabbed staying under the
 // pointer; X, Y or Z constrains it to that world axis (again: free again); a
 // typed number moves it by exactly that much along the axis (X when none);
-// Ctrl snaps the offset to a grid of kMoveGrid. A click or Enter keeps the
-// move, one undo step; Escape or a right click puts the item back exactly and
-// leaves no step. While it lasts every key is the move's, not a shortcut's.
+// Ctrl snaps the offset to a grid of kMoveGrid; Shift drops a sphere onto what
+// is under the pointer (resting on the floor or touching a ball). S scales the
+// selected spheres' radii by how far the pointer is from their middle on
+// screen against where it started (a typed number: by that factor; Ctrl: in
+// steps of 0.1). A click or Enter keeps the change, one undo step; Escape or a
+// right click puts everything back exactly and leaves no step. While it lasts
+// every key is the gesture's, not a shortcut's.
+//
+// Shift+` enters fly mode, where W/S go forward and back, A/D left and right,
+// E/Q up and down (Blender's walk keys, kept out of the way of its A, S and
+// G); Escape or Shift+` again leaves it.
 #pragma once
 
 #include <QAction>
@@ -31,7 +44,9 @@
 #include <QPoint>
 #include <QWidget>
 
+#include <functional>
 #include <optional>
+#include <vector>
 
 #include "document/scene_document.h"
 #include "scene/scene.h"
@@ -51,22 +66,28 @@ class RenderView : public QWidget {
 
     // The camera Home returns to: the scene's camera as it was opened or saved.
     void setHomeCamera(const Camera& camera);
-    // What the scene panel selects: outlined (a sphere) or ringed (a light) in
-    // the view; a sphere is what F frames. Index -1 for none.
-    void setSelection(ItemKind kind, int index);
 
     // Camera moves called directly (menus, toolbar, the key actions).
     void resetCamera();
     void frameSelectedSphere();
 
-    // Starts moving the selected sphere or light with the pointer (G); false,
-    // and nothing, when neither is selected.
+    // Starts moving the selected spheres or lights with the pointer (G);
+    // false, and nothing, when none is selected.
     bool startMove();
+    // Starts scaling the selected spheres' radii with the pointer (S); false,
+    // and nothing, when no sphere is selected.
+    bool startScale();
+    // Waits for a drag that selects what lies inside its box (B).
+    void startBoxSelect();
+    bool flying() const { return flying_; }
+    void setFlying(bool on);
     // Where a sphere of `radius` added at the pointer goes: resting on the
     // surface under it (the floor, a ball); nothing when the pointer is not
     // over the picture or sees only the sky.
     std::optional<Vec3> restingSpotUnderPointer(double radius) const;
     bool moving() const { return move_.has_value(); }
+    // The factor S keeps to: how many times each radius is multiplied by.
+    static constexpr double kScaleSnap = 0.1;
     // The grid Ctrl snaps a move to, in scene units.
     static constexpr double kMoveGrid = 0.1;
 
@@ -92,7 +113,7 @@ class RenderView : public QWidget {
     // What a move in progress does and which keys it takes, for the status
     // bar; empty when the move ends.
     void moveMessage(const QString& text);
-    // A move ended, kept or put back.
+    // A move or scale ended, kept or put back.
     void moveFinished();
 
   protected:
@@ -118,25 +139,44 @@ class RenderView : public QWidget {
     Vec3 keyPivot() const;
     void updateHover(const QPoint& pos);
 
-    // A move in progress (G): what moves, from where, and how.
+    // A move (G) or scale (S) in progress: what changes, from what, and how.
+    enum class Gesture { Move, Scale };
     struct ItemMove {
+        Gesture gesture;
         ItemKind kind;
-        int index;
-        Vec3 start;               // the item's position before the move, restored by Escape
-        QPointF from;             // the image point the pointer grabbed
-        QPoint pointer;           // where the pointer is now, in the widget
-        std::optional<int> axis;  // 0 x, 1 y, 2 z; none: the plane facing the camera
-        QString typed;            // a distance typed during the move
-        bool snap = false;        // Ctrl held
-        bool recorded = false;    // the gesture has begun: the item has moved
+        std::vector<int> indices;   // the selection's, ascending
+        std::vector<Vec3> starts;   // each item's position before, restored by Escape
+        std::vector<double> radii;  // each sphere's radius before (a scale)
+        Vec3 anchor;                // the active item's position, which the pointer drags
+        QPointF from;               // the image point the pointer grabbed
+        QPointF grabbed;            // the same in the widget
+        QPoint pointer;             // where the pointer is now, in the widget
+        QPointF middle;             // a scale's centre on screen, in the widget
+        std::optional<int> axis;    // 0 x, 1 y, 2 z; none: the plane facing the camera
+        QString typed;              // a distance or factor typed during the gesture
+        bool snap = false;          // Ctrl held
+        bool drop = false;          // Shift held: onto what is under the pointer
+        bool byDrag = false;        // Alt+drag: kept when the button is released
+        bool recorded = false;      // the gesture has begun: something has changed
     };
+    bool beginGesture(Gesture gesture, bool byDrag);
     Vec3 moveOffset() const;
+    std::optional<Vec3> dropOffset() const;
+    double scaleFactor() const;
     void applyMove();
-    void setItemPosition(const ItemMove& move, const Vec3& position);
+    void setPositions(const ItemMove& move, const std::function<Vec3(int k)>& position);
+    void setRadii(const ItemMove& move, const std::function<double(int k)>& radius);
+    void putBack(const ItemMove& move);
+    bool changedSinceStart(const ItemMove& move) const;
     void finishMove(bool keep);
-    // The undo step's name, "Move blue ball".
+    void gestureKey(QKeyEvent* e);
+    // The undo step's name, "Move blue ball", "Scale 3 spheres".
     QString moveStepName(const ItemMove& move) const;
-    QString moveText(const Vec3& offset) const;
+    QString moveText() const;
+    // Click and box selection.
+    void clickSelect(const QPointF& pos, bool toggle);
+    void boxSelect(const QRect& box, bool add);
+    void flyKey(QKeyEvent* e);
 
     SceneDocument* doc_;
     QImage frame_;
@@ -149,6 +189,9 @@ class RenderView : public QWidget {
     bool dragging_ = false;
     QPoint pointer_{-1, -1};  // the pointer's last place in the view
     std::optional<ItemMove> move_;
+    bool boxWaiting_ = false;  // B pressed: the next left drag draws a box
+    bool flying_ = false;
+    QList<QAction*> walkActions_;  // enabled in fly mode alone
     QList<QAction*> cameraActions_;
 };
 

@@ -17,14 +17,16 @@ namespace {
 
 constexpr double kMarkerRadius = 6;  // pixels; a click within kMarkerReach selects
 constexpr double kMarkerReach = 10;
-const QColor kSelection(255, 160, 30);  // one colour for "selected", outline and marker ring
+const QColor kSelection(255, 160, 30);    // one colour for "selected", outline and marker ring
+const QColor kAlsoSelected(215, 95, 15);  // the others of a selection, as Blender's darker orange
 
 QPointF toWidget(const Scene& scene, const QRect& r, const ImagePoint& p) {
     return {r.left() + p.x * r.width() / scene.render.width,
             r.top() + p.y * r.height() / scene.render.height};
 }
 
-void paintSphereOutline(QPainter& painter, const Scene& scene, const QRect& r, const Sphere& s) {
+void paintSphereOutline(QPainter& painter, const Scene& scene, const QRect& r, const Sphere& s,
+                        const QColor& colour) {
     QPainterPath path;
     for (const auto& piece :
          sphereOutline(scene.camera, scene.render.width, scene.render.height, s.center, s.radius)) {
@@ -35,8 +37,35 @@ void paintSphereOutline(QPainter& painter, const Scene& scene, const QRect& r, c
     painter.setBrush(Qt::NoBrush);
     painter.setPen(QPen(QColor(0, 0, 0, 160), 4));
     painter.drawPath(path);
-    painter.setPen(QPen(kSelection, 2));
+    painter.setPen(QPen(colour, 2));
     painter.drawPath(path);
+}
+
+void paintSelectedSpheres(QPainter& painter, const Scene& scene, const QRect& r,
+                          const SceneSelection& selection) {
+    const int active = selection.active();
+    if (selection.count() <= kMostOutlines) {
+        for (int i : selection.indices())
+            if (i != active) paintSphereOutline(painter, scene, r, scene.spheres[i], kAlsoSelected);
+    } else {
+        QPolygonF dots;
+        dots.reserve(selection.count());
+        for (int i : selection.indices())
+            if (const auto at = projectToImage(scene.camera, scene.render.width,
+                                               scene.render.height, scene.spheres[i].center))
+                dots.append(toWidget(scene, r, *at));
+        painter.setPen(QPen(kAlsoSelected, 3, Qt::SolidLine, Qt::RoundCap));
+        painter.drawPoints(dots);
+    }
+    if (active >= 0) paintSphereOutline(painter, scene, r, scene.spheres[active], kSelection);
+}
+
+void paintBox(QPainter& painter, const QRect& box) {
+    painter.setBrush(QColor(255, 255, 255, 30));
+    painter.setPen(QPen(QColor(0, 0, 0, 160), 1));
+    painter.drawRect(box);
+    painter.setPen(QPen(Qt::white, 1, Qt::DashLine));
+    painter.drawRect(box);
 }
 
 // Where a light's marker goes: on the light when the picture shows it, else at
@@ -135,21 +164,20 @@ QPointF imagePoint(const Scene& scene, const QRect& imageRect, const QPointF& wi
 }
 
 void paintViewOverlay(QPainter& painter, const Scene& scene, const QRect& imageRect,
-                      const ViewOverlay& overlay) {
+                      const SceneSelection& selection, const ViewOverlay& overlay) {
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing);
     painter.setClipRect(imageRect);
-    const int selected = overlay.selectedIndex;
-    if (overlay.selectedKind == ItemKind::Sphere && selected >= 0 &&
-        selected < int(scene.spheres.size()))
-        paintSphereOutline(painter, scene, imageRect, scene.spheres[selected]);
+    if (selection.kind() == ItemKind::Sphere)
+        paintSelectedSpheres(painter, scene, imageRect, selection);
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-        const bool isSelected = overlay.selectedKind == ItemKind::Light && selected == int(i);
+        const bool isSelected = selection.contains(ItemKind::Light, int(i));
         paintLightMarker(painter, lightMarkerPlace(scene, imageRect, scene.lights[i].position),
                          scene.lights[i], isSelected);
     }
     if (overlay.pivot)
         if (const auto at = widgetPoint(scene, imageRect, *overlay.pivot)) paintPivot(painter, *at);
+    if (!overlay.box.isEmpty()) paintBox(painter, overlay.box);
     painter.setClipping(false);
     if (!overlay.hoverText.isEmpty())
         paintHoverLabel(painter, painter.window(), overlay.hoverText, overlay.hoverPos);

@@ -1,4 +1,5 @@
-// What the render view draws over the picture: the selected sphere's outline,
+// What the render view draws over the picture: the selected spheres' outlines
+// (the active one brighter; dots at their centres past kMostOutlines),
 // a marker for each light (lights have no surface to see; one outside the
 // picture sits at its edge with an arrow towards it), the orbit's pivot
 // while dragging, and the name of what is under the cursor. Positions come
@@ -20,16 +21,18 @@ class QPainter;
 namespace whitted::ui {
 
 struct ViewOverlay {
-    ItemKind selectedKind = ItemKind::Sphere;
-    int selectedIndex = -1;     // -1: nothing selected
     std::optional<Vec3> pivot;  // the orbit's pivot, drawn while a drag turns about it
     QString hoverText;          // empty: nothing under the cursor
     QPoint hoverPos;
+    QRect box;  // the box being dragged out to select with (B); empty: none
 };
+
+// Outlines cost a polygon each: a selection of more spheres shows dots.
+inline constexpr int kMostOutlines = 2000;
 
 // Draws the overlay for `scene` seen in `imageRect` (the picture's place in the widget).
 void paintViewOverlay(QPainter& painter, const Scene& scene, const QRect& imageRect,
-                      const ViewOverlay& overlay);
+                      const SceneSelection& selection, const ViewOverlay& overlay);
 
 // The light whose marker covers widget point `pos` (the nearest if several), or -1.
 int lightMarkerAt(const Scene& scene, const QRect& imageRect, const QPointF& pos);

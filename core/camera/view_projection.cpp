@@ -2,15 +2,18 @@
 
 #include <cmath>
 
+#include <glm/common.hpp>
+
 #include <glm/geometric.hpp>
 
 #include "tracer/camera.h"
 
 namespace whitted {
 
-std::optional<ImagePoint> projectToImage(const Camera& camera, int width, int height,
-                                         const Vec3& p) {
-    const CameraBasis<double> b = makeCameraBasis<double>(camera, width, height);
+namespace {
+
+std::optional<ImagePoint> projectWith(const CameraBasis<double>& b, int width, int height,
+                                      const Vec3& p) {
     const Vec3 d = p - b.origin;
     const double depth = glm::dot(d, b.forward);
     // A point on or behind the eye's plane has no image (its direction leaves the view).
@@ -18,6 +21,26 @@ std::optional<ImagePoint> projectToImage(const Camera& camera, int width, int he
     const double x = glm::dot(d, b.right) / depth / (b.tanHalfFov * b.aspect);
     const double y = glm::dot(d, b.up) / depth / b.tanHalfFov;
     return ImagePoint{(x + 1) / 2 * width, (1 - y) / 2 * height};
+}
+
+}  // namespace
+
+std::optional<ImagePoint> projectToImage(const Camera& camera, int width, int height,
+                                         const Vec3& p) {
+    return projectWith(makeCameraBasis<double>(camera, width, height), width, height, p);
+}
+
+std::vector<int> spheresCentredIn(const Camera& camera, int width, int height,
+                                  const std::vector<Sphere>& spheres, ImagePoint a, ImagePoint b) {
+    const CameraBasis<double> basis = makeCameraBasis<double>(camera, width, height);
+    const ImagePoint low = glm::min(a, b), high = glm::max(a, b);
+    std::vector<int> inside;
+    for (std::size_t i = 0; i < spheres.size(); ++i) {
+        const auto p = projectWith(basis, width, height, spheres[i].center);
+        if (p && p->x >= low.x && p->x <= high.x && p->y >= low.y && p->y <= high.y)
+            inside.push_back(static_cast<int>(i));
+    }
+    return inside;
 }
 
 std::vector<std::vector<ImagePoint>> sphereOutline(const Camera& camera, int width, int height,

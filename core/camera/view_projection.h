@@ -19,6 +19,13 @@ using ImagePoint = glm::dvec2;  // pixels of the render size, x right, y down, c
 std::optional<ImagePoint> projectToImage(const Camera& camera, int width, int height,
                                          const Vec3& p);
 
+// The indices of the spheres whose centres are seen inside the image box with
+// corners `a` and `b` (any two opposite ones), in ascending order: what a box
+// drawn over the picture selects. One camera basis for all: a million spheres
+// took 90 ms one projectToImage at a time.
+std::vector<int> spheresCentredIn(const Camera& camera, int width, int height,
+                                  const std::vector<Sphere>& spheres, ImagePoint a, ImagePoint b);
+
 // The sphere's outline as the camera sees it (the circle where the eye's lines
 // of sight touch it), as polylines in image points: one closed loop when all of
 // it is in front of the eye, pieces when part is behind (a huge floor's horizon),

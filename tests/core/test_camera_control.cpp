@@ -182,6 +182,15 @@ TEST(CameraControl, PickSurfaceGivesThePointOnTheNearestSphere) {
     expectNear(pick->point, {0, 0, -1}, 1e-12);
 }
 
+// Looking through the spheres being moved: the one behind them is picked.
+TEST(CameraControl, PickSurfaceLooksThroughTheIgnoredSpheres) {
+    const Scene s = twoOnTheAxis();
+    const auto pick = pickSurface(s, 50, 50, {1});
+    ASSERT_TRUE(pick.has_value());
+    EXPECT_EQ(pick->sphere, 0);
+    EXPECT_FALSE(pickSurface(s, 50, 50, {0, 1}).has_value());
+}
+
 // The pick tests only the spheres near the ray; it must answer exactly as the
 // tracer's intersection over the whole scene does, ties and nested spheres included.
 TEST(CameraControl, PickSurfaceEqualsTheWholeSceneIntersection) {

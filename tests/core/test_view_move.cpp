@@ -91,5 +91,27 @@ TEST(ViewMove, SnapToGrid_RoundsEachComponentToTheStep) {
     EXPECT_EQ(snapToGrid({0.74, 0, 0}, 0.5), Vec3(0.5, 0, 0));
 }
 
+// A box drawn over the picture selects the spheres whose centres it holds:
+// facing +z from 10 away, 60 degrees high, x = 0 is the image's middle column
+// (100) and a centre at x = 1 on the plane z = 0 lies 100 / 11.547 = 8.66
+// pixels to its right.
+TEST(ViewMove, SpheresCentredIn_TheBoxHoldsTheCentresSeenInsideIt) {
+    std::vector<Sphere> spheres = {{"middle", {0, 0, 0}, 0.5, "m"},
+                                   {"right", {1, 0, 0}, 0.5, "m"},
+                                   {"left", {-1, 0, 0}, 0.5, "m"},
+                                   {"behind", {0, 0, -20}, 0.5, "m"}};
+    // 100 to 108.5: the middle only; to 108.7: the right one too (8.66 px).
+    EXPECT_EQ(spheresCentredIn(kFacingZ, kMoveViewWidth, kMoveViewHeight, spheres, {100, 40},
+                               {108.5, 60}),
+              std::vector<int>({0}));
+    EXPECT_EQ(
+        spheresCentredIn(kFacingZ, kMoveViewWidth, kMoveViewHeight, spheres, {108.7, 60}, {95, 40}),
+        std::vector<int>({0, 1}));
+    // The whole picture: all but the one behind the eye.
+    EXPECT_EQ(spheresCentredIn(kFacingZ, kMoveViewWidth, kMoveViewHeight, spheres, {0, 0},
+                               {kMoveViewWidth, kMoveViewHeight}),
+              std::vector<int>({0, 1, 2}));
+}
+
 }  // namespace
 }  // namespace whitted

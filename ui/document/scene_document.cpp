@@ -129,7 +129,10 @@ std::optional<SceneProblem> validateItemEdit(const Scene& after, std::size_t ind
 class SceneEditCommand : public QUndoCommand {
   public:
     SceneEditCommand(SceneDocument* doc, SceneDelta delta, const QString& text, EditRun run)
-        : QUndoCommand(text), doc_(doc), delta_(std::move(delta)) {
+        : QUndoCommand(text),
+          doc_(doc),
+          delta_(std::move(delta)),
+          selectionBefore_(doc->selection_.snapshot()) {
         joinable_ = run == EditRun::Join && delta_.headOnly();
         sinceLast_.start();
     }
@@ -137,6 +140,7 @@ class SceneEditCommand : public QUndoCommand {
     void undo() override {
         doc_->runOpen_ = false;
         doc_->applyDelta(delta_, false);
+        doc_->selection_.restore(selectionBefore_);
     }
     void redo() override {
         if (pushed_) doc_->runOpen_ = false;
@@ -159,6 +163,7 @@ class SceneEditCommand : public QUndoCommand {
   private:
     SceneDocument* doc_;
     SceneDelta delta_;
+    SceneSelection::Snapshot selectionBefore_;  // the scene is as it was then after an undo
     bool joinable_ = false;
     bool pushed_ = false;
     QElapsedTimer sinceLast_;

@@ -41,6 +41,16 @@ class SceneSelection : public QObject {
     void toggle(ItemKind kind, int index);
     void clear() { set(kind_, {}); }
 
+    // The whole selection as a value: undo puts back the one an edit found,
+    // so that undoing a delete selects what comes back.
+    struct Snapshot {
+        ItemKind kind = ItemKind::Sphere;
+        std::vector<int> indices;
+        int active = -1;
+    };
+    Snapshot snapshot() const { return {kind_, indices_, active_}; }
+    void restore(const Snapshot& s) { set(s.kind, s.indices, s.active); }
+
     // Called by the document around a change that adds, removes, renames or
     // reorders items: the names before, and the scene after.
     void rememberNames(const Scene& before);

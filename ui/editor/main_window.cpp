@@ -60,7 +60,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     // panels and the rest refresh (a few ms on a scene of 100,000 spheres).
     connect(&doc_, &SceneDocument::sceneChanged, this, &MainWindow::requestRender);
     connect(&quality_, &QualityChoice::changed, this, &MainWindow::requestRender);
-    const auto predict = [this] { predictor_.sceneChanged(doc_.scene(), quality_.target()); };
+    // Predicted once the scene rests: a move with the pointer changes it at
+    // every event, and each prediction took a core from the render.
+    predictPause_.setSingleShot(true);
+    predictPause_.setInterval(kPredictPauseMs);
+    connect(&predictPause_, &QTimer::timeout, this,
+            [this] { predictor_.sceneChanged(doc_.scene(), quality_.target()); });
+    const auto predict = [this] { predictPause_.start(); };
     connect(&doc_, &SceneDocument::sceneChanged, this, predict);
     connect(&quality_, &QualityChoice::changed, this, predict);
     // Before the Render tab refreshes: the renders' times are of the old content.

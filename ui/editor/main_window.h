@@ -10,6 +10,7 @@
 #include <QLabel>
 #include <QMainWindow>
 #include <QPointer>
+#include <QTimer>
 
 #include <cstdint>
 #include <memory>
@@ -152,6 +153,8 @@ class MainWindow : public QMainWindow {
     QualityChoice quality_;
     PlanMemo plans_;  // made once for the view, its prediction and an export alike
     ProbePredictor predictor_{plans_};  // the Render tab's predictions for scenes never measured
+    QTimer predictPause_;               // asks predictor_ once edits pause this long
+    static constexpr int kPredictPauseMs = 100;
     RenderWorker worker_{plans_};
     RenderView* view_ = nullptr;
     ScenePanel* scenePanel_ = nullptr;

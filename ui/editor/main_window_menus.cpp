@@ -156,14 +156,14 @@ void MainWindow::duplicateAndMove() {
 }
 
 void MainWindow::buildClipboardActions(QMenu* edit) {
-    QAction* copy = edit->addAction(themeIcon("edit-copy"), tr("&Copy"), QKeySequence::Copy, this,
-                                    [this] { copySelection(); });
+    QAction* copy =
+        edit->addAction(tr("&Copy"), QKeySequence::Copy, this, [this] { copySelection(); });
     copy->setObjectName(QStringLiteral("copy"));
     copy->setStatusTip(
         tr("Copy the selected spheres (with their materials) or lights, to paste "
            "into this or another scene"));
-    QAction* paste = edit->addAction(themeIcon("edit-paste"), tr("&Paste"), QKeySequence::Paste,
-                                     this, [this] { pasteClipboard(); });
+    QAction* paste =
+        edit->addAction(tr("&Paste"), QKeySequence::Paste, this, [this] { pasteClipboard(); });
     paste->setObjectName(QStringLiteral("paste"));
     paste->setStatusTip(tr("Add the copied spheres and lights to this scene"));
 }

@@ -54,8 +54,18 @@ void paintSelectedSpheres(QPainter& painter, const Scene& scene, const QRect& r,
             if (const auto at = projectToImage(scene.camera, scene.render.width,
                                                scene.render.height, scene.spheres[i].center))
                 dots.append(toWidget(scene, r, *at));
-        painter.setPen(QPen(kAlsoSelected, 3, Qt::SolidLine, Qt::RoundCap));
-        painter.drawPoints(dots);
+        // Square dots of one-pixel points, unsmoothed: the raster engine's
+        // fast path, where wide or smoothed points were stroked one by one.
+        painter.save();
+        painter.setRenderHint(QPainter::Antialiasing, false);
+        painter.setPen(QPen(kAlsoSelected, 0));
+        QPointF at(0, 0);
+        for (const QPointF offset : {QPointF(0, 0), QPointF(1, 0), QPointF(0, 1), QPointF(1, 1)}) {
+            dots.translate(offset - at);
+            at = offset;
+            painter.drawPoints(dots);
+        }
+        painter.restore();
     }
     if (active >= 0) paintSphereOutline(painter, scene, r, scene.spheres[active], kSelection);
 }

@@ -1,0 +1,206 @@
+// Building a scene with the mouse, timed in a real MainWindow (offscreen): the
+// events go to the shown window as a user's do, and each figure runs from the
+// event to the first preview frame of the changed scene reaching the window.
+//   (a) G, then mouse moves: each move's first preview, on the seed and on a
+//       field of 100,000 balls (the sphere tree refits for a move);
+//   (b) on a field of 1,000,000 balls: B and a drag round a tenth of them, the
+//       selection's time; one material given to all of them through the
+//       sphere page, to its first preview; and its undo, to its first preview.
+// Targets: 30 ms a move, 150 ms the material and its undo. Prints its figures;
+// not a test.
+//   build/bin/bench_editor_gestures [MOVES] [BIG_FIELD]   (default 30 1000000)
+#include <QApplication>
+#include <QComboBox>
+#include <QElapsedTimer>
+#include <QTest>
+#include <QUndoStack>
+#include <QWindow>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+#include "big_scene.h"
+#include "camera/view_projection.h"
+#include "editor/main_window.h"
+#include "panels/scene_panel.h"
+#include "viewport/render_view.h"
+
+namespace {
+
+using whitted::Scene;
+using whitted::ui::MainWindow;
+using whitted::ui::RenderFrame;
+
+constexpr double kMoveTargetMs = 30.0;
+constexpr double kMaterialTargetMs = 150.0;
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+// Waits in the event loop for the window's first preview of a render asked for
+// after `since` started; its milliseconds since then, or -1 after 10 s.
+double firstPreviewMs(MainWindow& window, const QElapsedTimer& since) {
+    double ms = -1;
+    const auto connection =
+        QObject::connect(&window, &MainWindow::frameShown, [&](const RenderFrame& f) {
+            if (ms < 0 && f.generation == window.renderWorker().latestGeneration())
+                ms = double(since.nsecsElapsed()) / 1e6;
+        });
+    if (!QTest::qWaitFor([&] { return ms >= 0; }, 10000))
+        std::fprintf(stderr, "no preview in 10 s\n");
+    QObject::disconnect(connection);
+    return ms;
+}
+
+struct Window {
+    explicit Window(const Scene& scene) {
+        window.show();
+        if (!QTest::qWaitForWindowExposed(&window)) std::fprintf(stderr, "window not shown\n");
+        window.document()->reset(scene, QString());
+        QTest::qWait(300);  // the first render and the tree built
+    }
+    QPoint inWindow(QPointF viewPoint) {
+        return window.renderView()->mapTo(&window, viewPoint.toPoint());
+    }
+    QPointF drawn(const whitted::Vec3& p) {
+        const Scene& s = window.document()->scene();
+        const QRect r = window.renderView()->imageRect();
+        const auto image = whitted::projectToImage(s.camera, s.render.width, s.render.height, p);
+        return {r.left() + image->x * r.width() / s.render.width,
+                r.top() + image->y * r.height() / s.render.height};
+    }
+    MainWindow window;
+};
+
+// A ball near the middle of the picture, to be grabbed.
+int ballInTheMiddle(const Scene& s) {
+    for (int i = 0; i < int(s.spheres.size()); ++i) {
+        const auto p =
+            whitted::projectToImage(s.camera, s.render.width, s.render.height, s.spheres[i].center);
+        if (p && std::abs(p->x / s.render.width - 0.5) < 0.15 &&
+            std::abs(p->y / s.render.height - 0.5) < 0.15 && s.spheres[i].radius < 1000)
+            return i;
+    }
+    return 0;
+}
+
+// G on sphere `index`, then `moves` pointer moves of 3 pixels: each one's first preview.
+std::vector<double> moveTimes(const Scene& scene, int index, int moves,
+                              std::vector<double>& handled) {
+    Window w(scene);
+    QWindow* shown = w.window.windowHandle();
+    w.window.scenePanel()->select(whitted::ui::ItemKind::Sphere, index);
+    QPoint at = w.inWindow(w.drawn(scene.spheres[index].center));
+    QTest::mouseMove(shown, at);
+    QTest::keyClick(shown, Qt::Key_G);
+    std::vector<double> ms;
+    for (int i = 0; i < moves; ++i) {
+        at += QPoint(i % 2 ? -3 : 3, 1);
+        QElapsedTimer t;
+        t.start();
+        QTest::mouseMove(shown, at);
+        handled.push_back(double(t.nsecsElapsed()) / 1e6);
+        ms.push_back(firstPreviewMs(w.window, t));
+    }
+    QTest::keyClick(shown, Qt::Key_Escape);
+    return ms;
+}
+
+// The widget-space box, from the left of the picture, holding the centres of a
+// tenth of the balls (or of all it can show).
+QRect tenthBox(Window& w, const Scene& scene) {
+    const QRect r = w.window.renderView()->imageRect();
+    std::vector<double> xs;
+    for (const auto& sp : scene.spheres)
+        if (whitted::projectToImage(scene.camera, scene.render.width, scene.render.height,
+                                    sp.center))
+            if (const QPointF at = w.drawn(sp.center); r.contains(at.toPoint()))
+                xs.push_back(at.x());
+    std::sort(xs.begin(), xs.end());
+    const int right = int(xs[std::min(xs.size() - 1, scene.spheres.size() / 10)]);
+    return QRect(QPoint(r.left(), r.top()), QPoint(right, r.bottom()));
+}
+
+void bigField(int count) {
+    const Scene scene = whitted::bench::bigScene(count);
+    Window w(scene);
+    QWindow* shown = w.window.windowHandle();
+    const QRect box = tenthBox(w, scene);
+    QElapsedTimer t;
+    t.start();
+    QTest::keyClick(shown, Qt::Key_B);
+    QTest::mousePress(shown, Qt::LeftButton, {}, w.inWindow(box.topLeft()));
+    QTest::mouseMove(shown, w.inWindow(box.center()));
+    QTest::mouseMove(shown, w.inWindow(box.bottomRight()));
+    QTest::mouseRelease(shown, Qt::LeftButton, {}, w.inWindow(box.bottomRight()));
+    QApplication::processEvents();
+    const double selectMs = double(t.nsecsElapsed()) / 1e6;
+    const int selected = w.window.document()->selection()->count();
+
+    auto* material = w.window.findChild<QComboBox*>(QStringLiteral("sphereMaterial"));
+    const int glass = material->findText(QStringLiteral("white"));
+    t.start();
+    material->setCurrentIndex(glass == material->currentIndex() ? 0 : glass);
+    const double materialHandledMs = double(t.nsecsElapsed()) / 1e6;
+    const double materialMs = firstPreviewMs(w.window, t);
+    QTest::qWait(500);
+    t.start();
+    w.window.document()->undoStack()->undo();
+    const double undoHandledMs = double(t.nsecsElapsed()) / 1e6;
+    const double undoMs = firstPreviewMs(w.window, t);
+    // For comparison: any edit of so large a scene, one sphere's radius.
+    QTest::qWait(500);
+    t.start();
+    w.window.document()->editItem<whitted::Sphere>(w.window.document()->selection()->active(),
+                                                   QStringLiteral("Change radius"),
+                                                   [](whitted::Sphere& sp) { sp.radius *= 1.01; });
+    const double oneHandledMs = double(t.nsecsElapsed()) / 1e6;
+    const double oneMs = firstPreviewMs(w.window, t);
+    std::printf("%d balls: B and a drag selected %d (%.0f %%) in %.0f ms\n", count, selected,
+                100.0 * selected / count, selectMs);
+    std::printf(
+        "  one material for all of them, to its first preview: %6.1f ms  target %3.0f "
+        "ms: %.2fx\n",
+        materialMs, kMaterialTargetMs, materialMs / kMaterialTargetMs);
+    std::printf(
+        "  its undo, to its first preview:                     %6.1f ms  target %3.0f "
+        "ms: %.2fx\n",
+        undoMs, kMaterialTargetMs, undoMs / kMaterialTargetMs);
+    std::printf("  of which the window's handling: the material %.1f ms, its undo %.1f ms\n",
+                materialHandledMs, undoHandledMs);
+    std::printf(
+        "  for comparison, one sphere's radius: %.1f ms to its first preview (%.1f ms "
+        "handling)\n",
+        oneMs, oneHandledMs);
+}
+
+void reportMoves(const char* what, const Scene& scene, int moves) {
+    std::vector<double> handled;
+    const std::vector<double> ms = moveTimes(scene, ballInTheMiddle(scene), moves, handled);
+    const auto [low, high] = std::minmax_element(ms.begin(), ms.end());
+    std::printf("%-16s median %6.1f ms (min %6.1f, max %6.1f)  target %2.0f ms: %.2fx\n", what,
+                median(ms), *low, *high, kMoveTargetMs, median(ms) / kMoveTargetMs);
+    std::printf("%-16s of which the window's handling of the event: median %.1f ms\n", "",
+                median(handled));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    QApplication app(argc, argv);
+    const int moves = argc > 1 ? std::max(1, std::atoi(argv[1])) : 30;
+    const int big = argc > 2 ? std::max(10, std::atoi(argv[2])) : 1000000;
+    std::printf("G and %d pointer moves of 3 pixels, each to its first preview frame:\n", moves);
+    const Scene seed = whitted::loadScene(WHITTED_SCENES_DIR "/seed.json");
+    reportMoves("seed scene:", seed, moves);
+    reportMoves("100,000 balls:", whitted::bench::bigScene(100000), moves);
+    bigField(big);
+    std::printf("(ratio = figure / target; at most 1.00 meets the target)\n");
+    return 0;
+}

@@ -290,13 +290,9 @@ void RenderView::startBoxSelect() {
 void RenderView::boxSelect(const QRect& box, bool add) {
     const Scene& s = doc_->scene();
     const QRect r = imageRect();
-    const QRectF inImage(imagePoint(s, r, box.topLeft()), imagePoint(s, r, box.bottomRight()));
-    std::vector<int> spheres;
-    for (int i = 0; i < int(s.spheres.size()); ++i)
-        if (const auto p =
-                projectToImage(s.camera, s.render.width, s.render.height, s.spheres[i].center);
-            p && inImage.contains(p->x, p->y))
-            spheres.push_back(i);
+    const QPointF a = imagePoint(s, r, box.topLeft()), b = imagePoint(s, r, box.bottomRight());
+    std::vector<int> spheres = spheresCentredIn(s.camera, s.render.width, s.render.height,
+                                                s.spheres, {a.x(), a.y()}, {b.x(), b.y()});
     std::vector<int> lights;
     for (int i = 0; i < int(s.lights.size()); ++i)
         if (const auto p = widgetPoint(s, r, s.lights[i].position); p && box.contains(p->toPoint()))

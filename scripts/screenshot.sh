@@ -6,10 +6,13 @@
 # shortcut, Ctrl+Shift+F, sent with xdotool). With --tradeoff-view it opens the
 # Trade-off dock, pins the Final preset's render, renders the other presets and
 # two sample counts against it, then runs Measure and waits
-# TRADEOFF_MEASURE_SECONDS (150 unless set) for it. Safe to re-run.
+# TRADEOFF_MEASURE_SECONDS (150 unless set) for it. With --moving it selects
+# the three balls (a click, two Shift+clicks), presses G and moves the pointer
+# up, and takes the picture during the move. Safe to re-run.
 # Needs xvfb, x11-utils (xwininfo) and imagemagick (import), and xdotool for
-# --precision-view and --tradeoff-view. Build first (scripts/setup.sh).
-# Usage: scripts/screenshot.sh [--scene SCENE.json] [--precision-view | --tradeoff-view] [OUT.png]
+# --precision-view, --tradeoff-view and --moving. Build first (scripts/setup.sh).
+# Usage: scripts/screenshot.sh [--scene SCENE.json] [--precision-view | --tradeoff-view |
+#                               --moving] [OUT.png]
 set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -17,11 +20,13 @@ out=docs/images/editor.png
 scene=scenes/seed.json
 precision_view=
 tradeoff_view=
+moving=
 while [[ $# -gt 0 ]]; do
   case $1 in
     --scene) scene=$2; shift 2 ;;
     --precision-view) precision_view=1; shift ;;
     --tradeoff-view) tradeoff_view=1; shift ;;
+    --moving) moving=1; shift ;;
     *) out=$1; shift ;;
   esac
 done
@@ -34,7 +39,7 @@ fail() {
 }
 
 [[ -x build/bin/whitted ]] || fail "build/bin/whitted is not built (run scripts/setup.sh)"
-tools="Xvfb xwininfo import${precision_view:+ xdotool}${tradeoff_view:+ xdotool}"
+tools="Xvfb xwininfo import${precision_view:+ xdotool}${tradeoff_view:+ xdotool}${moving:+ xdotool}"
 for tool in $tools; do
   command -v "$tool" >/dev/null 2>&1 || fail "$tool not found (apt-get install xvfb x11-utils imagemagick xdotool)"
 done
@@ -144,6 +149,30 @@ if [[ -n "$tradeoff_view" ]]; then
   [[ -n "$box" ]] || fail "no Measure question on $display"
   DISPLAY=$display xdotool windowfocus --sync "$box" key Return
   sleep "${TRADEOFF_MEASURE_SECONDS:-150}"
+fi
+
+if [[ -n "$moving" ]]; then
+  sleep 2
+  id=$(DISPLAY=$display xdotool search --name "$title" | head -n 1)
+  DISPLAY=$display xdotool windowfocus --sync "$id" ||
+    fail "could not focus the editor"
+  # The seed's purple, white and blue balls in the 1600x1000 window at 0,0.
+  at() {
+    DISPLAY=$display xdotool mousemove --sync "$1" "$2" ||
+      fail "could not move the pointer to $1,$2"
+  }
+  at 559 478
+  DISPLAY=$display xdotool click 1
+  for ball in "727 467" "867 493"; do
+    at $ball
+    DISPLAY=$display xdotool keydown shift click 1 keyup shift
+  done
+  sleep 1
+  DISPLAY=$display xdotool key g
+  for step in $(seq 1 12); do
+    at 867 $((493 - 6 * step))
+    sleep 0.05
+  done
 fi
 
 # The example scenes at 640x480 render in well under a second, and compare in

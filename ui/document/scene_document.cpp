@@ -416,4 +416,9 @@ QString kindNoun(ItemKind kind) {
     return {};
 }
 
+QString countedNoun(int count, ItemKind kind) {
+    return count == 1 ? QObject::tr("1 %1").arg(kindNoun(kind))
+                      : QObject::tr("%1 %2s").arg(count).arg(kindNoun(kind));
+}
+
 }  // namespace whitted::ui

@@ -138,5 +138,7 @@ QString itemName(const Scene& scene, ItemKind kind, int index);
 
 // The singular noun for an item kind, for messages and undo texts ("sphere").
 QString kindNoun(ItemKind kind);
+// A count of a kind, for messages and undo texts: "1 sphere", "3 spheres".
+QString countedNoun(int count, ItemKind kind);
 
 }  // namespace whitted::ui

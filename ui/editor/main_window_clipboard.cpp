@@ -30,8 +30,8 @@ void MainWindow::copySelection() {
         doc_.scene(), spheres ? sizes(selection.indices()) : std::vector<std::size_t>{},
         spheres ? std::vector<std::size_t>{} : sizes(selection.indices()));
     QGuiApplication::clipboard()->setText(QString::fromStdString(text));
-    statusBar()->showMessage(
-        tr("Copied %n %1(s)", nullptr, selection.count()).arg(kindNoun(selection.kind())), 5000);
+    statusBar()->showMessage(tr("Copied %1").arg(countedNoun(selection.count(), selection.kind())),
+                             5000);
 }
 
 void MainWindow::pasteClipboard() {
@@ -49,8 +49,8 @@ void MainWindow::pasteClipboard() {
     const std::size_t items = pasted.newSpheres.size() + pasted.newLights.size();
     QString error;
     if (!doc_.edit(
-            tr("Paste %n item(s)", nullptr, int(items)), [&](Scene& s) { s = pasted.scene; },
-            &error)) {
+            items == 1 ? tr("Paste 1 item") : tr("Paste %1 items").arg(items),
+            [&](Scene& s) { s = pasted.scene; }, &error)) {
         showError(tr("Cannot paste"), error);
         return;
     }
@@ -58,10 +58,9 @@ void MainWindow::pasteClipboard() {
     const auto& added = spheres ? pasted.newSpheres : pasted.newLights;
     doc_.selection()->set(spheres ? ItemKind::Sphere : ItemKind::Light,
                           std::vector<int>(added.begin(), added.end()));
-    statusBar()->showMessage(tr("Pasted %1 sphere(s) and %2 light(s); %3 renamed, %4 material(s) "
-                                "reused, %5 added")
-                                 .arg(pasted.newSpheres.size())
-                                 .arg(pasted.newLights.size())
+    statusBar()->showMessage(tr("Pasted %1 and %2; %3 renamed, materials: %4 reused, %5 added")
+                                 .arg(countedNoun(int(pasted.newSpheres.size()), ItemKind::Sphere),
+                                      countedNoun(int(pasted.newLights.size()), ItemKind::Light))
                                  .arg(pasted.renamed)
                                  .arg(pasted.materialsReused)
                                  .arg(pasted.materialsAdded),

@@ -146,11 +146,10 @@ void MainWindow::selectSameMaterial() {
 void MainWindow::duplicateAndMove() {
     const SceneSelection& selection = *doc_.selection();
     if (selection.kind() == ItemKind::Material || selection.empty()) return;
-    doc_.beginGesture(
-        tr("Duplicate and move %1")
-            .arg(selection.count() == 1
-                     ? itemName(doc_.scene(), selection.kind(), selection.active())
-                     : tr("%1 %2s").arg(selection.count()).arg(kindNoun(selection.kind()))));
+    doc_.beginGesture(tr("Duplicate and move %1")
+                          .arg(selection.count() == 1
+                                   ? itemName(doc_.scene(), selection.kind(), selection.active())
+                                   : countedNoun(selection.count(), selection.kind())));
     scenePanel_->duplicateItem(selection.kind());
     moveWithinGesture();
 }

@@ -62,8 +62,7 @@ bool PropertyPanel::valid() const {
 QString PropertyPanel::itemLabel() const {
     const int others = int(editTargets(*doc_, kind_, index_).size()) - 1;
     const QString name = itemName(doc_->scene(), kind_, index_);
-    return others == 0 ? name
-                       : tr("%1 and %n other %2(s)", nullptr, others).arg(name, kindNoun(kind_));
+    return others == 0 ? name : tr("%1 (and %2 more)").arg(name).arg(others);
 }
 
 std::function<QString()> PropertyPanel::changeText(const QString& what) const {

@@ -181,7 +181,7 @@ void eraseRows(std::vector<T>& list, const std::vector<int>& rows) {
 // "blue ball" for one item, "3 spheres" for several: what an undo step names.
 QString whatIsSelected(const Scene& scene, ItemKind kind, const std::vector<int>& rows) {
     if (rows.size() == 1) return kindNoun(kind) + QLatin1Char(' ') + itemName(scene, kind, rows[0]);
-    return QObject::tr("%1 %2s").arg(rows.size()).arg(kindNoun(kind));
+    return countedNoun(int(rows.size()), kind);
 }
 
 }  // namespace

@@ -116,7 +116,8 @@ std::vector<int> SpherePage::targets() const {
 QString SpherePage::sphereName() const {
     const std::size_t others = targets().size() - 1;
     const QString name = itemName(doc_->scene(), ItemKind::Sphere, index_);
-    return others == 0 ? name : tr("%1 and %n other sphere(s)", nullptr, int(others)).arg(name);
+    return others == 0 ? name
+                       : tr("%1 (and %2 more)").arg(name).arg(others);
 }
 
 QString SpherePage::materialName() const {
@@ -151,8 +152,10 @@ void SpherePage::refreshMaterialChoice(const Sphere& sphere) {
         material_->setCurrentIndex(mixed ? -1 : findMaterial(scene, sphere.material));
     }
     const int users = spheresUsing(scene, sphere.material);
-    users_->setText(users > 1 ? tr("Shared by %1 spheres").arg(users)
-                              : tr("Used by this sphere only"));
+    users_->setText(material_->currentIndex() < 0
+                        ? tr("Several materials; the rows below are %1's").arg(materialName())
+                    : users > 1 ? tr("Shared by %1 spheres").arg(users)
+                                : tr("Used by this sphere only"));
     makeUnique_->setEnabled(users > 1);
 }
 

@@ -22,7 +22,7 @@ Vec3 itemPosition(const Scene& s, ItemKind kind, int index) {
 // "blue ball" for one item, "3 spheres" for more.
 QString selectionName(const Scene& s, ItemKind kind, const std::vector<int>& indices) {
     if (indices.size() == 1) return itemName(s, kind, indices.front());
-    return RenderView::tr("%1 %2s").arg(indices.size()).arg(kindNoun(kind));
+    return countedNoun(int(indices.size()), kind);
 }
 
 }  // namespace
@@ -206,8 +206,7 @@ QString RenderView::moveText() const {
     const ItemMove& m = *move_;
     const QString typed = m.typed.isEmpty() ? QString() : tr(" (typed %1)").arg(m.typed);
     if (m.gesture == Gesture::Scale)
-        return tr("%1 by %2%3. Type a factor; Ctrl: steps of %4; Enter or click: done; "
-                  "Esc or right click: cancel")
+        return tr("%1 by %2%3 · type a factor · Ctrl: steps of %4 · click: keep · Esc: cancel")
             .arg(moveStepName(m))
             .arg(scaleFactor(), 0, 'g', 4)
             .arg(typed)
@@ -216,9 +215,9 @@ QString RenderView::moveText() const {
     const Vec3 offset = moveOffset();
     const QString along = m.axis ? tr(" along %1").arg(QLatin1String(kAxes[*m.axis])) : QString();
     const QString drop =
-        m.kind == ItemKind::Sphere ? tr("; Shift: drop onto what is under it") : QString();
-    return tr("%1 by %2, %3, %4%5%6. X, Y, Z: along an axis; type a distance; "
-              "Ctrl: snap to %7%8; Enter or click: done; Esc or right click: cancel")
+        m.kind == ItemKind::Sphere ? tr(" · Shift: onto the surface pointed at") : QString();
+    return tr("%1 by %2, %3, %4%5%6 · X/Y/Z: axis · type a distance · Ctrl: snap to %7%8 · "
+              "click: keep · Esc: cancel")
         .arg(moveStepName(m))
         .arg(offset.x, 0, 'g', 4)
         .arg(offset.y, 0, 'g', 4)

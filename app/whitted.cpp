@@ -3,9 +3,11 @@
 #include <QCommandLineParser>
 #include <QIcon>
 
+#include "base/heap_reuse.h"
 #include "editor/main_window.h"
 
 int main(int argc, char** argv) {
+    whitted::reuseHeapForLargeBlocks();
     QApplication app(argc, argv);
     QApplication::setOrganizationName("Whitted");
     QApplication::setApplicationName("whitted");

@@ -22,6 +22,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "base/heap_reuse.h"
 #include "big_scene.h"
 #include "camera/view_projection.h"
 #include "editor/main_window.h"
@@ -192,6 +193,7 @@ void reportMoves(const char* what, const Scene& scene, int moves) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    whitted::reuseHeapForLargeBlocks();  // as the editor's main() does
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
     const int moves = argc > 1 ? std::max(1, std::atoi(argv[1])) : 30;

@@ -43,6 +43,17 @@ std::vector<int> spheresCentredIn(const Camera& camera, int width, int height,
     return inside;
 }
 
+std::vector<ImagePoint> projectCentres(const Camera& camera, int width, int height,
+                                       const std::vector<Sphere>& spheres,
+                                       const std::vector<int>& indices) {
+    const CameraBasis<double> basis = makeCameraBasis<double>(camera, width, height);
+    std::vector<ImagePoint> seen;
+    seen.reserve(indices.size());
+    for (int i : indices)
+        if (const auto p = projectWith(basis, width, height, spheres[i].center)) seen.push_back(*p);
+    return seen;
+}
+
 std::vector<std::vector<ImagePoint>> sphereOutline(const Camera& camera, int width, int height,
                                                    const Vec3& centre, double radius) {
     const Vec3 toEye = camera.position - centre;

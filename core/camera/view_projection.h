@@ -26,6 +26,12 @@ std::optional<ImagePoint> projectToImage(const Camera& camera, int width, int he
 std::vector<int> spheresCentredIn(const Camera& camera, int width, int height,
                                   const std::vector<Sphere>& spheres, ImagePoint a, ImagePoint b);
 
+// Where the centres of spheres `indices` are seen, those in front of the eye
+// alone: the dots of a large selection, with one camera basis for all.
+std::vector<ImagePoint> projectCentres(const Camera& camera, int width, int height,
+                                       const std::vector<Sphere>& spheres,
+                                       const std::vector<int>& indices);
+
 // The sphere's outline as the camera sees it (the circle where the eye's lines
 // of sight touch it), as polylines in image points: one closed loop when all of
 // it is in front of the eye, pieces when part is behind (a huge floor's horizon),

@@ -142,6 +142,11 @@ bool isFinite(const Vec3& v) {
 
 std::optional<SceneProblem> checkSphere(const Scene& scene, size_t i) {
     const Sphere& s = scene.spheres[i];
+    // The paths only for a problem: a selection of 100,000 spheres given a
+    // material spent 30 ms of the edit building "spheres[i].center" strings.
+    if (finite(s.center) && std::isfinite(s.radius) && s.radius > 0 &&
+        findMaterial(scene, s.material) >= 0)
+        return std::nullopt;
     const std::string path = indexed("spheres", i);
     if (auto p = checkVec(s.center, path + ".center", false)) return p;
     if (auto p = checkAtLeast(s.radius, 0, path + ".radius", true)) return p;

@@ -113,5 +113,17 @@ TEST(ViewMove, SpheresCentredIn_TheBoxHoldsTheCentresSeenInsideIt) {
               std::vector<int>({0, 1, 2}));
 }
 
+// The dots of a large selection sit where each sphere's own projection puts
+// them, bit for bit; a centre behind the eye has none.
+TEST(ViewMove, ProjectCentres_EqualEachProjectionAndSkipThoseBehind) {
+    const std::vector<Sphere> spheres = {{"a", {0.3, -0.2, 4}, 0.5, "m"},
+                                         {"behind", {12, 15.5, -14}, 0.5, "m"},
+                                         {"b", {-2, 1, 9}, 0.5, "m"}};
+    const auto seen = projectCentres(kOblique, kMoveViewWidth, kMoveViewHeight, spheres, {0, 1, 2});
+    ASSERT_EQ(seen.size(), 2u);
+    EXPECT_EQ(seen[0], seenAt(kOblique, spheres[0].center));
+    EXPECT_EQ(seen[1], seenAt(kOblique, spheres[2].center));
+}
+
 }  // namespace
 }  // namespace whitted

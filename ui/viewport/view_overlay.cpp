@@ -50,10 +50,10 @@ void paintSelectedSpheres(QPainter& painter, const Scene& scene, const QRect& r,
     } else {
         QPolygonF dots;
         dots.reserve(selection.count());
-        for (int i : selection.indices())
-            if (const auto at = projectToImage(scene.camera, scene.render.width,
-                                               scene.render.height, scene.spheres[i].center))
-                dots.append(toWidget(scene, r, *at));
+        for (const ImagePoint& at :
+             projectCentres(scene.camera, scene.render.width, scene.render.height, scene.spheres,
+                            selection.indices()))
+            dots.append(toWidget(scene, r, at));
         // Square dots of one-pixel points, unsmoothed: the raster engine's
         // fast path, where wide or smoothed points were stroked one by one.
         painter.save();

@@ -3,6 +3,9 @@
 // view directly. The sphere follows the pointer, axes and typed numbers
 // constrain it, Ctrl snaps, Escape puts it back bit for bit, and each move is
 // one undo step that the saved file holds.
+#include <QInputDialog>
+#include <QPointer>
+#include <QSettings>
 #include <QStatusBar>
 
 #include "panels/scene_panel.h"
@@ -135,6 +138,35 @@ TEST_F(ViewMoveTest, CtrlWhileMoving_SnapsTheOffsetToTheGrid) {
         const double steps = offset[axis] / RenderView::kMoveGrid;
         EXPECT_NEAR(steps, std::round(steps), 1e-9) << axis;
     }
+}
+
+// View > Snap Step sets the grid Ctrl snaps to, and the next start keeps it.
+TEST_F(ViewMoveTest, SnapStepSetInTheViewMenu_CtrlSnapsToIt_AndItIsRemembered) {
+    window->findChild<QAction*>(QStringLiteral("snapStep"))->trigger();
+    QPointer<QInputDialog> dialog =
+        window->findChild<QInputDialog*>(QStringLiteral("snapStepDialog"));
+    ASSERT_NE(dialog, nullptr);
+    dialog->setDoubleValue(0.25);
+    dialog->accept();
+    // Closed, it gives the keyboard back to the window.
+    ASSERT_TRUE(QTest::qWaitFor([&] { return dialog.isNull(); }));
+    window->activateWindow();
+    EXPECT_EQ(view->moveGrid(), 0.25);
+    EXPECT_EQ(QSettings().value("view/snapStep").toDouble(), 0.25);
+
+    const Vec3 start = ball().center;
+    const QPoint grab = selectBall();
+    key(Qt::Key_G);
+    movePointer(grab, grab + QPoint(61, 23), Qt::ControlModifier);
+    click(grab + QPoint(61, 23));
+    const Vec3 offset = ball().center - start;
+    EXPECT_NE(offset, Vec3(0.0));
+    for (int axis = 0; axis < 3; ++axis) {
+        const double steps = offset[axis] / 0.25;
+        EXPECT_NEAR(steps, std::round(steps), 1e-9) << axis;
+    }
+    MainWindow again;
+    EXPECT_EQ(again.renderView()->moveGrid(), 0.25);
 }
 
 TEST_F(ViewMoveTest, EscapeOrRightClick_PutTheBallBackBitForBit_AndLeaveNoStep) {

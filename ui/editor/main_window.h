@@ -98,6 +98,9 @@ class MainWindow : public QMainWindow {
     void buildRenderMenu();
     void buildViewMenu();
     void buildHelpMenu();
+    // View > Snap Step: the grid Ctrl snaps a move to, remembered (non-blocking
+    // dialog, object name "snapStepDialog").
+    void askSnapStep();
     // Blender's Shift+D: a copy of the selected sphere or light that moves with
     // the pointer at once (RenderView::startMove); Escape leaves the copy where
     // the original is. The copy and its move are one undo step.

@@ -4,8 +4,10 @@
 #include <QActionGroup>
 #include <QDockWidget>
 #include <QIcon>
+#include <QInputDialog>
 #include <QMenu>
 #include <QMenuBar>
+#include <QSettings>
 #include <QToolBar>
 #include <QToolButton>
 
@@ -234,10 +236,31 @@ void MainWindow::buildViewMenu() {
         else
             cameraMenu->addAction(a);
     }
+    QAction* snap = viewMenu->addAction(tr("Snap &Step…"), this, [this] { askSnapStep(); });
+    snap->setObjectName(QStringLiteral("snapStep"));
+    snap->setStatusTip(tr("The grid that Ctrl snaps a move to"));
+    view_->setMoveGrid(QSettings().value("view/snapStep", RenderView::kMoveGrid).toDouble());
     viewMenu->addSeparator();
     viewMenu->addAction(toolBar_->toggleViewAction());
     for (QDockWidget* dock : findChildren<QDockWidget*>())
         viewMenu->addAction(dock->toggleViewAction());
+}
+
+void MainWindow::askSnapStep() {
+    auto* dialog = new QInputDialog(this);
+    dialog->setObjectName(QStringLiteral("snapStepDialog"));
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setWindowTitle(tr("Snap Step"));
+    dialog->setLabelText(tr("Ctrl during a move snaps it to steps of (scene units):"));
+    dialog->setInputMode(QInputDialog::DoubleInput);
+    dialog->setDoubleRange(1e-6, 1e6);
+    dialog->setDoubleDecimals(6);
+    dialog->setDoubleValue(view_->moveGrid());
+    connect(dialog, &QInputDialog::doubleValueSelected, this, [this](double step) {
+        view_->setMoveGrid(step);
+        QSettings().setValue("view/snapStep", view_->moveGrid());
+    });
+    dialog->open();
 }
 
 void MainWindow::buildHelpMenu() {

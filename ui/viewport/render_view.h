@@ -24,7 +24,8 @@
 // the active item facing the camera, the point grabbed staying under the
 // pointer; X, Y or Z constrains it to that world axis (again: free again); a
 // typed number moves it by exactly that much along the axis (X when none);
-// Ctrl snaps the offset to a grid of kMoveGrid; Shift drops a sphere onto what
+// Ctrl snaps the offset to the snap step (kMoveGrid unless the user set
+// another, View > Snap Step); Shift drops a sphere onto what
 // is under the pointer (resting on the floor or touching a ball). S scales the
 // selected spheres' radii by how far the pointer is from their middle on
 // screen against where it started (a typed number: by that factor; Ctrl: in
@@ -88,8 +89,10 @@ class RenderView : public QWidget {
     bool moving() const { return move_.has_value(); }
     // The factor S keeps to: how many times each radius is multiplied by.
     static constexpr double kScaleSnap = 0.1;
-    // The grid Ctrl snaps a move to, in scene units.
+    // The grid Ctrl snaps a move to, in scene units, unless the user sets another.
     static constexpr double kMoveGrid = 0.1;
+    double moveGrid() const { return moveGrid_; }
+    void setMoveGrid(double step) { moveGrid_ = step > 0 ? step : kMoveGrid; }
 
     // The keyboard's camera moves, each an action with its shortcut and an
     // object name. Reset, Frame and Move have window-wide shortcuts (they sit
@@ -191,6 +194,7 @@ class RenderView : public QWidget {
     std::optional<ItemMove> move_;
     bool boxWaiting_ = false;  // B pressed: the next left drag draws a box
     bool flying_ = false;
+    double moveGrid_ = kMoveGrid;
     QList<QAction*> walkActions_;  // enabled in fly mode alone
     QList<QAction*> cameraActions_;
 };

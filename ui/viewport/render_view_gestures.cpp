@@ -89,7 +89,7 @@ Vec3 RenderView::moveOffset() const {
     const QPointF to = imagePoint(s, imageRect(), m.pointer);
     const Vec3 offset = viewMoveOffset(s.camera, s.render.width, s.render.height, m.anchor,
                                        {m.from.x(), m.from.y()}, {to.x(), to.y()}, m.axis);
-    return m.snap ? snapToGrid(offset, kMoveGrid) : offset;
+    return m.snap ? snapToGrid(offset, moveGrid_) : offset;
 }
 
 // Shift during a sphere's move: the active sphere rests on the surface under
@@ -223,7 +223,7 @@ QString RenderView::moveText() const {
         .arg(offset.y, 0, 'g', 4)
         .arg(offset.z, 0, 'g', 4)
         .arg(along, typed)
-        .arg(kMoveGrid)
+        .arg(moveGrid_)
         .arg(drop);
 }
 

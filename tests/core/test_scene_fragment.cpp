@@ -15,6 +15,8 @@
 #include "scene/scene_fragment.h"
 #include "scene/scene_io.h"
 
+#include "support/core_support.h"
+
 namespace whitted {
 namespace {
 
@@ -50,16 +52,6 @@ SceneError fragRefusal(const Scene& into, const std::string& text) {
 std::string fragText(const std::string& materials, const std::string& spheres) {
     return R"({"format": "whitted-scene-fragment", "version": 1, "materials": [)" + materials +
            R"(], "spheres": [)" + spheres + R"(], "lights": []})";
-}
-
-Material fragMaterial(const std::string& name, Vec3 diffuse, double specular = 0,
-                      double reflectivity = 0) {
-    Material m;
-    m.name = name;
-    m.diffuse = diffuse;
-    m.specular = specular;
-    m.reflectivity = reflectivity;
-    return m;
 }
 
 const char* const kFragBlue =
@@ -131,7 +123,7 @@ TEST(SceneFragment, FragmentToJson_IndexPastTheList_Throws) {
 TEST(SceneFragment, PasteIntoSceneWithoutThem_AddsMaterialsAndKeepsNames) {
     const Scene seed = fragSeedScene();
     Scene into;
-    into.materials.push_back(fragMaterial("red", {1, 0, 0}));
+    into.materials.push_back(test::makeMaterial("red", {1, 0, 0}));
     into.spheres.push_back({"ball", {0, 0, 3}, 0.5, "red"});
 
     const PasteResult r = pasteFragment(into, fragmentToJson(seed, {0, 1}, {0}));
@@ -154,7 +146,7 @@ TEST(SceneFragment, SameMaterialNameOtherFields_AddsItRenamedAndSpheresUseIt) {
     const Scene seed = fragSeedScene();
     Scene into = seed;
     into.materials[0].diffuse = {0, 1, 0};  // "blue" is green here
-    into.materials.push_back(fragMaterial("blue 2", {0.5, 0.5, 1}));
+    into.materials.push_back(test::makeMaterial("blue 2", {0.5, 0.5, 1}));
     into.spheres.push_back({"pale ball", {2, 0.2, 3}, 0.3, "blue 2"});
 
     const PasteResult r = pasteFragment(into, fragmentToJson(seed, {0}, {}));
@@ -187,7 +179,7 @@ TEST(SceneFragment, PasteAgain_NumbersOnFromTheLastNumber) {
 
 TEST(SceneFragment, NewNames_AvoidThePastedItemsNamesToo) {
     Scene into;
-    into.materials.push_back(fragMaterial("blue", {0, 0, 1}, 1, 0.5));
+    into.materials.push_back(test::makeMaterial("blue", {0, 0, 1}, 1, 0.5));
     into.spheres.push_back({"ball", {0, 0, 3}, 0.5, "blue"});
     const std::string text = fragText(
         kFragBlue, R"({"name": "ball", "center": [1, 0, 3], "radius": 0.5, "material": "blue"},

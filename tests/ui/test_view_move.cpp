@@ -10,23 +10,15 @@
 
 #include "panels/scene_panel.h"
 
-#include "support/main_window_fixture.h"
+#include "support/window_events.h"
 
 namespace whitted::ui {
 namespace {
 
-class ViewMoveTest : public MainWindowTest {
+class ViewMoveTest : public WindowEventsTest {
   protected:
-    QWindow* shownWindow() const { return window->windowHandle(); }
-    // A view point in the window's coordinates, where QTest's events on the window go.
-    QPoint inWindow(QPoint viewPoint) const { return view->mapTo(window.get(), viewPoint); }
-    // Where the blue ball's centre is drawn in the view, in continuous widget coordinates.
-    QPointF drawnCentre() const {
-        const QRect r = view->imageRect();
-        const QPointF image = project(doc->scene(), ball().center);
-        return QPointF(r.left() + image.x() * r.width() / kWidth,
-                       r.top() + image.y() * r.height() / kHeight);
-    }
+    // Where the blue ball's centre is drawn in the view.
+    QPointF drawnCentre() const { return drawn(ball().center); }
     const Sphere& ball() const { return doc->scene().spheres[kBlueBall]; }
 
     // Clicks the blue ball to select it and leaves the pointer on its centre.
@@ -35,18 +27,6 @@ class ViewMoveTest : public MainWindowTest {
         QTest::mouseClick(shownWindow(), Qt::LeftButton, {}, inWindow(centre));
         QTest::mouseMove(shownWindow(), inWindow(centre));
         return centre;
-    }
-    void key(Qt::Key k, Qt::KeyboardModifiers modifiers = {}) {
-        QTest::keyClick(shownWindow(), k, modifiers);
-    }
-    // The pointer moved to `to` in ten steps, as a hand moves it.
-    void movePointer(QPoint from, QPoint to, Qt::KeyboardModifiers modifiers = {}) {
-        for (int i = 1; i <= 10; ++i)
-            QTest::mouseEvent(QTest::MouseMove, shownWindow(), Qt::NoButton, modifiers,
-                              inWindow(from + (to - from) * i / 10));
-    }
-    void click(QPoint at, Qt::MouseButton button = Qt::LeftButton) {
-        QTest::mouseClick(shownWindow(), button, {}, inWindow(at));
     }
 };
 
@@ -132,12 +112,7 @@ TEST_F(ViewMoveTest, CtrlWhileMoving_SnapsTheOffsetToTheGrid) {
     key(Qt::Key_G);
     movePointer(grab, grab + QPoint(47, 13), Qt::ControlModifier);
     click(grab + QPoint(47, 13));
-    const Vec3 offset = ball().center - start;
-    EXPECT_NE(offset, Vec3(0.0));
-    for (int axis = 0; axis < 3; ++axis) {
-        const double steps = offset[axis] / RenderView::kMoveGrid;
-        EXPECT_NEAR(steps, std::round(steps), 1e-9) << axis;
-    }
+    expectOnGrid(ball().center - start, RenderView::kMoveGrid);
 }
 
 // View > Snap Step sets the grid Ctrl snaps to, and the next start keeps it.
@@ -159,12 +134,7 @@ TEST_F(ViewMoveTest, SnapStepSetInTheViewMenu_CtrlSnapsToIt_AndItIsRemembered) {
     key(Qt::Key_G);
     movePointer(grab, grab + QPoint(61, 23), Qt::ControlModifier);
     click(grab + QPoint(61, 23));
-    const Vec3 offset = ball().center - start;
-    EXPECT_NE(offset, Vec3(0.0));
-    for (int axis = 0; axis < 3; ++axis) {
-        const double steps = offset[axis] / 0.25;
-        EXPECT_NEAR(steps, std::round(steps), 1e-9) << axis;
-    }
+    expectOnGrid(ball().center - start, 0.25);
     MainWindow again;
     EXPECT_EQ(again.renderView()->moveGrid(), 0.25);
 }
@@ -180,7 +150,7 @@ TEST_F(ViewMoveTest, EscapeOrRightClick_PutTheBallBackBitForBit_AndLeaveNoStep) 
         if (escape)
             key(Qt::Key_Escape);
         else
-            click(grab + QPoint(-50, 20), Qt::RightButton);
+            click(grab + QPoint(-50, 20), {}, Qt::RightButton);
         EXPECT_FALSE(view->moving());
         EXPECT_EQ(doc->scene(), before);
         EXPECT_EQ(doc->undoStack()->count(), steps);

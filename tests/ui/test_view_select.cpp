@@ -19,25 +19,14 @@
 #include "panels/number_field.h"
 #include "panels/scene_panel.h"
 
-#include "support/main_window_fixture.h"
+#include "support/window_events.h"
 
 namespace whitted::ui {
 namespace {
 
-class ViewSelectTest : public MainWindowTest {
+class ViewSelectTest : public WindowEventsTest {
   protected:
-    QWindow* shownWindow() const { return window->windowHandle(); }
-    // A view point in the window's coordinates, where QTest's events on the window go.
-    QPoint inWindow(QPoint viewPoint) const { return view->mapTo(window.get(), viewPoint); }
-
     const Sphere& sphere(int index) const { return doc->scene().spheres[index]; }
-    // Where scene point `p` is drawn in the view, in continuous widget coordinates.
-    QPointF drawn(const Vec3& p) const {
-        const QRect r = view->imageRect();
-        const QPointF image = project(doc->scene(), p);
-        return QPointF(r.left() + image.x() * r.width() / kWidth,
-                       r.top() + image.y() * r.height() / kHeight);
-    }
     QPointF drawnCentre(int index) const { return drawn(sphere(index).center); }
     QPoint centreOf(int index) const { return drawnCentre(index).toPoint(); }
     // The spheres whose centres are drawn inside `box` (widget coordinates).
@@ -51,25 +40,6 @@ class ViewSelectTest : public MainWindowTest {
         return inside;
     }
 
-    void key(Qt::Key k, Qt::KeyboardModifiers modifiers = {}) {
-        QTest::keyClick(shownWindow(), k, modifiers);
-    }
-    // The pointer moved to `to` in ten steps, as a hand moves it.
-    void movePointer(QPoint from, QPoint to, Qt::KeyboardModifiers modifiers = {}) {
-        for (int i = 1; i <= 10; ++i)
-            QTest::mouseEvent(QTest::MouseMove, shownWindow(), Qt::NoButton, modifiers,
-                              inWindow(from + (to - from) * i / 10));
-    }
-    void click(QPoint at, Qt::KeyboardModifiers modifiers = {},
-               Qt::MouseButton button = Qt::LeftButton) {
-        QTest::mouseClick(shownWindow(), button, modifiers, inWindow(at));
-    }
-    // A left drag: pressed at `from`, moved there in ten steps with the button held, released.
-    void drag(QPoint from, QPoint to, Qt::KeyboardModifiers modifiers = {}) {
-        QTest::mousePress(shownWindow(), Qt::LeftButton, modifiers, inWindow(from));
-        movePointer(from, to, modifiers);
-        QTest::mouseRelease(shownWindow(), Qt::LeftButton, modifiers, inWindow(to));
-    }
     // Clicks (Shift: Shift+clicks) a sphere's drawn centre; the pointer stays there.
     void clickSphere(int index, Qt::KeyboardModifiers modifiers = {}) {
         const QPoint at = centreOf(index);

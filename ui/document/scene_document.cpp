@@ -392,16 +392,7 @@ int itemCount(const Scene& scene, ItemKind kind) {
 }
 
 QString itemName(const Scene& scene, ItemKind kind, int index) {
-    if (index < 0 || index >= itemCount(scene, kind)) return {};
-    switch (kind) {
-        case ItemKind::Sphere:
-            return QString::fromStdString(scene.spheres[index].name);
-        case ItemKind::Light:
-            return QString::fromStdString(scene.lights[index].name);
-        case ItemKind::Material:
-            return QString::fromStdString(scene.materials[index].name);
-    }
-    return {};
+    return QString::fromStdString(itemNameOf(scene, kind, index));
 }
 
 QString kindNoun(ItemKind kind) {

@@ -3,27 +3,13 @@
 #include <algorithm>
 #include <unordered_map>
 
+#include "document/scene_document.h"
+
 namespace whitted::ui {
-
-namespace {
-
-int countOf(const Scene& scene, ItemKind kind) {
-    switch (kind) {
-        case ItemKind::Sphere:
-            return static_cast<int>(scene.spheres.size());
-        case ItemKind::Light:
-            return static_cast<int>(scene.lights.size());
-        case ItemKind::Material:
-            return static_cast<int>(scene.materials.size());
-    }
-    return 0;
-}
-
-}  // namespace
 
 const std::string& itemNameOf(const Scene& scene, ItemKind kind, int index) {
     static const std::string none;
-    if (index < 0 || index >= countOf(scene, kind)) return none;
+    if (index < 0 || index >= itemCount(scene, kind)) return none;
     switch (kind) {
         case ItemKind::Sphere:
             return scene.spheres[index].name;
@@ -77,20 +63,20 @@ void SceneSelection::rememberNames(const Scene& before) {
     names_.reserve(indices_.size());
     for (int i : indices_) names_.push_back(itemNameOf(before, kind_, i));
     activeName_ = itemNameOf(before, kind_, active_);
-    countBefore_ = countOf(before, kind_);
+    countBefore_ = itemCount(before, kind_);
 }
 
 void SceneSelection::followNames(const Scene& after) {
     if (names_.empty()) return;
     // A list of the same length only had items edited (a rename among
     // them): every item is where it was.
-    if (countOf(after, kind_) == countBefore_) {
+    if (itemCount(after, kind_) == countBefore_) {
         names_.clear();
         return;
     }
     // Names are unique within a kind (SPEC §6), so a name finds its item.
     std::unordered_map<std::string_view, int> where;
-    const int n = countOf(after, kind_);
+    const int n = itemCount(after, kind_);
     where.reserve(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) where.emplace(itemNameOf(after, kind_, i), i);
     std::vector<int> indices;

@@ -297,6 +297,9 @@ bool SceneDocument::editItems(const std::vector<int>& indices, const QString& te
     std::vector<T>& list = itemsOf<T>(scene_);
     std::vector<std::size_t> changed;
     std::vector<T> before, after;
+    changed.reserve(indices.size());
+    before.reserve(indices.size());
+    after.reserve(indices.size());
     for (int index : indices) {
         if (index < 0 || index >= static_cast<int>(list.size())) continue;
         const auto i = static_cast<std::size_t>(index);

@@ -41,6 +41,12 @@ class ListDelta {
             }
     }
     bool empty() const { return !whole_ && index_.empty(); }
+    // Items edits of the same items, which `next` continues: this one then
+    // ends where `next` does (a gesture's steps are kept as one).
+    bool continuesWith(const ListDelta& next) const {
+        return !whole_ && !next.whole_ && index_ == next.index_;
+    }
+    void takeAfter(const ListDelta& next) { after_ = next.after_; }
     // Whether applying the change to `list` adds, removes, renames or
     // reorders items.
     bool changesStructure(const std::vector<T>& list, bool forward) const {
@@ -107,6 +113,22 @@ struct SceneDelta {
     }
     // Only the camera, render settings, background or ambient changed.
     bool headOnly() const { return spheres.empty() && lights.empty() && materials.empty(); }
+    // Changed items of one list alone, the rest as it was.
+    bool itemsOnly() const {
+        const int lists = !spheres.empty() + !lights.empty() + !materials.empty();
+        return lists == 1 && headBefore == headAfter;
+    }
+    // Takes in `next`, an items edit of the same items that follows this one.
+    bool absorb(const SceneDelta& next) {
+        if (!itemsOnly() || !next.itemsOnly() || !(headAfter == next.headBefore) ||
+            !spheres.continuesWith(next.spheres) || !lights.continuesWith(next.lights) ||
+            !materials.continuesWith(next.materials))
+            return false;
+        spheres.takeAfter(next.spheres);
+        lights.takeAfter(next.lights);
+        materials.takeAfter(next.materials);
+        return true;
+    }
     Scene headBefore, headAfter;
     ListDelta<Sphere> spheres;
     ListDelta<Light> lights;
@@ -148,9 +170,13 @@ class SceneEditCommand : public QUndoCommand {
         doc_->applyDelta(delta_, true);
     }
     // QUndoStack asks the step on top whether a new one of the same id joins it.
-    int id() const override { return joinable_ ? 1 : -1; }
+    int id() const override { return joinable_ ? 1 : delta_.itemsOnly() ? 2 : -1; }
     bool mergeWith(const QUndoCommand* other) override {
         const auto* next = static_cast<const SceneEditCommand*>(other);
+        // Inside a gesture (a drag of G, S or a slider), the edits of the same
+        // items keep one before and one after: moving 100,000 spheres kept
+        // 17 MB a pointer event.
+        if (id() == 2) return doc_->gestureDepth_ > 0 && delta_.absorb(next->delta_);
         if (!doc_->runOpen_ || !joinable_ || !next->joinable_ ||
             sinceLast_.elapsed() >= SceneDocument::kRunGapMs)
             return false;

@@ -4,8 +4,9 @@
 // Left drag orbits about the surface point under the cursor where the drag
 // starts, right or middle drag pans, the wheel dollies towards what is under
 // the cursor; a click without a drag picks the sphere or light under it. The keys
-// (arrows orbit, W/A/S/D/Q/E walk, +/- zoom, Home resets to the scene's own
-// camera, F frames the selected sphere) are QActions, listed by cameraActions():
+// (arrows orbit, W/A/S/D/Q/E walk in fly mode, +/- zoom, Home resets to the
+// scene's own camera, F frames the selected sphere, G moves, S scales, B boxes)
+// are QActions, listed by cameraActions():
 // the actions are the one table that binds the keys, fills the View menu and
 // the Keyboard and Mouse help, so the three cannot drift apart. The arrows turn
 // about the pivot: the selected sphere after F, else the point the last drag
@@ -15,7 +16,7 @@
 // than half a second apart, is one undo step. Over the picture the view draws
 // the selection, the lights and the name under the cursor (view_overlay.h).
 //
-// Left drag orbits, but Alt+left drag on a selected item moves the selection
+// Alt+left drag on a selected item moves the selection
 // (as G does, kept on release). Click selects what is under the pointer,
 // Shift+click adds it to the selection or takes it out; B, then a drag,
 // selects the spheres and lights inside the box (Shift: adds to the selection).

@@ -167,7 +167,11 @@ void ScenePanel::setFilter(ItemKind kind, const QString& text) {
 // The row in the list as shown, or -1 when the filter hides it.
 int ScenePanel::shownRow(ItemKind kind, int row) const {
     const Tab& t = tab(kind);
-    return row < 0 ? -1 : t.shown->mapFromSource(t.model->index(row)).row();
+    if (row < 0) return -1;
+    // Unfiltered, the rows are the model's: mapping 100,000 selected rows
+    // through the proxy took 20 ms of a box selection.
+    if (t.filter->text().isEmpty()) return row < t.model->rowCount() ? row : -1;
+    return t.shown->mapFromSource(t.model->index(row)).row();
 }
 
 void ScenePanel::select(ItemKind kind, int index) {

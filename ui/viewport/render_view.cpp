@@ -393,7 +393,7 @@ QList<QPair<QString, QString>> RenderView::mouseControls() {
         {tr("B, then drag"),
          tr("Select the spheres (or lights) inside the box; Shift: add to the selection")},
         {tr("G, then move"), tr("Move the selected spheres or lights with the pointer")},
-        {tr("Alt+drag on a selected sphere"), tr("Move the selection; let go to keep it")},
+        {tr("Alt+drag on a selected sphere or light"), tr("Move the selection; let go to keep it")},
         {tr("X, Y or Z while moving"), tr("Move along that axis only; again: freely")},
         {tr("A number while moving"), tr("Move by exactly that much (G X 2 Enter)")},
         {tr("Ctrl while moving"),

@@ -386,6 +386,30 @@ TEST_F(ViewSelectTest, PropertyPanel_TwoSelected_MixedRadius_TypedValueAndMateri
     EXPECT_EQ(steps(), n + 1);
 }
 
+// Two spheres of two materials: the sphere page's finish rows show "mixed"
+// where the materials differ, and a value typed there goes to both materials.
+TEST_F(ViewSelectTest, PropertyPanel_TwoMaterials_FinishTypedOnceSetsBoth) {
+    const int blue = findMaterial(doc->scene(), sphere(kBlueBall).material);
+    const int purple = findMaterial(doc->scene(), sphere(kPurpleBall).material);
+    ASSERT_NE(blue, purple);
+    ASSERT_TRUE(editAndWait([&](Scene& s) { s.materials[purple].reflectivity = 0.1; }));
+    selectBlueAndPurple();
+    auto* reflectivity = child<NumberSpinBox>("sphereMaterialReflectivity");
+    ASSERT_NE(reflectivity, nullptr);
+    ASSERT_NE(doc->scene().materials[blue].reflectivity, 0.1);
+    EXPECT_TRUE(reflectivity->mixed());
+
+    const int n = steps();
+    reflectivity->setFocus();
+    reflectivity->selectAll();
+    QTest::keyClicks(reflectivity, QStringLiteral("0.7"));
+    QTest::keyClick(reflectivity, Qt::Key_Return);
+    EXPECT_EQ(doc->scene().materials[blue].reflectivity, 0.7);
+    EXPECT_EQ(doc->scene().materials[purple].reflectivity, 0.7);
+    EXPECT_EQ(steps(), n + 1);
+    EXPECT_FALSE(reflectivity->mixed());
+}
+
 TEST_F(ViewSelectTest, AltDrag_OnASelectedBall_MovesIt_OneStep_CameraStays) {
     clickSphere(kBlueBall);
     const Camera camera = doc->scene().camera;

@@ -21,15 +21,21 @@ MaterialPage::MaterialPage(SceneDocument* doc, QWidget* parent)
     form->addRow(tr("Preset:"), buildPresetChooser());
     rows_ = std::make_unique<MaterialRows>(
         doc_, this, form, MaterialRows::Extent::All, QStringLiteral("material"),
-        [this](const Scene&) { return index_; },
+        [this](const Scene&) { return targets(); },
         [this](const QString& what) { return changeText(what)(); });
     addCheckerRows(form);
 }
 
 MaterialPage::~MaterialPage() = default;
 
+std::vector<int> MaterialPage::targets() const {
+    return editTargets(*doc_, ItemKind::Material, index_);
+}
+
 QString MaterialPage::materialName() const {
-    return itemName(doc_->scene(), ItemKind::Material, index_);
+    const int others = int(targets().size()) - 1;
+    const QString name = itemName(doc_->scene(), ItemKind::Material, index_);
+    return others == 0 ? name : tr("%1 (and %2 more)").arg(name).arg(others);
 }
 
 std::function<QString()> MaterialPage::changeText(const QString& what) const {
@@ -37,7 +43,7 @@ std::function<QString()> MaterialPage::changeText(const QString& what) const {
 }
 
 void MaterialPage::editMaterial(const QString& what, const std::function<void(Material&)>& change) {
-    if (!editItemOrTell(this, doc_, index_, changeText(what)(), change)) refresh();
+    if (!editItemsOrTell(this, doc_, targets(), changeText(what)(), change)) refresh();
 }
 
 // Shows the preset the material's finish is, or "Custom"; choosing one
@@ -56,8 +62,8 @@ QComboBox* MaterialPage::buildPresetChooser() {
         const int preset = preset_->itemData(row).toInt();
         if (preset < 0) return refresh();
         const MaterialPreset& p = materialPresets()[static_cast<std::size_t>(preset)];
-        if (!editItemOrTell<Material>(
-                this, doc_, index_,
+        if (!editItemsOrTell<Material>(
+                this, doc_, targets(),
                 tr("Apply preset %1 to %2").arg(preset_->itemText(row), materialName()),
                 [&p](Material& m) { m = withPreset(m, p); }))
             refresh();
@@ -74,9 +80,9 @@ void MaterialPage::addCheckerRows(QFormLayout* form) {
     // The size field keeps showing its last value while the checker is off, so
     // turning it back on restores what the user had.
     std::vector<DoubleField*> unused;
-    checkerSize_ = makeItemField<Material>(
+    checkerSize_ = makeItemsField<Material>(
         doc_, QStringLiteral("materialCheckerSize"), kPositiveLength,
-        [this](const Scene&) { return index_; },
+        [this](const Scene&) { return targets(); },
         [](auto& m) { return m.checker ? &m.checker->size : nullptr; },
         changeText(tr("checker size")), unused);
     {
@@ -106,7 +112,7 @@ void MaterialPage::setIndex(int index) {
 void MaterialPage::refresh() {
     const Material* material = itemAt(doc_->scene().materials, index_);
     if (!material) return;
-    name_->setText(QString::fromStdString(material->name));
+    name_->setText(materialName());
     {
         const QSignalBlocker block(preset_);
         int shown = 0;  // Custom

@@ -33,6 +33,9 @@ class MaterialPage : public QWidget {
   private:
     QComboBox* buildPresetChooser();
     void addCheckerRows(QFormLayout* form);
+    // The shown material, then the others selected with it: what an edit changes.
+    std::vector<int> targets() const;
+    // "glass", or "glass (and 2 more)" for an undo step's name.
     QString materialName() const;
     std::function<QString()> changeText(const QString& what) const;
     void editMaterial(const QString& what, const std::function<void(Material&)>& change);

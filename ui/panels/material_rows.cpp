@@ -8,13 +8,13 @@
 namespace whitted::ui {
 
 MaterialRows::MaterialRows(SceneDocument* doc, QWidget* owner, QFormLayout* form, Extent extent,
-                           const QString& prefix, Locate locate, TextFn text)
-    : doc_(doc), locate_(std::move(locate)), text_(std::move(text)), diffuse_(new ColorButton) {
+                           const QString& prefix, Targets targets, TextFn text)
+    : doc_(doc), targets_(std::move(targets)), text_(std::move(text)), diffuse_(new ColorButton) {
     diffuse_->setObjectName(prefix + QStringLiteral("Diffuse"));
     QObject::connect(diffuse_, &ColorButton::colorEdited, owner, [this, owner](const Vec3& c) {
-        editItemOrTell<Material>(owner, doc_, locate_(doc_->scene()),
-                                 text_(QObject::tr("diffuse colour")),
-                                 [c](Material& m) { m.diffuse = c; });
+        editItemsOrTell<Material>(owner, doc_, targets_(doc_->scene()),
+                                  text_(QObject::tr("diffuse colour")),
+                                  [c](Material& m) { m.diffuse = c; });
     });
     const bool all = extent == Extent::All;
     // On a sphere's page "Colour" is what the user looks for; the material page
@@ -44,14 +44,15 @@ MaterialRows::MaterialRows(SceneDocument* doc, QWidget* owner, QFormLayout* form
 
 DoubleField* MaterialRows::scalar(const QString& name, const DoubleFieldSpec& spec,
                                   double Material::*member, const QString& what) {
-    return makeItemField<Material>(
-        doc_, name, spec, locate_, [member](auto& m) { return &(m.*member); },
+    return makeItemsField<Material>(
+        doc_, name, spec, targets_, [member](auto& m) { return &(m.*member); },
         [this, what] { return text_(what); }, fields_);
 }
 
 void MaterialRows::refresh() {
     const Scene& scene = doc_->scene();
-    const Material* m = itemAt(scene.materials, locate_(scene));
+    const std::vector<int> targets = targets_(scene);
+    const Material* m = targets.empty() ? nullptr : itemAt(scene.materials, targets.front());
     if (!m) return;
     diffuse_->setColor(m->diffuse);
     refreshAll(fields_);

@@ -1,6 +1,8 @@
-// Form rows editing one material's finish: all of them on the material page,
-// the main ones (colour, reflectivity, transparency, index of refraction) on
-// the sphere page, where they edit the sphere's material in place.
+// Form rows editing materials' finish: all of them on the material page, the
+// main ones (colour, reflectivity, transparency, index of refraction) on the
+// sphere page, where they edit the selected spheres' materials in place. They
+// show the first material's values ("mixed" where the others differ) and set
+// them all.
 #pragma once
 
 #include <functional>
@@ -21,15 +23,15 @@ struct DoubleFieldSpec;
 
 class MaterialRows {
   public:
-    using Locate = std::function<int(const Scene&)>;             // the material's index, or -1
-    using TextFn = std::function<QString(const QString& what)>;  // undo text of a change
+    using Targets = std::function<std::vector<int>(const Scene&)>;  // the materials' indices
+    using TextFn = std::function<QString(const QString& what)>;     // undo text of a change
     enum class Extent { Main, All };
 
     // Adds the rows to `form`; widgets are named `prefix` + "Diffuse", "Reflectivity", ...
     MaterialRows(SceneDocument* doc, QWidget* owner, QFormLayout* form, Extent extent,
-                 const QString& prefix, Locate locate, TextFn text);
+                 const QString& prefix, Targets targets, TextFn text);
 
-    // Shows the located material's values; emits nothing.
+    // Shows the first target's values; emits nothing.
     void refresh();
 
   private:
@@ -37,7 +39,7 @@ class MaterialRows {
                         const QString& what);
 
     SceneDocument* doc_;
-    Locate locate_;
+    Targets targets_;
     TextFn text_;
     ColorButton* diffuse_;
     std::vector<DoubleField*> fields_;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <vector>
 
 #include <QDoubleSpinBox>
 #include <QPointer>
@@ -187,12 +188,14 @@ void showRefusal(QWidget* parent, const QString& reason);
 bool editOrTell(QWidget* from, SceneDocument* doc, const QString& text,
                 const std::function<void(Scene&)>& change);
 
-// The same for an edit of one item (SceneDocument::editItem).
+// The same for one change to several items of a list (SceneDocument::editItems).
 template <class T>
-bool editItemOrTell(QWidget* from, SceneDocument* doc, int index, const QString& text,
-                    const std::function<void(T&)>& change) {
+bool editItemsOrTell(QWidget* from, SceneDocument* doc, const std::vector<int>& indices,
+                     const QString& text, const std::function<void(T&)>& change) {
     QString error;
-    if (doc->editItem<T>(index, text, change, &error)) return true;
+    if (doc->editItems<T>(
+            indices, text, [&](T& item, int) { change(item); }, &error))
+        return true;
     showRefusal(from, error);
     return false;
 }

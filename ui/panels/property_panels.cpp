@@ -70,13 +70,9 @@ std::function<QString()> PropertyPanel::changeText(const QString& what) const {
 }
 
 void PropertyPanel::editLight(const QString& what, const std::function<void(Light&)>& change) {
-    QString error;
-    if (doc_->editItems<Light>(
-            editTargets(*doc_, ItemKind::Light, index_), changeText(what)(),
-            [&](Light& light, int) { change(light); }, &error))
-        return;
-    showRefusal(this, error);
-    refresh();
+    if (!editItemsOrTell<Light>(this, doc_, editTargets(*doc_, ItemKind::Light, index_),
+                                changeText(what)(), change))
+        refresh();
 }
 
 QWidget* PropertyPanel::buildLightPage() {

@@ -1,5 +1,6 @@
 #include "panels/sphere_page.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <QComboBox>
@@ -54,7 +55,7 @@ SpherePage::SpherePage(SceneDocument* doc, QWidget* parent)
     form->addRow(QString(), users_);  // "Shared by 3 spheres" says what it is
     materialRows_ = std::make_unique<MaterialRows>(
         doc_, this, form, MaterialRows::Extent::Main, QStringLiteral("sphereMaterial"),
-        [this](const Scene& s) { return materialIndex(s); },
+        [this](const Scene& s) { return materialTargets(s); },
         [this](const QString& what) {
             return tr("Change %1 of material %2").arg(what, materialName());
         });
@@ -73,13 +74,10 @@ QWidget* SpherePage::buildMaterialChoice() {
     connect(material_, &QComboBox::currentIndexChanged, this, [this](int i) {
         if (i < 0 || i >= static_cast<int>(doc_->scene().materials.size())) return;
         const std::string material = doc_->scene().materials[i].name;
-        QString error;
-        if (!doc_->editItems<Sphere>(
-                targets(), tr("Change material of %1").arg(sphereName()),
-                [material](Sphere& sp, int) { sp.material = material; }, &error)) {
-            showRefusal(this, error);
+        if (!editItemsOrTell<Sphere>(this, doc_, targets(),
+                                     tr("Change material of %1").arg(sphereName()),
+                                     [material](Sphere& sp) { sp.material = material; }))
             refresh();
-        }
     });
     makeUnique_ = new QPushButton(tr("Make unique"));
     makeUnique_->setObjectName(QStringLiteral("sphereMakeUnique"));
@@ -104,9 +102,15 @@ void SpherePage::setIndex(int index) {
     refresh();
 }
 
-int SpherePage::materialIndex(const Scene& scene) const {
-    const Sphere* sphere = itemAt(scene.spheres, index_);
-    return sphere ? findMaterial(scene, sphere->material) : -1;
+std::vector<int> SpherePage::materialTargets(const Scene& scene) const {
+    std::vector<int> materials;
+    for (int i : editTargets(*doc_, ItemKind::Sphere, index_)) {
+        const Sphere* sphere = itemAt(scene.spheres, i);
+        const int m = sphere ? findMaterial(scene, sphere->material) : -1;
+        if (m >= 0 && std::find(materials.begin(), materials.end(), m) == materials.end())
+            materials.push_back(m);
+    }
+    return materials;
 }
 
 std::vector<int> SpherePage::targets() const {
@@ -116,12 +120,15 @@ std::vector<int> SpherePage::targets() const {
 QString SpherePage::sphereName() const {
     const std::size_t others = targets().size() - 1;
     const QString name = itemName(doc_->scene(), ItemKind::Sphere, index_);
-    return others == 0 ? name
-                       : tr("%1 (and %2 more)").arg(name).arg(others);
+    return others == 0 ? name : tr("%1 (and %2 more)").arg(name).arg(others);
 }
 
 QString SpherePage::materialName() const {
-    return itemName(doc_->scene(), ItemKind::Material, materialIndex(doc_->scene()));
+    const std::vector<int> materials = materialTargets(doc_->scene());
+    const QString name =
+        itemName(doc_->scene(), ItemKind::Material, materials.empty() ? -1 : materials.front());
+    return materials.size() <= 1 ? name
+                                 : tr("%1 (and %2 more)").arg(name).arg(materials.size() - 1);
 }
 
 void SpherePage::refresh() {
@@ -152,10 +159,11 @@ void SpherePage::refreshMaterialChoice(const Sphere& sphere) {
         material_->setCurrentIndex(mixed ? -1 : findMaterial(scene, sphere.material));
     }
     const int users = spheresUsing(scene, sphere.material);
-    users_->setText(material_->currentIndex() < 0
-                        ? tr("Several materials; the rows below are %1's").arg(materialName())
-                    : users > 1 ? tr("Shared by %1 spheres").arg(users)
-                                : tr("Used by this sphere only"));
+    users_->setText(
+        material_->currentIndex() < 0
+            ? tr("%1 materials: the rows below set them all").arg(materialTargets(scene).size())
+        : users > 1 ? tr("Shared by %1 spheres").arg(users)
+                    : tr("Used by this sphere only"));
     makeUnique_->setEnabled(users > 1);
 }
 

@@ -31,9 +31,11 @@ class SpherePage : public QWidget {
   private:
     QWidget* buildMaterialChoice();
     void refreshMaterialChoice(const Sphere& sphere);
-    int materialIndex(const Scene& scene) const;  // of the shown sphere's material, or -1
     // The shown sphere, then the others selected with it: what an edit changes.
     std::vector<int> targets() const;
+    // The materials of those spheres, each once, the shown sphere's first: what
+    // the material rows change.
+    std::vector<int> materialTargets(const Scene& scene) const;
     // "ball", or "ball and 3 other spheres" for an undo step's name.
     QString sphereName() const;
     QString materialName() const;

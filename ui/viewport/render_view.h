@@ -112,8 +112,6 @@ class RenderView : public QWidget {
     QSize sizeHint() const override { return {800, 600}; }
 
   signals:
-    // A click picked a sphere or light; index -1: the click hit nothing.
-    void picked(whitted::ui::ItemKind kind, int index);
     // What a move in progress does and which keys it takes, for the status
     // bar; empty when the move ends.
     void moveMessage(const QString& text);

@@ -271,7 +271,6 @@ void RenderView::clickSelect(const QPointF& pos, bool toggle) {
         doc_->selection()->toggle(kind, index);
     else if (index >= 0)
         doc_->selection()->selectOne(kind, index);
-    emit picked(kind, index);
 }
 
 void RenderView::startBoxSelect() {

@@ -43,6 +43,8 @@ void paintSphereOutline(QPainter& painter, const Scene& scene, const QRect& r, c
 
 void paintSelectedSpheres(QPainter& painter, const Scene& scene, const QRect& r,
                           const SceneSelection& selection) {
+    // Indices ascend: the last one says whether all are spheres of this scene.
+    if (selection.empty() || selection.indices().back() >= int(scene.spheres.size())) return;
     const int active = selection.active();
     if (selection.count() <= kMostOutlines) {
         for (int i : selection.indices())

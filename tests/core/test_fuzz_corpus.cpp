@@ -7,7 +7,9 @@
 #include <filesystem>
 #include <string>
 
+#include "scene/scene_fragment.h"
 #include "scene/scene_io.h"
+#include "support/core_support.h"
 #include "support/test_support.h"
 
 namespace whitted {
@@ -34,6 +36,30 @@ TEST(FuzzCorpus, EveryInput_LoadsAndRoundTripsOrIsRefusedWithAMessage) {
     }
     // Both outcomes are exercised: the repository's scenes load, the broken ones do not.
     EXPECT_GE(loaded, 5);
+    EXPECT_GE(refused, 10);
+}
+
+// The same bytes from the clipboard (Ctrl+V): refused naming the clipboard,
+// never half-pasted, or pasted into a valid scene that stays valid.
+TEST(FuzzCorpus, EveryInput_PastedIsRefusedWithAMessageOrLeavesTheSceneValid) {
+    Scene into = test::seedScene(64, 36);
+    ASSERT_FALSE(validateScene(into));
+    int pasted = 0, refused = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(WHITTED_FUZZ_CORPUS_DIR)) {
+        SCOPED_TRACE(entry.path().filename().string());
+        const std::string text = test::readFile(entry.path());
+        try {
+            const PasteResult result = pasteFragment(into, text);
+            EXPECT_FALSE(validateScene(result.scene));
+            EXPECT_EQ(result.scene.spheres.size(), into.spheres.size() + result.newSpheres.size());
+            ++pasted;
+        } catch (const SceneError& e) {
+            EXPECT_EQ(std::string(e.what()).rfind("clipboard: ", 0), 0u) << e.what();
+            ++refused;
+        }
+    }
+    // The repository's scenes and the fragment paste; the broken files do not.
+    EXPECT_GE(pasted, 5);
     EXPECT_GE(refused, 10);
 }
 

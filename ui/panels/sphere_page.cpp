@@ -55,7 +55,7 @@ SpherePage::SpherePage(SceneDocument* doc, QWidget* parent)
     form->addRow(QString(), users_);  // "Shared by 3 spheres" says what it is
     materialRows_ = std::make_unique<MaterialRows>(
         doc_, this, form, MaterialRows::Extent::Main, QStringLiteral("sphereMaterial"),
-        [this](const Scene& s) { return materialTargets(s); },
+        [this](const Scene&) { return materials_; },
         [this](const QString& what) {
             return tr("Change %1 of material %2").arg(what, materialName());
         });
@@ -104,9 +104,12 @@ void SpherePage::setIndex(int index) {
 
 std::vector<int> SpherePage::materialTargets(const Scene& scene) const {
     std::vector<int> materials;
+    const std::string* last = nullptr;  // neighbours mostly share a material
     for (int i : editTargets(*doc_, ItemKind::Sphere, index_)) {
         const Sphere* sphere = itemAt(scene.spheres, i);
-        const int m = sphere ? findMaterial(scene, sphere->material) : -1;
+        if (!sphere || (last && sphere->material == *last)) continue;
+        last = &sphere->material;
+        const int m = findMaterial(scene, sphere->material);
         if (m >= 0 && std::find(materials.begin(), materials.end(), m) == materials.end())
             materials.push_back(m);
     }
@@ -124,7 +127,7 @@ QString SpherePage::sphereName() const {
 }
 
 QString SpherePage::materialName() const {
-    const std::vector<int> materials = materialTargets(doc_->scene());
+    const std::vector<int>& materials = materials_;
     const QString name =
         itemName(doc_->scene(), ItemKind::Material, materials.empty() ? -1 : materials.front());
     return materials.size() <= 1 ? name
@@ -134,6 +137,9 @@ QString SpherePage::materialName() const {
 void SpherePage::refresh() {
     const Sphere* sphere = itemAt(doc_->scene().spheres, index_);
     if (!sphere) return;
+    // Once a refresh, for all the rows: found afresh, a selection of 100,000
+    // spheres took 5 ms each time, a dozen times a refresh.
+    materials_ = materialTargets(doc_->scene());
     name_->setText(sphereName());
     refreshAll(fields_);
     refreshMaterialChoice(*sphere);
@@ -159,11 +165,10 @@ void SpherePage::refreshMaterialChoice(const Sphere& sphere) {
         material_->setCurrentIndex(mixed ? -1 : findMaterial(scene, sphere.material));
     }
     const int users = spheresUsing(scene, sphere.material);
-    users_->setText(
-        material_->currentIndex() < 0
-            ? tr("%1 materials: the rows below set them all").arg(materialTargets(scene).size())
-        : users > 1 ? tr("Shared by %1 spheres").arg(users)
-                    : tr("Used by this sphere only"));
+    users_->setText(material_->currentIndex() < 0
+                        ? tr("%1 materials: the rows below set them all").arg(materials_.size())
+                    : users > 1 ? tr("Shared by %1 spheres").arg(users)
+                                : tr("Used by this sphere only"));
     makeUnique_->setEnabled(users > 1);
 }
 

@@ -48,6 +48,7 @@ class SpherePage : public QWidget {
     QPushButton* makeUnique_ = nullptr;
     std::vector<DoubleField*> fields_;
     std::unique_ptr<MaterialRows> materialRows_;
+    std::vector<int> materials_;  // materialTargets() at the last refresh
 };
 
 }  // namespace whitted::ui

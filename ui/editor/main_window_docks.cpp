@@ -52,11 +52,9 @@ void MainWindow::buildDocks() {
             });
     buildTradeoffDock();
 
-    connect(scenePanel_, &ScenePanel::selectionChanged, this,
-            [this, tabs](ItemKind kind, int index) {
-                propertyPanel_->showItem(kind, index);
-                if (index >= 0) tabs->setCurrentWidget(propertyPanel_);
-            });
+    connect(scenePanel_, &ScenePanel::selectionChanged, this, [this, tabs](ItemKind, int index) {
+        if (index >= 0) tabs->setCurrentWidget(propertyPanel_);
+    });
 }
 
 void MainWindow::buildTradeoffDock() {

@@ -44,24 +44,17 @@ PropertyPanel::PropertyPanel(SceneDocument* doc, QWidget* parent)
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(pages_);
     connect(doc_, &SceneDocument::sceneChanged, this, &PropertyPanel::refresh);
-    // Shift+click adds to what the page edits: its name and mixed fields change.
     connect(doc_->selection(), &SceneSelection::changed, this, &PropertyPanel::refresh);
     refresh();
 }
 
-void PropertyPanel::showItem(ItemKind kind, int index) {
-    kind_ = kind;
-    index_ = index;
-    refresh();
-}
-
 bool PropertyPanel::valid() const {
-    return index_ >= 0 && index_ < itemCount(doc_->scene(), kind_);
+    return index() >= 0 && index() < itemCount(doc_->scene(), kind());
 }
 
 QString PropertyPanel::itemLabel() const {
-    const int others = int(editTargets(*doc_, kind_, index_).size()) - 1;
-    const QString name = itemName(doc_->scene(), kind_, index_);
+    const int others = int(editTargets(*doc_, kind(), index()).size()) - 1;
+    const QString name = itemName(doc_->scene(), kind(), index());
     return others == 0 ? name : tr("%1 (and %2 more)").arg(name).arg(others);
 }
 
@@ -70,7 +63,7 @@ std::function<QString()> PropertyPanel::changeText(const QString& what) const {
 }
 
 void PropertyPanel::editLight(const QString& what, const std::function<void(Light&)>& change) {
-    if (!editItemsOrTell<Light>(this, doc_, editTargets(*doc_, ItemKind::Light, index_),
+    if (!editItemsOrTell<Light>(this, doc_, editTargets(*doc_, ItemKind::Light, index()),
                                 changeText(what)(), change))
         refresh();
 }
@@ -80,7 +73,7 @@ QWidget* PropertyPanel::buildLightPage() {
     page->setObjectName(QStringLiteral("lightPage"));
     QFormLayout* form = makeForm(page);
     const Targets targets = [this](const Scene&) {
-        return editTargets(*doc_, ItemKind::Light, index_);
+        return editTargets(*doc_, ItemKind::Light, index());
     };
 
     lightName_ = makeNameLabel(QStringLiteral("lightName"));
@@ -110,13 +103,13 @@ void PropertyPanel::refresh() {
         return;
     }
     const Scene& scene = doc_->scene();
-    switch (kind_) {
+    switch (kind()) {
         case ItemKind::Sphere:
-            spherePage_->setIndex(index_);
+            spherePage_->setIndex(index());
             pages_->setCurrentWidget(spherePage_);
             break;
         case ItemKind::Light: {
-            const Light& light = scene.lights[index_];
+            const Light& light = scene.lights[index()];
             lightName_->setText(itemLabel());
             refreshAll(lightFields_);
             lightColor_->setColor(light.color);
@@ -124,7 +117,7 @@ void PropertyPanel::refresh() {
             break;
         }
         case ItemKind::Material:
-            materialPage_->setIndex(index_);
+            materialPage_->setIndex(index());
             pages_->setCurrentWidget(materialPage_);
             break;
     }

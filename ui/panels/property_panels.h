@@ -26,13 +26,13 @@ class SpherePage;
 class PropertyPanel : public QWidget {
     Q_OBJECT
   public:
+    // Shows the document's selection: its active item's page, editing every
+    // selected item; nothing selected, the empty page.
     explicit PropertyPanel(SceneDocument* doc, QWidget* parent = nullptr);
 
-    // Shows item `index` of `kind`; -1, or an index that stops existing, shows the
-    // empty page.
-    void showItem(ItemKind kind, int index);
-
   private:
+    ItemKind kind() const { return doc_->selection()->kind(); }
+    int index() const { return doc_->selection()->active(); }
     QWidget* buildLightPage();
     void refresh();
     bool valid() const;
@@ -42,8 +42,6 @@ class PropertyPanel : public QWidget {
     void editLight(const QString& what, const std::function<void(Light&)>& change);
 
     SceneDocument* doc_;
-    ItemKind kind_ = ItemKind::Sphere;
-    int index_ = -1;
     QStackedWidget* pages_;
     QWidget* emptyPage_;
     SpherePage* spherePage_;

@@ -2,6 +2,7 @@
 # in the build directory) as a desktop program, in the FHS layout:
 #   bin/                     whitted, whitted-render, whitted-farm, whitted-numerics, whitted-tradeoff,
 #                            whitted-field
+#   lib/whitted/             whitted_oiio.so, the plug-in that reads and writes image files
 #   share/applications/      the .desktop file (opens scene files in the editor)
 #   share/metainfo/          AppStream metadata
 #   share/mime/packages/     the scene files' MIME type
@@ -15,6 +16,7 @@ set(WHITTED_RESOURCES ${PROJECT_SOURCE_DIR}/resources)
 
 install(TARGETS whitted whitted-render whitted-farm whitted-numerics whitted-tradeoff whitted-field
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS whitted_oiio LIBRARY DESTINATION ${WHITTED_CODEC_DIR})
 install(FILES ${WHITTED_RESOURCES}/${WHITTED_APP_ID}.desktop
         DESTINATION ${CMAKE_INSTALL_DATADIR}/applications)
 install(FILES ${WHITTED_RESOURCES}/${WHITTED_APP_ID}.metainfo.xml

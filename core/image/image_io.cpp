@@ -1,19 +1,49 @@
 #include "image/image_io.h"
 
-#include <cstdint>
+#include <dlfcn.h>
 
+#include <cstdint>
 #include <system_error>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
 #include "base/atomic_file.h"
+#include "image/image_codec.h"
 #include "image/srgb.h"
 
 namespace whitted {
 namespace fs = std::filesystem;
 
 namespace {
+
+struct LoadedCodec {
+    const ImageCodec* codec = nullptr;
+    std::string failure;  // why it could not be loaded
+};
+
+// The plug-in lies where the build and the install put it, relative to the
+// program (CMake: WHITTED_CODEC_FROM_PROGRAM), so a build tree and an installed
+// tree each find their own.
+LoadedCodec loadCodec() {
+    std::error_code error;
+    const fs::path program = fs::read_symlink("/proc/self/exe", error);
+    const fs::path plugin = (program.parent_path() / WHITTED_CODEC_FROM_PROGRAM).lexically_normal();
+    void* handle = dlopen(plugin.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) return {nullptr, "cannot load the image library: " + std::string(dlerror())};
+    using Entry = const ImageCodec* (*)();
+    const auto entry = reinterpret_cast<Entry>(dlsym(handle, "whitted_image_codec"));
+    if (!entry) return {nullptr, "cannot load the image library: " + std::string(dlerror())};
+    return {entry(), {}};
+}
+
+const LoadedCodec& loadedCodec() {
+    static const LoadedCodec loaded = loadCodec();
+    return loaded;
+}
+
+const ImageCodec& codecFor(const fs::path& file) {
+    const LoadedCodec& loaded = loadedCodec();
+    if (!loaded.codec) throw ImageIoError(file.string() + ": " + loaded.failure);
+    return *loaded.codec;
+}
 
 ImageFormatInfo formatOrThrow(const fs::path& file) {
     const auto format = imageFormatFor(file);
@@ -23,47 +53,59 @@ ImageFormatInfo formatOrThrow(const fs::path& file) {
     return *format;
 }
 
-OIIO::ImageSpec imageSpec(const Image& image, const fs::path& file, const ImageFormatInfo& format,
-                          const ImageMetadata& metadata) {
+CodecAttribute text(std::string value) {
+    return {std::move(value), std::nullopt, std::nullopt};
+}
+CodecAttribute integer(int value) {
+    return {{}, value, std::nullopt};
+}
+CodecAttribute real(float value) {
+    return {{}, std::nullopt, value};
+}
+
+// The picture's pixels, as the format stores them: 8-bit sRGB codes or linear floats.
+CodecPicture pictureOf(const Image& image, const fs::path& file, const ImageFormatInfo& format,
+                       const ImageMetadata& metadata) {
     if (image.width <= 0 || image.height <= 0) throw ImageIoError(file.string() + ": empty image");
-    OIIO::ImageSpec spec(image.width, image.height, 3,
-                         format.isFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    CodecPicture p;
+    p.width = p.fullWidth = image.width;
+    p.height = p.fullHeight = image.height;
+    p.eightBit = !format.isFloat;
+    if (p.eightBit) {
+        p.codes.resize(image.rgb.size());
+        srgbEncode8(image.rgb.data(), image.rgb.size(), p.codes.data());
+    } else {
+        p.values.assign(image.rgb.begin(), image.rgb.end());
+    }
+    auto& a = p.attributes;
     // Empty strings are left out: Debian's OpenImageIO asserts on an empty
     // ImageDescription when writing JPEG (iptc.cpp, encode_iptc_iim_one_tag).
-    if (!metadata.software.empty()) spec.attribute("Software", metadata.software);
-    if (!metadata.description.empty()) spec.attribute("ImageDescription", metadata.description);
-    spec.attribute("whitted:width", metadata.settings.width);
-    spec.attribute("whitted:height", metadata.settings.height);
-    spec.attribute("whitted:samples_per_pixel", metadata.settings.samplesPerPixel);
-    spec.attribute("whitted:max_depth", metadata.settings.maxDepth);
-    spec.attribute("whitted:precision", std::string(precisionName(metadata.settings.precision)));
-    spec.attribute("whitted:render_seconds", float(metadata.renderSeconds));
+    if (!metadata.software.empty()) a["Software"] = text(metadata.software);
+    if (!metadata.description.empty()) a["ImageDescription"] = text(metadata.description);
+    a["whitted:width"] = integer(metadata.settings.width);
+    a["whitted:height"] = integer(metadata.settings.height);
+    a["whitted:samples_per_pixel"] = integer(metadata.settings.samplesPerPixel);
+    a["whitted:max_depth"] = integer(metadata.settings.maxDepth);
+    a["whitted:precision"] = text(std::string(precisionName(metadata.settings.precision)));
+    a["whitted:render_seconds"] = real(float(metadata.renderSeconds));
     if (!metadata.qualityTarget.empty()) {
-        spec.attribute("whitted:quality", qualityLine(metadata));
-        spec.attribute("whitted:quality_target", metadata.qualityTarget);
+        a["whitted:quality"] = text(qualityLine(metadata));
+        a["whitted:quality_target"] = text(metadata.qualityTarget);
         if (!metadata.qualityReached.empty())
-            spec.attribute("whitted:quality_reached", metadata.qualityReached);
+            a["whitted:quality_reached"] = text(metadata.qualityReached);
     }
-    spec.attribute("oiio:ColorSpace", format.isFloat ? "Linear" : "sRGB");
-    if (format.format == ImageFormat::Jpeg) spec.attribute("CompressionQuality", 95);
-    return spec;
+    a["oiio:ColorSpace"] = text(format.isFloat ? "Linear" : "sRGB");
+    if (format.format == ImageFormat::Jpeg) a["CompressionQuality"] = integer(95);
+    return p;
 }
 
 // Encoded in memory first, then written with checked system calls: the
 // format writers do not report a failed write (a full disk gave a truncated
 // PNG and no error), and a truncated file must never replace a good one.
-void encodeAndReplace(const fs::path& file, const OIIO::ImageSpec& spec, const void* pixels) {
+void encodeAndReplace(const fs::path& file, const CodecPicture& picture) {
     std::vector<unsigned char> encoded;
-    {
-        OIIO::Filesystem::IOVecOutput memory(encoded);
-        auto out = OIIO::ImageOutput::create(file.string());
-        if (!out) throw ImageIoError(file.string() + ": " + OIIO::geterror());
-        if (!out->set_ioproxy(&memory) || !out->open(file.string(), spec))
-            throw ImageIoError(file.string() + ": " + out->geterror());
-        const bool wrote = out->write_image(spec.format, pixels);
-        const bool closed = out->close();
-        if (!wrote || !closed) throw ImageIoError(file.string() + ": " + out->geterror());
-    }
+    const std::string failure = codecFor(file).encode(file.string(), picture, encoded);
+    if (!failure.empty()) throw ImageIoError(file.string() + ": " + failure);
     try {
         replaceFileAtomically(file, [&](const fs::path& temp) {
             writeAllBytes(temp, {reinterpret_cast<const char*>(encoded.data()), encoded.size()});
@@ -75,19 +117,40 @@ void encodeAndReplace(const fs::path& file, const OIIO::ImageSpec& spec, const v
     }
 }
 
+std::string textOf(const CodecPicture& p, const std::string& name) {
+    const auto it = p.attributes.find(name);
+    return it == p.attributes.end() ? std::string() : it->second.text;
+}
+int integerOf(const CodecPicture& p, const std::string& name, int absent) {
+    const auto it = p.attributes.find(name);
+    return it == p.attributes.end() ? absent : it->second.integer.value_or(absent);
+}
+float realOf(const CodecPicture& p, const std::string& name, float absent) {
+    const auto it = p.attributes.find(name);
+    return it == p.attributes.end() ? absent : it->second.real.value_or(absent);
+}
+
+ImageMetadata metadataOf(const CodecPicture& p) {
+    ImageMetadata m;
+    m.software = textOf(p, "Software");
+    m.description = textOf(p, "ImageDescription");
+    RenderSettings& r = m.settings;
+    r.width = integerOf(p, "whitted:width", r.width);
+    r.height = integerOf(p, "whitted:height", r.height);
+    r.samplesPerPixel = integerOf(p, "whitted:samples_per_pixel", r.samplesPerPixel);
+    r.maxDepth = integerOf(p, "whitted:max_depth", r.maxDepth);
+    r.precision = parsePrecision(textOf(p, "whitted:precision")).value_or(r.precision);
+    m.renderSeconds = realOf(p, "whitted:render_seconds", 0.0f);
+    m.qualityTarget = textOf(p, "whitted:quality_target");
+    m.qualityReached = textOf(p, "whitted:quality_reached");
+    return m;
+}
+
 }  // namespace
 
 void writeImage(const Image& image, const fs::path& file, const ImageMetadata& metadata) {
     const ImageFormatInfo format = formatOrThrow(file);
-    const OIIO::ImageSpec spec = imageSpec(image, file, format, metadata);
-    std::vector<std::uint8_t> bytes;
-    const void* pixels = image.rgb.data();
-    if (!format.isFloat) {
-        bytes.resize(image.rgb.size());
-        srgbEncode8(image.rgb.data(), image.rgb.size(), bytes.data());
-        pixels = bytes.data();
-    }
-    encodeAndReplace(file, spec, pixels);
+    encodeAndReplace(file, pictureOf(image, file, format, metadata));
 }
 
 void writeImagePart(const ImagePart& part, const fs::path& file, const ImageMetadata& metadata) {
@@ -96,50 +159,30 @@ void writeImagePart(const ImagePart& part, const fs::path& file, const ImageMeta
         throw ImageIoError(file.string() +
                            ": a part of a picture is written as OpenEXR (.exr), which records "
                            "where it belongs");
-    OIIO::ImageSpec spec = imageSpec(part.image, file, format, metadata);
-    spec.x = part.window.x;
-    spec.y = part.window.y;
-    spec.full_x = 0;
-    spec.full_y = 0;
-    spec.full_width = part.fullWidth;
-    spec.full_height = part.fullHeight;
-    encodeAndReplace(file, spec, part.image.rgb.data());
+    CodecPicture picture = pictureOf(part.image, file, format, metadata);
+    picture.x = part.window.x;
+    picture.y = part.window.y;
+    picture.fullWidth = part.fullWidth;
+    picture.fullHeight = part.fullHeight;
+    encodeAndReplace(file, picture);
 }
 
 ImagePart readImagePart(const fs::path& file) {
-    auto in = OIIO::ImageInput::open(file.string());
-    if (!in) throw ImageIoError(file.string() + ": " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.nchannels < 3) throw ImageIoError(file.string() + ": fewer than 3 channels");
+    CodecPicture picture;
+    const std::string failure = codecFor(file).decode(file.string(), picture);
+    if (!failure.empty()) throw ImageIoError(file.string() + ": " + failure);
+    if (picture.channels < 3) throw ImageIoError(file.string() + ": fewer than 3 channels");
     ImagePart part;
-    part.image = Image(spec.width, spec.height);
-    part.window = {spec.x - spec.full_x, spec.y - spec.full_y, spec.width, spec.height};
-    part.fullWidth = spec.full_width;
-    part.fullHeight = spec.full_height;
-    ImageMetadata& m = part.metadata;
-    m.software = spec.get_string_attribute("Software");
-    m.description = spec.get_string_attribute("ImageDescription");
-    RenderSettings& r = m.settings;
-    r.width = spec.get_int_attribute("whitted:width", r.width);
-    r.height = spec.get_int_attribute("whitted:height", r.height);
-    r.samplesPerPixel = spec.get_int_attribute("whitted:samples_per_pixel", r.samplesPerPixel);
-    r.maxDepth = spec.get_int_attribute("whitted:max_depth", r.maxDepth);
-    r.precision =
-        parsePrecision(spec.get_string_attribute("whitted:precision")).value_or(r.precision);
-    m.renderSeconds = spec.get_float_attribute("whitted:render_seconds", 0.0f);
-    m.qualityTarget = spec.get_string_attribute("whitted:quality_target");
-    m.qualityReached = spec.get_string_attribute("whitted:quality_reached");
-    const bool eightBit = spec.format == OIIO::TypeDesc::UINT8;
-    std::vector<float> all(size_t(spec.width) * spec.height * spec.nchannels);
-    std::vector<std::uint8_t> codes(eightBit ? all.size() : 0);
-    const bool ok =
-        eightBit ? in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, codes.data())
-                 : in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data());
-    if (!ok) throw ImageIoError(file.string() + ": " + in->geterror());
-    for (size_t p = 0; p < size_t(spec.width) * spec.height; ++p)
+    part.image = Image(picture.width, picture.height);
+    part.window = {picture.x, picture.y, picture.width, picture.height};
+    part.fullWidth = picture.fullWidth;
+    part.fullHeight = picture.fullHeight;
+    part.metadata = metadataOf(picture);
+    for (size_t p = 0; p < size_t(picture.width) * picture.height; ++p)
         for (int c = 0; c < 3; ++c) {
-            const size_t src = p * spec.nchannels + c;
-            part.image.rgb[p * 3 + c] = eightBit ? srgbDecode8(codes[src]) : all[src];
+            const size_t src = p * picture.channels + c;
+            part.image.rgb[p * 3 + c] =
+                picture.eightBit ? srgbDecode8(picture.codes[src]) : picture.values[src];
         }
     return part;
 }
@@ -149,7 +192,9 @@ Image readImage(const fs::path& file) {
 }
 
 std::string openImageIOVersion() {
-    const int v = OIIO::openimageio_version();  // 20407 for 2.4.7
+    const LoadedCodec& loaded = loadedCodec();
+    if (!loaded.codec) return "not loaded (" + loaded.failure + ")";
+    const int v = loaded.codec->version();  // 20407 for 2.4.7
     return std::to_string(v / 10000) + "." + std::to_string(v / 100 % 100) + "." +
            std::to_string(v % 100);
 }

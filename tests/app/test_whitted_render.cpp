@@ -326,6 +326,39 @@ TEST(WhittedRender, UnwritableStats_ExitsOneAndRemovesTheImage) {
     EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
 }
 
+// A program copied away from the image plug-in it is installed with renders,
+// then says what it could not load instead of writing the picture.
+TEST(WhittedRender, WithoutItsImagePlugin_ExitsOneSayingSoAndLeavesNoFile) {
+    TempDir dir;
+    fs::create_directory(dir / "bin");
+    const fs::path program = dir / "bin" / "whitted-render", out = dir / "o.png";
+    fs::copy_file(WHITTED_RENDER_EXE, program);
+    const ProgramRun r = test::Program{program.string()}(
+        {test::kSeedScenePath, "-o", out.string(), "--width", "8", "--height", "8", "--quiet"});
+    EXPECT_EQ(r.exitCode, 1) << describe(r);
+    EXPECT_NE(r.err.find(out.string() + ": cannot load the image library: "), std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("whitted_oiio.so"), std::string::npos) << r.err;
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"bin"}) << test::joined(dir.entries());
+}
+
+// OpenImageIO's libraries load with the first image file, not with the program
+// (core/image/image_codec.h): a run that writes no image never binds them.
+TEST(WhittedRender, LoadsOpenImageIOOnlyToWriteAnImage) {
+    TempDir dir;
+    const fs::path out = dir / "o.png";
+    const ProgramRun refused =
+        runRender({test::kSeedScenePath, "-o", out.string(), "--spp", "0"}, "LD_DEBUG=files");
+    EXPECT_EQ(refused.exitCode, 2) << describe(refused);
+    EXPECT_EQ(refused.err.find("libOpenImageIO"), std::string::npos) << refused.err;
+    const ProgramRun wrote = runRender(
+        {test::kSeedScenePath, "-o", out.string(), "--width", "8", "--height", "8", "--quiet"},
+        "LD_DEBUG=files");
+    EXPECT_EQ(wrote.exitCode, 0) << describe(wrote);
+    EXPECT_NE(wrote.err.find("whitted_oiio.so"), std::string::npos);
+    EXPECT_NE(wrote.err.find("libOpenImageIO"), std::string::npos);
+}
+
 // ---- rendering to a quality (issue 15) ---------------------------------------
 
 TEST(WhittedRender, QualityFinal_MeetsItsTargetAgainstAConvergedRenderAndSaysWhy) {

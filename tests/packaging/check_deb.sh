@@ -25,7 +25,7 @@ contents=$(dpkg-deb -c "$deb" | awk '{print $6}')
 for path in ./usr/bin/whitted ./usr/bin/whitted-render \
   ./usr/share/applications/io.github.whitted.Whitted.desktop \
   ./usr/share/icons/hicolor/scalable/apps/io.github.whitted.Whitted.svg \
-  ./usr/share/whitted/scenes/seed.json; do
+  ./usr/share/whitted/scenes/seed.json ./usr/lib/whitted/whitted_oiio.so; do
   grep -qxF "$path" <<<"$contents" || { echo "the package lacks $path" >&2; exit 1; }
 done
-echo "$(basename "$deb"): Depends from the shared libraries, programs, desktop file, icons and scenes under /usr"
+echo "$(basename "$deb"): Depends from the shared libraries, programs, image plug-in, desktop file, icons and scenes under /usr"

@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
         scene.spheres[0].radius = run % 2 ? 0.6 : 0.61;  // the property change
         sawPreview = sawFullPass = false;
         requested = Clock::now();
-        generation = worker.request(scene);
+        generation = worker.request(std::make_shared<const whitted::Scene>(scene));
     };
 
     // Same thread as `app`: frames arrive through queued connections, as in the editor.

@@ -9,6 +9,7 @@
 
 #include <functional>
 #include <iostream>
+#include <memory>
 #include <random>
 
 #include "document/scene_document.h"
@@ -262,6 +263,32 @@ TEST(SceneDocument, ContentRevision_MovesWithWhatARenderShows_NotWithRenderSetti
     EXPECT_EQ(doc.contentRevision(), beforeSettings);
     doc.reset(test::seedScene(), QString());
     EXPECT_NE(doc.contentRevision(), beforeSettings);
+}
+
+// A render thread reads the snapshot it was given while the user goes on
+// editing: every way of editing leaves a held snapshot as it was, and the
+// document shows the edits. Without a holder the scene is edited where it lies.
+TEST(SceneDocument, Snapshot_KeepsItsSceneThroughEveryKindOfEdit_NoHolderNoCopy) {
+    SceneDocument doc;
+    doc.reset(test::seedScene(), QString());
+    const Scene seed = doc.scene();
+    const std::shared_ptr<const Scene> held = doc.snapshot();
+    EXPECT_EQ(held.get(), &doc.scene());  // shared, not copied
+    ASSERT_TRUE(doc.edit("camera", [](Scene& s) { s.camera.position.y += 1; }));
+    ASSERT_TRUE(doc.editItem<Sphere>(0, "radius", [](Sphere& b) { b.radius = 0.25; }));
+    ASSERT_TRUE(doc.editItems<Sphere>({0, 1}, "move", [](Sphere& b, int) { b.center.x += 1; }));
+    doc.undoStack()->undo();
+    EXPECT_TRUE(*held == seed);
+    EXPECT_NE(held.get(), &doc.scene());
+    EXPECT_EQ(doc.scene().spheres[0].radius, 0.25);
+    EXPECT_EQ(doc.scene().camera.position.y, seed.camera.position.y + 1);
+
+    const Scene* lying = &doc.scene();  // nobody else holds it now
+    ASSERT_TRUE(doc.editItem<Sphere>(0, "radius", [](Sphere& b) { b.radius = 0.5; }));
+    doc.undoStack()->undo();
+    doc.undoStack()->redo();
+    EXPECT_EQ(&doc.scene(), lying);
+    EXPECT_EQ(doc.scene().spheres[0].radius, 0.5);
 }
 
 TEST(SceneDocument, EditItem_InAGesture_IsOneUndoStepThatUndoesExactly) {

@@ -195,32 +195,43 @@ class SceneEditCommand : public QUndoCommand {
     QElapsedTimer sinceLast_;
 };
 
+Scene& SceneDocument::writableScene() {
+    // Counted by taking one more reference: an atomic read-modify-write, which
+    // orders what a holder read before it let go ahead of the writes that
+    // follow (use_count() alone is a relaxed read, and ThreadSanitizer saw the
+    // render thread's last reads race with them). Only this thread adds
+    // holders (snapshot()), so a count it finds low stays low.
+    const std::shared_ptr<Scene> counted = scene_;
+    if (counted.use_count() > 2) scene_ = std::make_shared<Scene>(std::as_const(*scene_));
+    return *scene_;
+}
+
 void SceneDocument::applyDelta(const SceneDelta& delta, bool forward) {
+    Scene& scene = writableScene();
     const Scene& head = forward ? delta.headAfter : delta.headBefore;
-    const bool settingsOnly = delta.headOnly() && head.camera == scene_.camera &&
-                              head.background == scene_.background &&
-                              head.ambient == scene_.ambient;
+    const bool settingsOnly = delta.headOnly() && head.camera == scene.camera &&
+                              head.background == scene.background && head.ambient == scene.ambient;
     if (!settingsOnly) ++contentRevision_;
-    scene_.camera = head.camera;
-    scene_.render = head.render;
-    scene_.background = head.background;
-    scene_.ambient = head.ambient;
+    scene.camera = head.camera;
+    scene.render = head.render;
+    scene.background = head.background;
+    scene.ambient = head.ambient;
     const bool moves = [&] {
         switch (selection_.kind()) {
             case ItemKind::Sphere:
-                return delta.spheres.changesStructure(scene_.spheres, forward);
+                return delta.spheres.changesStructure(scene.spheres, forward);
             case ItemKind::Light:
-                return delta.lights.changesStructure(scene_.lights, forward);
+                return delta.lights.changesStructure(scene.lights, forward);
             case ItemKind::Material:
-                return delta.materials.changesStructure(scene_.materials, forward);
+                return delta.materials.changesStructure(scene.materials, forward);
         }
         return false;
     }();
-    if (moves) selection_.rememberNames(scene_);
-    bool structural = delta.spheres.apply(scene_.spheres, forward);
-    structural = delta.lights.apply(scene_.lights, forward) || structural;
-    structural = delta.materials.apply(scene_.materials, forward) || structural;
-    if (moves) selection_.followNames(scene_);
+    if (moves) selection_.rememberNames(scene);
+    bool structural = delta.spheres.apply(scene.spheres, forward);
+    structural = delta.lights.apply(scene.lights, forward) || structural;
+    structural = delta.materials.apply(scene.materials, forward) || structural;
+    if (moves) selection_.followNames(scene);
     if (structural) emit structureChanged();
     emit sceneChanged();
 }
@@ -234,9 +245,9 @@ void SceneDocument::reset(const Scene& scene, const QString& filePath) {
     undo_.clear();
     gestureDepth_ = 0;
     runOpen_ = false;
-    scene_ = scene;
+    scene_ = std::make_shared<Scene>(scene);
     ++contentRevision_;
-    resetSceneValid_ = !validateScene(scene_);
+    resetSceneValid_ = !validateScene(*scene_);
     selection_.clear();
     filePath_ = filePath;
     emit filePathChanged(filePath_);
@@ -257,7 +268,7 @@ bool SceneDocument::load(const QString& path, QString* error) {
 
 bool SceneDocument::save(const QString& path, QString* error) {
     try {
-        saveScene(scene_, path.toStdString());
+        saveScene(*scene_, path.toStdString());
     } catch (const std::exception& e) {
         if (error) *error = QString::fromStdString(e.what());
         return false;
@@ -272,17 +283,18 @@ bool SceneDocument::save(const QString& path, QString* error) {
 
 bool SceneDocument::edit(const QString& text, const std::function<void(Scene&)>& change,
                          QString* error, EditRun run) {
-    Scene after = scene_;
+    const Scene& before = *scene_;
+    Scene after = before;
     change(after);
-    if (after == scene_) return true;
+    if (after == before) return true;
     // Every state past the first is an edit that passed this check; the first
     // is whatever reset() was given.
     const bool valid = undo_.index() > 0 || resetSceneValid_;
-    if (auto problem = valid ? validateEdit(scene_, after) : validateScene(after)) {
+    if (auto problem = valid ? validateEdit(before, after) : validateScene(after)) {
         if (error) *error = editProblemText(*problem, after);
         return false;
     }
-    push(SceneDelta(scene_, after), text, run);
+    push(SceneDelta(before, after), text, run);
     return true;
 }
 
@@ -294,7 +306,9 @@ void SceneDocument::push(SceneDelta delta, const QString& text, EditRun run) {
 template <class T>
 bool SceneDocument::editItem(int index, const QString& text, const std::function<void(T&)>& change,
                              QString* error) {
-    std::vector<T>& list = itemsOf<T>(scene_);
+    // Written to: the item is swapped in to be checked (below).
+    Scene& scene = writableScene();
+    std::vector<T>& list = itemsOf<T>(scene);
     if (index < 0 || index >= static_cast<int>(list.size())) return true;
     const auto i = static_cast<std::size_t>(index);
     T after = list[i];
@@ -309,18 +323,20 @@ bool SceneDocument::editItem(int index, const QString& text, const std::function
     // Checked, and a refusal worded, in the scene as it would be: the item is
     // swapped in for that and back out before anyone can see it.
     std::swap(list[i], after);
-    std::optional<SceneProblem> problem = validateItemEdit<T>(scene_, i);
-    if (problem && error) *error = editProblemText(*problem, scene_);
+    std::optional<SceneProblem> problem = validateItemEdit<T>(scene, i);
+    if (problem && error) *error = editProblemText(*problem, scene);
     std::swap(list[i], after);
     if (problem) return false;
-    push(SceneDelta::item(scene_, i, list[i], std::move(after)), text, EditRun::Separate);
+    push(SceneDelta::item(scene, i, list[i], std::move(after)), text, EditRun::Separate);
     return true;
 }
 
 template <class T>
 bool SceneDocument::editItems(const std::vector<int>& indices, const QString& text,
                               const std::function<void(T&, int)>& change, QString* error) {
-    std::vector<T>& list = itemsOf<T>(scene_);
+    // Written to: the items are swapped in to be checked (below).
+    Scene& scene = writableScene();
+    std::vector<T>& list = itemsOf<T>(scene);
     std::vector<std::size_t> changed;
     std::vector<T> before, after;
     changed.reserve(indices.size());
@@ -352,12 +368,12 @@ bool SceneDocument::editItems(const std::vector<int>& indices, const QString& te
         if (list[changed[k]].name != before[k].name)
             problem = SceneProblem{"", "a name cannot change with others"};
         else
-            problem = validateItemEdit<T>(scene_, changed[k]);
-        if (problem && error) *error = editProblemText(*problem, scene_);
+            problem = validateItemEdit<T>(scene, changed[k]);
+        if (problem && error) *error = editProblemText(*problem, scene);
         std::swap(list[changed[k]], after[k]);
     }
     if (problem) return false;
-    push(SceneDelta::items(scene_,
+    push(SceneDelta::items(scene,
                            ListDelta<T>(std::move(changed), std::move(before), std::move(after))),
          text, EditRun::Separate);
     return true;
@@ -399,11 +415,11 @@ void SceneDocument::discardGesture() {
 }
 
 QString SceneDocument::uniqueName(ItemKind kind, const QString& stem) const {
-    for (int n = itemCount(scene_, kind) + 1;; ++n) {
+    for (int n = itemCount(*scene_, kind) + 1;; ++n) {
         const QString candidate = QStringLiteral("%1 %2").arg(stem).arg(n);
         bool taken = false;
-        for (int i = 0; i < itemCount(scene_, kind) && !taken; ++i)
-            taken = itemName(scene_, kind, i) == candidate;
+        for (int i = 0; i < itemCount(*scene_, kind) && !taken; ++i)
+            taken = itemName(*scene_, kind, i) == candidate;
         if (!taken) return candidate;
     }
 }

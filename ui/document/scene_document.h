@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <type_traits>
 
 #include <QObject>
@@ -31,7 +32,13 @@ class SceneDocument : public QObject {
   public:
     explicit SceneDocument(QObject* parent = nullptr);
 
-    const Scene& scene() const { return scene_; }
+    // The scene as it is now. A reference is good until the next edit.
+    const Scene& scene() const { return *scene_; }
+    // The scene as it is now, shared rather than copied (a million spheres
+    // are 88 MB): later edits leave it as it is, since the document writes to
+    // a copy while anyone else still holds it. For a render thread, which
+    // reads it while the user goes on editing.
+    std::shared_ptr<const Scene> snapshot() const { return scene_; }
     QString filePath() const { return filePath_; }  // empty for a new, unsaved scene
     bool isModified() const { return !undo_.isClean(); }
     // Changes whenever what a render shows may have changed: any edit, undo,
@@ -109,8 +116,10 @@ class SceneDocument : public QObject {
     void push(SceneDelta delta, const QString& text, EditRun run);
     // Changes the scene by an edit's delta, forwards or backwards, and tells listeners.
     void applyDelta(const SceneDelta& delta, bool forward);
+    // The scene to write to: a copy first if a snapshot of it is still held.
+    Scene& writableScene();
 
-    Scene scene_;
+    std::shared_ptr<Scene> scene_ = std::make_shared<Scene>();
     QString filePath_;
     QUndoStack undo_;
     SceneSelection selection_;

@@ -64,8 +64,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     // every event, and each prediction took a core from the render.
     predictPause_.setSingleShot(true);
     predictPause_.setInterval(kPredictPauseMs);
-    connect(&predictPause_, &QTimer::timeout, this,
-            [this] { predictor_.sceneChanged(doc_.scene(), quality_.target()); });
+    connect(&predictPause_, &QTimer::timeout, this, [this] {
+        predictionDue_ = true;
+        predictWhenShown();
+    });
     const auto predict = [this] { predictPause_.start(); };
     connect(&doc_, &SceneDocument::sceneChanged, this, predict);
     connect(&quality_, &QualityChoice::changed, this, predict);
@@ -136,9 +138,24 @@ void MainWindow::sceneReplaced() {
     quality_.forgetReached();
 }
 
+void MainWindow::requestRender() {
+    worker_.request(doc_.snapshot(), quality_.target());
+    newestFrameShown_ = false;
+}
+
+void MainWindow::predictWhenShown() {
+    if (!predictionDue_ || !newestFrameShown_) return;
+    predictionDue_ = false;
+    predictor_.sceneChanged(doc_.scene(), quality_.target());
+}
+
 void MainWindow::onFrame(const RenderFrame& frame) {
     // Stale: a newer request exists, and its frames must not be overwritten.
     if (frame.generation != worker_.latestGeneration()) return;
+    newestFrameShown_ = true;
+    // Queued behind the paint that setFrame() asks for, so that the frame is
+    // on screen before the prediction copies the scene.
+    QMetaObject::invokeMethod(this, &MainWindow::predictWhenShown, Qt::QueuedConnection);
     view_->setFrame(frame.image, QSizeF(frame.settings.width / double(frame.block),
                                         frame.settings.height / double(frame.block)));
     // A render to a quality decides after each pass whether another follows:

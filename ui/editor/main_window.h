@@ -148,7 +148,11 @@ class MainWindow : public QMainWindow {
     void rememberDirectory(const QString& path);
     void onFrame(const RenderFrame& frame);
     void showQualityReached(const RenderFrame& frame);
-    void requestRender() { worker_.request(doc_.scene(), quality_.target()); }
+    void requestRender();
+    // Asks predictor_ once edits have paused and the newest edit's first
+    // frame is on screen: the user waits for that picture, and a prediction
+    // running beside its render took a core from it.
+    void predictWhenShown();
 
     SceneDocument doc_;
     TradeoffRecord record_;
@@ -158,6 +162,8 @@ class MainWindow : public QMainWindow {
     ProbePredictor predictor_{plans_};  // the Render tab's predictions for scenes never measured
     QTimer predictPause_;               // asks predictor_ once edits pause this long
     static constexpr int kPredictPauseMs = 100;
+    bool predictionDue_ = false;     // the pause is over: predict once a frame is shown
+    bool newestFrameShown_ = false;  // a frame of the newest render request is on screen
     RenderWorker worker_{plans_};
     RenderView* view_ = nullptr;
     ScenePanel* scenePanel_ = nullptr;

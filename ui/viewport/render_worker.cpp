@@ -42,8 +42,9 @@ void RenderWorker::deliver() {
     emit frameReady(frame);
 }
 
-quint64 RenderWorker::request(const Scene& scene, const std::optional<QualityTarget>& quality) {
-    return requests_.request(RenderRequest{scene, quality});
+quint64 RenderWorker::request(std::shared_ptr<const Scene> scene,
+                              const std::optional<QualityTarget>& quality) {
+    return requests_.request(RenderRequest{std::move(scene), quality});
 }
 
 Scene viewSized(Scene scene) {
@@ -187,7 +188,11 @@ class FrameAssembler {
 }  // namespace
 
 void RenderWorker::renderOne(RenderRequest requested, quint64 generation) {
-    Scene scene = viewSized(std::move(requested.scene));
+    // Read where the document left it, and copied only to be changed: to the
+    // view's size, or to a plan's depth.
+    std::shared_ptr<const Scene> shared = std::move(requested.scene);
+    if (std::max(shared->render.width, shared->render.height) > kMaxViewSize)
+        shared = std::make_shared<const Scene>(viewSized(*shared));
     const auto shouldStop = [&] { return requests_.stale(generation); };
     RenderOptions options;
     options.sceneValidated = true;  // request() asks for a valid scene
@@ -195,10 +200,13 @@ void RenderWorker::renderOne(RenderRequest requested, quint64 generation) {
     std::shared_ptr<const QualityPlan> plan;
     if (requested.quality) {
         // Chosen for the picture the view shows: its size, the scene's precision.
-        plan = plans_.plan(scene, *requested.quality, kDefaultMaxSamples, shouldStop);
+        plan = plans_.plan(*shared, *requested.quality, kDefaultMaxSamples, shouldStop);
         if (plan->stopped || shouldStop()) return;
-        applyPlan(*plan, scene, options);
+        auto planned = std::make_shared<Scene>(*shared);
+        applyPlan(*plan, *planned, options);
+        shared = std::move(planned);
     }
+    const Scene& scene = *shared;
     FrameAssembler frames(scene, plan, generation, shouldStop,
                           [this](RenderFrame frame) { post(std::move(frame)); });
     RenderResult result = render(

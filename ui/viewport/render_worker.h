@@ -1,6 +1,7 @@
 // The editor's renderer thread (the restart loop of Qt's Mandelbrot example).
 //
-// The GUI calls request() with a snapshot of the scene on every edit; that
+// The GUI calls request() with a snapshot of the scene on every edit
+// (SceneDocument::snapshot(), shared, not copied); that
 // returns at once with the request's generation (core/base/request_thread.h,
 // the newest request wins). The thread renders the newest request progressively
 // (core's renderer: preview, full resolution, more samples) and hands frames to
@@ -35,14 +36,13 @@ namespace whitted::ui {
 // gigabytes per frame. Export renders the full size.
 inline constexpr int kMaxViewSize = 2048;
 
-// The scene as the view renders it: render size capped at kMaxViewSize. By
-// value, so that the worker moves its request in rather than copying it.
+// The scene as the view renders it: render size capped at kMaxViewSize.
 Scene viewSized(Scene scene);
 
 // What the view is asked to render: the scene, to its own samples and depth
 // or, with a target, to that quality (document/quality_choice.h).
 struct RenderRequest {
-    Scene scene;
+    std::shared_ptr<const Scene> scene;  // the document's snapshot, never copied to be read
     std::optional<QualityTarget> quality;
 };
 
@@ -83,7 +83,8 @@ class RenderWorker : public QObject {
     // returns the request's generation. Never blocks on the renderer. The
     // scene must pass validateScene(), as the document's always does; the
     // render does not check it again.
-    quint64 request(const Scene& scene, const std::optional<QualityTarget>& quality = std::nullopt);
+    quint64 request(std::shared_ptr<const Scene> scene,
+                    const std::optional<QualityTarget>& quality = std::nullopt);
     quint64 latestGeneration() const { return requests_.latestTicket(); }
 
     // How often frames are sent while a pass is in progress.

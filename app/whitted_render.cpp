@@ -30,6 +30,7 @@
 #include "image/image_io.h"
 #include "image/image_parts.h"
 #include "plan_file.h"
+#include "ray_tree_json.h"
 #include "render_flags.h"
 #include "render_quality.h"
 #include "scene/scene_io.h"
@@ -48,11 +49,12 @@ struct Options {
     int threads = 0;
     std::string stats;
     bool quiet = false;
-    std::vector<int> region;  // X0, Y0, X1, Y1
-    int turntable = 0;        // frames of one full turn; 0: a still
-    std::string frames;       // A-B of the turntable's frames; empty: all
-    QualityFlags quality;     // a target instead of the scene's samples
-    std::string planFile;     // the plan shared with other regions (plan_file.h); empty: none
+    std::vector<int> region;   // X0, Y0, X1, Y1
+    int turntable = 0;         // frames of one full turn; 0: a still
+    std::string frames;        // A-B of the turntable's frames; empty: all
+    QualityFlags quality;      // a target instead of the scene's samples
+    std::string planFile;      // the plan shared with other regions (plan_file.h); empty: none
+    std::vector<int> inspect;  // X, Y: print that pixel's ray tree instead of rendering
 };
 
 struct MergeOptions {
@@ -290,7 +292,36 @@ int runPlanOnly(const Options& o) {
     return kExitOk;
 }
 
+// `--inspect X,Y`: the pixel's ray tree on stdout as JSON, no image.
+int runInspect(const Options& o) {
+    std::optional<Scene> loaded = sceneOrSay("whitted-render", o.scene);
+    if (!loaded) return kExitBadInput;
+    Scene& scene = *loaded;
+    applyRenderFlags(o.render, scene.render);
+    try {
+        if (!o.output.empty() || !o.region.empty() || o.turntable > 0 || !o.stats.empty() ||
+            !o.planFile.empty() || qualityTargetOf(o.quality))
+            throw BadInput(
+                "--inspect prints one pixel's ray tree and renders no image: -o, --region, "
+                "--turntable, --stats, --plan and the quality flags do not go with it");
+        checkTracerChoice(scene);
+        std::cout << rayTreeJson(pixelRayTree(scene, o.inspect[0], o.inspect[1]), scene).dump(2)
+                  << "\n";
+    } catch (const std::out_of_range& e) {
+        std::cerr << "whitted-render: --inspect: " << e.what() << "\n";
+        return kExitBadInput;
+    } catch (const std::invalid_argument& e) {  // the quality flags
+        std::cerr << "whitted-render: " << e.what() << "\n";
+        return kExitBadInput;
+    } catch (const std::runtime_error& e) {
+        std::cerr << "whitted-render: " << e.what() << "\n";
+        return kExitBadInput;
+    }
+    return kExitOk;
+}
+
 int run(const Options& o) {
+    if (!o.inspect.empty()) return runInspect(o);
     if (o.output.empty()) return runPlanOnly(o);
     const auto format = outputFormatOrSay("whitted-render", o.output);
     if (!format) return kExitBadInput;
@@ -441,6 +472,12 @@ int main(int argc, char** argv) {
                    "if there is none, so that the regions of one picture share one plan "
                    "(whitted-farm makes it once for all its tasks); without --output, only plan");
 
+    app.add_option("--inspect", o.inspect,
+                   "Print the ray tree of pixel X,Y (0,0 top left) of a one-sample render as "
+                   "JSON, and render no image")
+        ->delimiter(',')
+        ->expected(2);
+
     MergeOptions m;
     CLI::App* merge = app.add_subcommand(
         "merge", "Put the regions of one picture (--region parts) together into one image");
@@ -453,7 +490,7 @@ int main(int argc, char** argv) {
 
     if (const auto code = parseFlags(app, "whitted-render", argc, argv, [&] {
             if (!*merge && o.scene.empty()) throw CLI::RequiredError("scene");
-            if (!*merge && o.output.empty() && o.planFile.empty())
+            if (!*merge && o.output.empty() && o.planFile.empty() && o.inspect.empty())
                 throw CLI::RequiredError("--output");
         }))
         return *code;

@@ -25,6 +25,9 @@
 
 namespace whitted {
 
+// Which ray of the tree trace() follows.
+enum class TreeRay { Camera, Reflection, Refraction };
+
 // The visitor provides:
 //   static constexpr bool kWantsShadows;   // evaluate shadow rays at all
 //   void hit(int sphere);                   // each ray's hit, -1 for a miss
@@ -35,26 +38,46 @@ namespace whitted {
 //                                           // its path weight times kr + kt
 //   bool descend(T weight, int depth);      // trace a secondary ray of this path
 //                                           // weight and depth (false: skip it)
+// and, to follow the tree itself (analysis/pixel_ray_tree.h), optionally:
+//   void enter(TreeRay, const Ray<T>&, const std::optional<Hit<T>>&, int depth, T weight);
+//   void leave();                           // after the ray's shadows and children
+//   void shadowRay(int light, const Vec<T>& p, const Vec<T>& l, T distance, T sj);
 template <typename T, typename Visitor>
 class ScalarRayTree {
   public:
     ScalarRayTree(const PreparedScene<T>& s, Visitor& visitor) : s_(s), v_(visitor) {}
 
+    static constexpr bool kFollowsTree = requires(Visitor & v) { v.leave(); };
+
     // `weight`: the product of the kr / kt factors from the camera ray to this ray.
-    void trace(const Ray<T>& ray, int depth, T weight) {
+    void trace(const Ray<T>& ray, int depth, T weight, TreeRay kind = TreeRay::Camera) {
         const std::optional<Hit<T>> hit = closestHit(s_, ray);
         v_.hit(hit ? hit->sphere : -1);
-        if (!hit) return;
-        const int k = hit->sphere;
+        if constexpr (kFollowsTree) v_.enter(kind, ray, hit, depth, weight);
+        if (hit) walk(ray, *hit, depth, weight);
+        if constexpr (kFollowsTree) v_.leave();
+    }
+
+    // The camera ray through pixel (i, j)'s centre, as the tracer's camera rows
+    // compute it for one sample per pixel.
+    void tracePixel(int i, int j) {
+        const Vec<T> dir = cameraDirection(s_.camera, i, j, T(0.5), T(0.5));
+        trace(Ray<T>{s_.camera.origin, dir, -1, false, true}, 0, T(1));
+    }
+
+  private:
+    // What follows a hit: its shadow rays, then its refracted and reflected rays.
+    void walk(const Ray<T>& ray, const Hit<T>& hit, int depth, T weight) {
+        const int k = hit.sphere;
         const PreparedMaterial<T>& m = s_.materials[s_.material[k]];
         const Vec<T> d = ray.dir;
-        const Vec<T> p = ray.origin + hit->t * d;
+        const Vec<T> p = ray.origin + hit.t * d;
         const Vec<T> outward = glm::normalize(p - s_.spheres.centre[k]);
         const bool inside = glm::dot(d, outward) > T(0);
         const Vec<T> n = inside ? -outward : outward;
         if constexpr (Visitor::kWantsShadows) {
-            for (const PreparedLight<T>& light : s_.lights)
-                v_.shadow(shadowed(light, p, n, outward, k, m.lit));
+            for (std::size_t light = 0; light < s_.lights.size(); ++light)
+                v_.shadow(shadowed(int(light), p, n, outward, k, m.lit));
         }
         if (depth >= s_.maxDepth) {
             const T passedOn = m.reflectivity + m.transparency;
@@ -74,27 +97,22 @@ class ScalarRayTree {
             } else {
                 const Vec<T> t = glm::normalize(eta * d + (eta * cosi - std::sqrt(root2)) * n);
                 const T w = weight * m.transparency;
-                if (v_.descend(w, depth + 1)) trace(Ray<T>{p, t, k, !inside, false}, depth + 1, w);
+                if (v_.descend(w, depth + 1))
+                    trace(Ray<T>{p, t, k, !inside, false}, depth + 1, w, TreeRay::Refraction);
             }
         }
         if (reflectWeight > T(0)) {
             const Vec<T> r = d - (T(2) * glm::dot(d, n)) * n;
             const T w = weight * reflectWeight;
-            if (v_.descend(w, depth + 1)) trace(Ray<T>{p, r, k, inside, false}, depth + 1, w);
+            if (v_.descend(w, depth + 1))
+                trace(Ray<T>{p, r, k, inside, false}, depth + 1, w, TreeRay::Reflection);
         }
     }
 
-    // The camera ray through pixel (i, j)'s centre, as the tracer's camera rows
-    // compute it for one sample per pixel.
-    void tracePixel(int i, int j) {
-        const Vec<T> dir = cameraDirection(s_.camera, i, j, T(0.5), T(0.5));
-        trace(Ray<T>{s_.camera.origin, dir, -1, false, true}, 0, T(1));
-    }
-
-  private:
     // 1 when the light is tested and something on the way dims it (S_j < 1).
-    int shadowed(const PreparedLight<T>& light, const Vec<T>& p, const Vec<T>& n,
-                 const Vec<T>& outward, int sphere, bool lit) const {
+    int shadowed(int lightIndex, const Vec<T>& p, const Vec<T>& n, const Vec<T>& outward,
+                 int sphere, bool lit) const {
+        const PreparedLight<T>& light = s_.lights[std::size_t(lightIndex)];
         Vec<T> l = light.position - p;
         const T distance = std::sqrt(glm::dot(l, l));
         l = l * (T(1) / distance);
@@ -106,6 +124,7 @@ class ScalarRayTree {
         const typename Simd<T>::type limit = typename Simd<T>::type{} + distance;
         const T sj = sceneTransmittance(s_.spheres, s_.transparency,
                                         s_.useBvh ? s_.bvh.get() : nullptr, shadow, limit, 1u)[0];
+        if constexpr (kFollowsTree) v_.shadowRay(lightIndex, p, l, distance, sj);
         return sj < T(1) ? 1 : 0;
     }
 

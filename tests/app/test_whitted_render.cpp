@@ -326,6 +326,68 @@ TEST(WhittedRender, UnwritableStats_ExitsOneAndRemovesTheImage) {
     EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
 }
 
+// ---- a pixel's ray tree ------------------------------------------------------------
+
+// The sum of a tree's contributions, channel `c`.
+double contributions(const nlohmann::json& node, int c) {
+    double sum = node["contribution"][c].get<double>();
+    for (const nlohmann::json& child : node["children"]) sum += contributions(child, c);
+    return sum;
+}
+
+// What a user runs to see why a pixel looks as it does: the tree on stdout,
+// its value the pixel a one-sample render writes, and no file anywhere.
+TEST(WhittedRender, Inspect_PrintsThePixelsTreeWhoseValueIsTheRenderedPixel) {
+    TempDir dir;
+    const std::vector<std::string> size = {"--width", "64", "--height", "48", "--depth", "4"};
+    for (const char* precision : {"float", "double"}) {
+        std::vector<std::string> args = {test::kSeedScenePath, "--inspect", "20,30", "--precision",
+                                         precision};
+        args.insert(args.end(), size.begin(), size.end());
+        const ProgramRun r = runRender(args);
+        ASSERT_EQ(r.exitCode, 0) << describe(r);
+        EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
+        const nlohmann::json tree = nlohmann::json::parse(r.out);
+        EXPECT_EQ(tree["pixel"], nlohmann::json({20, 30}));
+        const nlohmann::json& root = tree["rays"];
+        EXPECT_EQ(root["kind"], "camera");
+        EXPECT_EQ(root["weight"], 1.0);
+        ASSERT_TRUE(root["hit"].is_string()) << root.dump();
+        int shadows = 0;
+        for (const nlohmann::json& child : root["children"]) shadows += child["kind"] == "shadow";
+        EXPECT_EQ(shadows, 1) << "the seed has one light";
+
+        const fs::path out = dir / "one.exr";
+        args = {test::kSeedScenePath, "-o",     out.string(), "--spp", "1", "--quiet",
+                "--precision",        precision};
+        args.insert(args.end(), size.begin(), size.end());
+        ASSERT_EQ(runRender(args).exitCode, 0);
+        const Image image = readImage(out);
+        fs::remove(out);
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_EQ(float(tree["value"][c].get<double>()), image.pixel(20, 30)[c])
+                << precision << " channel " << c;
+            EXPECT_NEAR(contributions(root, c), tree["value"][c].get<double>(), 1e-5)
+                << precision << " channel " << c;
+        }
+    }
+}
+
+TEST(WhittedRender, InspectOutsideThePictureOrWithAnImage_ExitTwoSayingWhy) {
+    TempDir dir;
+    ProgramRun r =
+        runRender({test::kSeedScenePath, "--inspect", "64,0", "--width", "64", "--height", "48"});
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_EQ(r.err, "whitted-render: --inspect: pixel 64,0 is outside the 64x48 picture\n");
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    r = runRender({test::kSeedScenePath, "--inspect", "1,1", "-o", (dir / "o.png").string()});
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_NE(r.err.find("--inspect prints one pixel's ray tree and renders no image"),
+              std::string::npos)
+        << r.err;
+    EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
+}
+
 // A program copied away from the image plug-in it is installed with renders,
 // then says what it could not load instead of writing the picture.
 TEST(WhittedRender, WithoutItsImagePlugin_ExitsOneSayingSoAndLeavesNoFile) {

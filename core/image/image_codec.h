@@ -29,16 +29,19 @@ struct CodecPicture {
     int width = 0, height = 0, channels = 3;
     bool eightBit = false;
     int x = 0, y = 0, fullWidth = 0, fullHeight = 0;
-    std::vector<std::uint8_t> codes;  // eightBit
-    std::vector<float> values;        // otherwise
+    // What decode() read: 8-bit codes when eightBit, else floats. encode() is
+    // given its pixels apart, so that a float image is not copied to be written.
+    std::vector<std::uint8_t> codes;
+    std::vector<float> values;
     std::map<std::string, CodecAttribute> attributes;
 };
 
 struct ImageCodec {
-    // Encodes `picture` (3 channels) in memory, in the format of the file
-    // name's extension. Returns OpenImageIO's reason, or "" when it succeeded.
+    // Encodes `picture` (3 channels; `pixels` its 8-bit codes when eightBit,
+    // else its floats) in memory, in the format of the file name's extension.
+    // Returns OpenImageIO's reason, or "" when it succeeded.
     std::string (*encode)(const std::string& fileName, const CodecPicture& picture,
-                          std::vector<unsigned char>& encoded);
+                          const void* pixels, std::vector<unsigned char>& encoded);
     // Reads a file's first image whole. Returns the reason it could not, or "".
     std::string (*decode)(const std::string& fileName, CodecPicture& picture);
     int (*version)();  // 20407 for OpenImageIO 2.4.7

@@ -63,7 +63,8 @@ CodecAttribute real(float value) {
     return {{}, std::nullopt, value};
 }
 
-// The picture's pixels, as the format stores them: 8-bit sRGB codes or linear floats.
+// The picture as the format stores it: 8-bit sRGB codes (made here) or the
+// image's linear floats (pixelsOf() points at them).
 CodecPicture pictureOf(const Image& image, const fs::path& file, const ImageFormatInfo& format,
                        const ImageMetadata& metadata) {
     if (image.width <= 0 || image.height <= 0) throw ImageIoError(file.string() + ": empty image");
@@ -74,8 +75,6 @@ CodecPicture pictureOf(const Image& image, const fs::path& file, const ImageForm
     if (p.eightBit) {
         p.codes.resize(image.rgb.size());
         srgbEncode8(image.rgb.data(), image.rgb.size(), p.codes.data());
-    } else {
-        p.values.assign(image.rgb.begin(), image.rgb.end());
     }
     auto& a = p.attributes;
     // Empty strings are left out: Debian's OpenImageIO asserts on an empty
@@ -102,9 +101,11 @@ CodecPicture pictureOf(const Image& image, const fs::path& file, const ImageForm
 // Encoded in memory first, then written with checked system calls: the
 // format writers do not report a failed write (a full disk gave a truncated
 // PNG and no error), and a truncated file must never replace a good one.
-void encodeAndReplace(const fs::path& file, const CodecPicture& picture) {
+void encodeAndReplace(const fs::path& file, const CodecPicture& picture, const Image& image) {
+    const void* pixels = picture.eightBit ? static_cast<const void*>(picture.codes.data())
+                                          : static_cast<const void*>(image.rgb.data());
     std::vector<unsigned char> encoded;
-    const std::string failure = codecFor(file).encode(file.string(), picture, encoded);
+    const std::string failure = codecFor(file).encode(file.string(), picture, pixels, encoded);
     if (!failure.empty()) throw ImageIoError(file.string() + ": " + failure);
     try {
         replaceFileAtomically(file, [&](const fs::path& temp) {
@@ -150,7 +151,7 @@ ImageMetadata metadataOf(const CodecPicture& p) {
 
 void writeImage(const Image& image, const fs::path& file, const ImageMetadata& metadata) {
     const ImageFormatInfo format = formatOrThrow(file);
-    encodeAndReplace(file, pictureOf(image, file, format, metadata));
+    encodeAndReplace(file, pictureOf(image, file, format, metadata), image);
 }
 
 void writeImagePart(const ImagePart& part, const fs::path& file, const ImageMetadata& metadata) {
@@ -164,7 +165,7 @@ void writeImagePart(const ImagePart& part, const fs::path& file, const ImageMeta
     picture.y = part.window.y;
     picture.fullWidth = part.fullWidth;
     picture.fullHeight = part.fullHeight;
-    encodeAndReplace(file, picture);
+    encodeAndReplace(file, picture, part.image);
 }
 
 ImagePart readImagePart(const fs::path& file) {

@@ -27,15 +27,13 @@ OIIO::ImageSpec specOf(const CodecPicture& picture) {
     return spec;
 }
 
-std::string encode(const std::string& fileName, const CodecPicture& picture,
+std::string encode(const std::string& fileName, const CodecPicture& picture, const void* pixels,
                    std::vector<unsigned char>& encoded) {
     const OIIO::ImageSpec spec = specOf(picture);
     OIIO::Filesystem::IOVecOutput memory(encoded);
     auto out = OIIO::ImageOutput::create(fileName);
     if (!out) return OIIO::geterror();
     if (!out->set_ioproxy(&memory) || !out->open(fileName, spec)) return out->geterror();
-    const void* pixels = picture.eightBit ? static_cast<const void*>(picture.codes.data())
-                                          : static_cast<const void*>(picture.values.data());
     const bool wrote = out->write_image(spec.format, pixels);
     const bool closed = out->close();
     if (!wrote || !closed) return out->geterror();

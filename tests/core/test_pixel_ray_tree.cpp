@@ -13,8 +13,8 @@
 #include "analysis/pixel_ray_tree.h"
 #include "scene/scene_io.h"
 #include "sphere_field.h"
+#include "support/core_support.h"
 #include "support/test_support.h"
-#include "tracer/renderer.h"
 
 namespace whitted {
 namespace {
@@ -28,13 +28,6 @@ Scene oneSample(Scene scene, int width, int height, Precision precision) {
     scene.render.samplesPerPixel = 1;
     scene.render.precision = precision;
     return scene;
-}
-
-Image renderOf(const Scene& scene) {
-    RenderOptions options;
-    options.threads = 1;
-    options.progressive = false;
-    return render(scene, options).image;
 }
 
 // The corners, the middle of each edge, and every `step`th pixel between.
@@ -62,7 +55,7 @@ void count(const RayTreeNode& n, Seen& seen) {
 // Every pixel's tree: its value the rendered pixel's, bit for bit, its rays'
 // contributions that value within rounding.
 Seen expectTreesMatchTheRender(const Scene& scene, int step, const std::string& what) {
-    const Image image = renderOf(scene);
+    const Image image = test::renderImage(scene);
     const double tolerance = scene.render.precision == Precision::Float ? 1e-5 : 1e-12;
     Seen seen;
     int mismatches = 0;

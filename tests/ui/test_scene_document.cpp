@@ -274,6 +274,11 @@ TEST(SceneDocument, Snapshot_KeepsItsSceneThroughEveryKindOfEdit_NoHolderNoCopy)
     const Scene seed = doc.scene();
     const std::shared_ptr<const Scene> held = doc.snapshot();
     EXPECT_EQ(held.get(), &doc.scene());  // shared, not copied
+    // An edit that changes nothing writes nothing: no copy either.
+    const double radius = doc.scene().spheres[0].radius;
+    ASSERT_TRUE(doc.editItem<Sphere>(0, "same", [&](Sphere& b) { b.radius = radius; }));
+    ASSERT_TRUE(doc.editItems<Sphere>({0, 1}, "same", [](Sphere&, int) {}));
+    EXPECT_EQ(held.get(), &doc.scene());
     ASSERT_TRUE(doc.edit("camera", [](Scene& s) { s.camera.position.y += 1; }));
     ASSERT_TRUE(doc.editItem<Sphere>(0, "radius", [](Sphere& b) { b.radius = 0.25; }));
     ASSERT_TRUE(doc.editItems<Sphere>({0, 1}, "move", [](Sphere& b, int) { b.center.x += 1; }));

@@ -306,22 +306,23 @@ void SceneDocument::push(SceneDelta delta, const QString& text, EditRun run) {
 template <class T>
 bool SceneDocument::editItem(int index, const QString& text, const std::function<void(T&)>& change,
                              QString* error) {
-    // Written to: the item is swapped in to be checked (below).
-    Scene& scene = writableScene();
-    std::vector<T>& list = itemsOf<T>(scene);
-    if (index < 0 || index >= static_cast<int>(list.size())) return true;
+    const std::vector<T>& items = itemsOf<T>(std::as_const(*scene_));
+    if (index < 0 || index >= static_cast<int>(items.size())) return true;
     const auto i = static_cast<std::size_t>(index);
-    T after = list[i];
+    T after = items[i];
     change(after);
-    if (after == list[i]) return true;
+    if (after == items[i]) return true;
     // A new name may clash with any other item's, or (a material's) leave
     // spheres without theirs; and a first state reset() was given invalid
     // needs the whole scene checked. Both are edit()'s, which does it all.
-    if (after.name != list[i].name || !(undo_.index() > 0 || resetSceneValid_))
+    if (after.name != items[i].name || !(undo_.index() > 0 || resetSceneValid_))
         return edit(
             text, [&](Scene& s) { itemsOf<T>(s)[i] = after; }, error);
     // Checked, and a refusal worded, in the scene as it would be: the item is
-    // swapped in for that and back out before anyone can see it.
+    // swapped in for that and back out before anyone can see it. Only now is
+    // the scene written to (a copy, while a render still reads it).
+    Scene& scene = writableScene();
+    std::vector<T>& list = itemsOf<T>(scene);
     std::swap(list[i], after);
     std::optional<SceneProblem> problem = validateItemEdit<T>(scene, i);
     if (problem && error) *error = editProblemText(*problem, scene);
@@ -334,22 +335,20 @@ bool SceneDocument::editItem(int index, const QString& text, const std::function
 template <class T>
 bool SceneDocument::editItems(const std::vector<int>& indices, const QString& text,
                               const std::function<void(T&, int)>& change, QString* error) {
-    // Written to: the items are swapped in to be checked (below).
-    Scene& scene = writableScene();
-    std::vector<T>& list = itemsOf<T>(scene);
+    const std::vector<T>& items = itemsOf<T>(std::as_const(*scene_));
     std::vector<std::size_t> changed;
     std::vector<T> before, after;
     changed.reserve(indices.size());
     before.reserve(indices.size());
     after.reserve(indices.size());
     for (int index : indices) {
-        if (index < 0 || index >= static_cast<int>(list.size())) continue;
+        if (index < 0 || index >= static_cast<int>(items.size())) continue;
         const auto i = static_cast<std::size_t>(index);
-        T item = list[i];
+        T item = items[i];
         change(item, index);
-        if (item == list[i]) continue;
+        if (item == items[i]) continue;
         changed.push_back(i);
-        before.push_back(list[i]);
+        before.push_back(items[i]);
         after.push_back(std::move(item));
     }
     if (changed.empty()) return true;
@@ -362,6 +361,8 @@ bool SceneDocument::editItems(const std::vector<int>& indices, const QString& te
             },
             error);
     // Each checked in the scene as it would be, as editItem() does, and put back.
+    Scene& scene = writableScene();
+    std::vector<T>& list = itemsOf<T>(scene);
     std::optional<SceneProblem> problem;
     for (std::size_t k = 0; k < changed.size() && !problem; ++k) {
         std::swap(list[changed[k]], after[k]);

@@ -20,10 +20,24 @@ stage_names=()
 stage_seconds=()
 run_start=$SECONDS
 
+# kill_tree PID: the process and everything it started (the fuzzer's build or
+# run, when an earlier stage fails).
+kill_tree() {
+  local child
+  for child in $(cat /proc/"$1"/task/*/children 2>/dev/null); do
+    kill_tree "$child"
+  done
+  kill "$1" 2>/dev/null
+}
+
 report() {
   local status=$?
   # A failure while reporting must not replace the suite's own exit code.
   set +e +o pipefail
+  if [[ -n "${fuzz_pid:-}" ]]; then
+    kill_tree "$fuzz_pid"
+    wait "$fuzz_pid" 2>/dev/null
+  fi
   echo
   echo "run-tests: time by stage"
   local i
@@ -83,15 +97,39 @@ configure_quietly() {
   cmake --preset "$1" >/dev/null
 }
 
+# The fuzzer's build and run go beside the AddressSanitizer build: libFuzzer
+# runs one process, which left a core idle for its 30 s, and the build's jobs,
+# niced, take what it leaves, so the fuzzer tries as many inputs as alone. Its
+# output is shown, and its exit code taken, when it ends.
+fuzz_out="$logs/fuzz-stage.out"
+fuzz_seconds_file="$logs/fuzz-stage.seconds"
+(
+  start=$SECONDS
+  CXX=clang++ cmake -S tests/fuzz -B build-fuzz -G Ninja >/dev/null &&
+    cmake --build build-fuzz &&
+    tests fuzz --test-dir build-fuzz --output-on-failure --no-tests=error
+  status=$?
+  echo $((SECONDS - start)) >"$fuzz_seconds_file"
+  exit "$status"
+) >"$fuzz_out" 2>&1 &
+fuzz_pid=$!
+
 stage "build (AddressSanitizer + UndefinedBehaviorSanitizer)" \
-  eval 'configure_quietly asan && cmake --build --preset asan'
+  eval 'configure_quietly asan && nice -n 10 cmake --build --preset asan'
 stage "test suite under AddressSanitizer + UndefinedBehaviorSanitizer" tests asan --preset asan
 
 stage "build (ThreadSanitizer: threaded tests)" \
   eval 'configure_quietly tsan && cmake --build --preset tsan'
 stage "renderer, worker and editor tests under ThreadSanitizer" tests tsan --preset tsan
 
-stage "build (scene loader fuzzer)" \
-  eval 'CXX=clang++ cmake -S tests/fuzz -B build-fuzz -G Ninja >/dev/null && cmake --build build-fuzz'
-stage "scene loader fuzzing (corpus, then a short run)" \
-  tests fuzz --test-dir build-fuzz --output-on-failure --no-tests=error
+# wait_for_fuzzing: the fuzzer's output and exit code; its stage's time is
+# its own, not this wait's.
+wait_for_fuzzing() {
+  local status=0
+  wait "$fuzz_pid" || status=$?
+  fuzz_pid=
+  cat "$fuzz_out"
+  return "$status"
+}
+stage "scene loader fuzzer: build, corpus, a short run (beside the ASan build)" wait_for_fuzzing
+stage_seconds[-1]=$(cat "$fuzz_seconds_file" 2>/dev/null || echo "${stage_seconds[-1]}")

@@ -27,6 +27,7 @@
 #include "camera/camera_control.h"
 #include "cli_input.h"
 #include "cli_main.h"
+#include "image/heat_map.h"
 #include "image/image_io.h"
 #include "image/image_parts.h"
 #include "plan_file.h"
@@ -49,12 +50,16 @@ struct Options {
     int threads = 0;
     std::string stats;
     bool quiet = false;
-    std::vector<int> region;   // X0, Y0, X1, Y1
-    int turntable = 0;         // frames of one full turn; 0: a still
-    std::string frames;        // A-B of the turntable's frames; empty: all
-    QualityFlags quality;      // a target instead of the scene's samples
-    std::string planFile;      // the plan shared with other regions (plan_file.h); empty: none
-    std::vector<int> inspect;  // X, Y: print that pixel's ray tree instead of rendering
+    std::vector<int> region;        // X0, Y0, X1, Y1
+    int turntable = 0;              // frames of one full turn; 0: a still
+    std::string frames;             // A-B of the turntable's frames; empty: all
+    QualityFlags quality;           // a target instead of the scene's samples
+    std::string planFile;           // the plan shared with other regions (plan_file.h); empty: none
+    std::vector<int> inspect;       // X, Y: print that pixel's ray tree instead of rendering
+    std::string sampler = "fixed";  // or whitted1980 (--sampler)
+    std::optional<double> threshold;  // whitted1980's, in codes; none: its default
+    std::optional<int> subdivisions;  // whitted1980's most cuts of a pixel; none: its default
+    std::string subdivisionMap;       // how deep each pixel was cut, as a picture; empty: none
 };
 
 struct MergeOptions {
@@ -67,6 +72,30 @@ struct MergeOptions {
 struct BadInput : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
+
+// Whitted's 1980 sampling as the flags ask for it, if they do.
+std::optional<Whitted1980Sampling> whitted1980Of(const Options& o) {
+    if (o.sampler != "whitted1980") return std::nullopt;
+    Whitted1980Sampling sampling;
+    if (o.threshold) sampling.threshold = *o.threshold;
+    if (o.subdivisions) sampling.maxLevels = *o.subdivisions;
+    return sampling;
+}
+
+// Flags that do not go with the sampler chosen: BadInput.
+void checkSamplerFlags(const Options& o) {
+    if (o.sampler != "whitted1980") {
+        if (o.threshold || o.subdivisions || !o.subdivisionMap.empty())
+            throw BadInput(
+                "--threshold, --subdivisions and --subdivision-map need --sampler "
+                "whitted1980");
+        return;
+    }
+    if (o.render.spp || !o.region.empty() || !o.quality.quality.empty() || o.quality.targetPsnr)
+        throw BadInput(
+            "--sampler whitted1980 chooses its own rays, at the pixels' corners: "
+            "--spp, --region and the quality flags do not go with it");
+}
 
 // A one-line bar on stderr, shown only once a render has run for a second, so
 // quick renders print nothing but their summary.
@@ -112,8 +141,20 @@ class ProgressBar {
     const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
+double cameraRaysPerPixel(const RenderSettings& r, const RenderResult& result) {
+    return double(result.rays.camera) / (double(r.width) * r.height);
+}
+
+// How many pixels were cut 0, 1, ... maxLevels times.
+std::vector<long long> pixelsAtEachDepth(const SubdivisionLevels& map, int maxLevels) {
+    std::vector<long long> count(maxLevels + 1, 0);
+    for (std::uint8_t level : map.levels) ++count[level];
+    return count;
+}
+
 std::string statsJson(const RenderSettings& r, const RenderResult& result,
-                      const std::optional<QualityPlan>& plan) {
+                      const std::optional<QualityPlan>& plan,
+                      const std::optional<Whitted1980Sampling>& whitted1980) {
     const RayCounts& rays = result.rays;
     nlohmann::ordered_json j;
     j["width"] = r.width;
@@ -133,6 +174,15 @@ std::string statsJson(const RenderSettings& r, const RenderResult& result,
     if (plan && result.adaptive) {
         j["samples_per_pixel"] = result.adaptive->meanSamples;
         j["quality"] = qualityJson(*plan, *result.adaptive);
+    }
+    if (whitted1980) {
+        j.erase("samples_per_pixel");
+        j["sampler"] = {{"name", "whitted1980"},
+                        {"threshold", whitted1980->threshold},
+                        {"subdivisions", whitted1980->maxLevels},
+                        {"camera_rays_per_pixel", cameraRaysPerPixel(r, result)},
+                        {"pixels_at_each_depth",
+                         pixelsAtEachDepth(result.subdivision, whitted1980->maxLevels)}};
     }
     return j.dump(2) + "\n";
 }
@@ -186,6 +236,7 @@ int renderFrame(Scene& scene, const Options& o, const std::optional<PixelRect>& 
     options.threads = o.threads;
     if (region) options.regions = {*region};
     if (plan) applyPlan(*plan, scene, options);
+    options.whitted1980 = whitted1980Of(o);
     const RenderResult result =
         render(scene, options, [&](const TileUpdate& t) { bar.update(t.progress.fraction); });
     bar.finish();
@@ -207,11 +258,22 @@ int renderFrame(Scene& scene, const Options& o, const std::optional<PixelRect>& 
     if (!o.stats.empty()) {
         const fs::path stats = frameFile(o.stats, frame);
         try {
-            writeText(stats, statsJson(scene.render, result, plan));
+            writeText(stats, statsJson(scene.render, result, plan, options.whitted1980));
         } catch (const std::exception& e) {
             std::cerr << "whitted-render: " << stats.string() << ": " << e.what() << "\n";
             std::error_code ignored;
             fs::remove(output, ignored);  // a failed run leaves no output behind
+            return kExitFailure;
+        }
+    }
+    if (!o.subdivisionMap.empty()) {
+        const fs::path map = frameFile(o.subdivisionMap, frame);
+        try {
+            writeImage(countMap(result.subdivision.levels, scene.render.width, scene.render.height,
+                                options.whitted1980->maxLevels),
+                       map, {});
+        } catch (const std::exception& e) {
+            std::cerr << "whitted-render: " << e.what() << "\n";
             return kExitFailure;
         }
     }
@@ -220,7 +282,15 @@ int renderFrame(Scene& scene, const Options& o, const std::optional<PixelRect>& 
     const std::string picture =
         (region ? "region " + cornersText(*region) + " of " : std::string()) +
         std::to_string(scene.render.width) + "x" + std::to_string(scene.render.height);
-    if (!o.quiet && !plan) {
+    if (!o.quiet && options.whitted1980) {
+        std::fprintf(stderr,
+                     "wrote %s: %s, Whitted 1980 sampling (threshold %g codes, at most %d "
+                     "subdivisions): %.2f camera rays a pixel, depth %d, %s, %.3f s\n",
+                     output.c_str(), picture.c_str(), options.whitted1980->threshold,
+                     options.whitted1980->maxLevels, cameraRaysPerPixel(scene.render, result),
+                     scene.render.maxDepth,
+                     std::string(precisionName(scene.render.precision)).c_str(), result.seconds);
+    } else if (!o.quiet && !plan) {
         std::fprintf(
             stderr, "wrote %s: %s, %d spp, depth %d, %s, %.3f s, %.1f Mrays/s, %s kernel\n",
             output.c_str(), picture.c_str(), scene.render.samplesPerPixel, scene.render.maxDepth,
@@ -338,6 +408,7 @@ int run(const Options& o) {
                            ": --region writes OpenEXR (.exr), which records where "
                            "the region belongs");
         frames = framesOf(o);
+        checkSamplerFlags(o);
         checkTracerChoice(scene);
     } catch (const std::runtime_error& e) {
         std::cerr << "whitted-render: " << e.what() << "\n";
@@ -471,6 +542,22 @@ int main(int argc, char** argv) {
                    "With a quality: render to the plan in this file, or plan and write it there "
                    "if there is none, so that the regions of one picture share one plan "
                    "(whitted-farm makes it once for all its tasks); without --output, only plan");
+
+    app.add_option("--sampler", o.sampler,
+                   "How a pixel is sampled: fixed (the scene's samples per pixel, or a quality's "
+                   "own) or whitted1980 (Whitted's adaptive antialiasing: rays at the pixels' "
+                   "corners, a pixel cut in four where they differ)")
+        ->check(CLI::IsMember({"fixed", "whitted1980"}));
+    app.add_option("--threshold", o.threshold,
+                   "whitted1980: cut a pixel where its corners differ by more than this many "
+                   "8-bit codes in a channel (default 8)")
+        ->check(CLI::Range(0.0, 255.0));
+    app.add_option("--subdivisions", o.subdivisions,
+                   "whitted1980: cut a pixel at most this many times (default 2)")
+        ->check(CLI::Range(0, kMaxWhitted1980Levels));
+    app.add_option("--subdivision-map", o.subdivisionMap,
+                   "whitted1980: also write how deep each pixel was cut, black none to pale "
+                   "yellow the most, as an image");
 
     app.add_option("--inspect", o.inspect,
                    "Print the ray tree of pixel X,Y (0,0 top left) of a one-sample render as "

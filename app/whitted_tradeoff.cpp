@@ -5,9 +5,12 @@
 // progressive.csv, progressive.png, truncation.png, reference.png, summary.md
 // and summary.json.
 //   whitted-tradeoff --report OUT.md --dirs DIR... [--quality-csv FILE]
+//                    [--sampler-csv FILE]
 // writes docs/tradeoff.md from the summaries of earlier runs, presets included,
 // and rewrites each directory's summary.md in the same words; with
-// bench_quality's CSV, its section on rendering to a quality too.
+// bench_quality's CSV, its section on rendering to a quality too, and with
+// bench_whitted1980's, its section on Whitted's 1980 sampling and a plot a
+// scene beside the report (tradeoff/whitted1980/).
 // Exit codes as whitted-render: 0 success, 2 bad input, 1 any other failure.
 #include <unistd.h>
 
@@ -15,12 +18,14 @@
 #include <QImage>
 
 #include <atomic>
+#include <cctype>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <sstream>
 
@@ -41,6 +46,7 @@
 #include "tradeoff/quality_section.h"
 #include "tradeoff/report.h"
 #include "tradeoff/results_csv.h"
+#include "tradeoff/sampler_section.h"
 
 namespace fs = std::filesystem;
 using namespace whitted;
@@ -158,11 +164,45 @@ tradeoff::SceneSummary readSummary(const fs::path& dir) {
     return s;
 }
 
+// Plots are painted with Qt; no display needed. `argc` must outlive it.
+std::unique_ptr<QGuiApplication> qtForPlots(int& argc, char** argv) {
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    return std::make_unique<QGuiApplication>(argc, argv);
+}
+
+// The 1980 sampler's section, its plots written beside the report at `base`.
+std::string samplerSectionWithPlots(const std::vector<tradeoff::SamplerRow>& rows,
+                                    const std::string& csvFile, const fs::path& base) {
+    int argc = 1;
+    char name[] = "whitted-tradeoff";
+    char* argv[] = {name, nullptr};
+    const auto qt = qtForPlots(argc, argv);
+    std::vector<std::string> plots;
+    for (const std::string& scene : tradeoff::samplerScenes(rows)) {
+        std::string slug = scene;
+        for (char& c : slug)
+            if (!std::isalnum(static_cast<unsigned char>(c))) c = '-';
+        const std::string relative = "tradeoff/whitted1980/" + slug + ".png";
+        std::vector<tradeoff::SamplerRow> mine;
+        for (const tradeoff::SamplerRow& r : rows)
+            if (r.scene == scene) mine.push_back(r);
+        fs::create_directories(base / "tradeoff" / "whitted1980");
+        writePng(ui::renderPlot(tradeoff::samplerPlot(QString::fromStdString(scene), mine),
+                                QSize(700, 450)),
+                 base / relative);
+        plots.push_back(relative);
+    }
+    return tradeoff::samplerSection(rows, csvFile, plots);
+}
+
 int writeReport(const std::string& output, const std::vector<std::string>& dirs,
-                const std::string& qualityCsv, const std::string& command) {
+                const std::string& qualityCsv, const std::string& samplerCsv,
+                const std::string& command) {
     std::vector<QualityRow> qualityRows;
+    std::vector<tradeoff::SamplerRow> samplerRows;
     try {
         if (!qualityCsv.empty()) qualityRows = readQualityCsv(qualityCsv);
+        if (!samplerCsv.empty()) samplerRows = tradeoff::readSamplerCsv(samplerCsv);
     } catch (const std::runtime_error& e) {
         std::cerr << "whitted-tradeoff: " << e.what() << "\n";
         return kExitBadInput;
@@ -178,7 +218,8 @@ int writeReport(const std::string& output, const std::vector<std::string>& dirs,
         scenes.push_back(std::move(s));
     }
     const std::string quality =
-        qualityCsv.empty() ? "" : tradeoff::qualitySection(qualityRows, qualityCsv);
+        (qualityCsv.empty() ? "" : tradeoff::qualitySection(qualityRows, qualityCsv)) +
+        (samplerCsv.empty() ? "" : samplerSectionWithPlots(samplerRows, samplerCsv, base));
     writeText(output, tradeoff::report(scenes, command, quality));
     for (const tradeoff::PresetChoice& p : tradeoff::choosePresets(scenes))
         std::cout << p.name << ": " << p.samplesPerPixel << " spp, depth " << p.maxDepth << ", "
@@ -190,7 +231,7 @@ int writeReport(const std::string& output, const std::vector<std::string>& dirs,
 struct Flags {
     std::string scenePath, outDir, samples = "1,2,4,8,16,32,64,128,256", depths = "0-8",
                                    precisions = "float,double", scales = "0.25,0.5,1", report,
-                                   qualityCsv;
+                                   qualityCsv, samplerCsv;
     // One run for slow points, up to 9 for fast ones until they have taken
     // 0.3 s: the median tames the noise where it is largest (short renders), and
     // a full default run of the seed at 640x480 stays under ten minutes on two
@@ -230,6 +271,9 @@ void addFlags(CLI::App& app, Flags& f) {
     app.add_option("--quality-csv", f.qualityCsv,
                    "With --report: bench_quality's measurements of rendering to a quality "
                    "(WHITTED_QUALITY_CSV)");
+    app.add_option("--sampler-csv", f.samplerCsv,
+                   "With --report: bench_whitted1980's measurements of Whitted's 1980 sampling "
+                   "against ours");
 }
 
 // The grid the flags ask for, or nothing, having said what is wrong.
@@ -327,9 +371,7 @@ int measureScene(Scene scene, const Flags& f, const TradeoffGrid& grid, int argc
     const std::string name = fs::path(f.scenePath).stem().string();
     const fs::path dir = f.outDir.empty() ? fs::path("docs/tradeoff") / name : fs::path(f.outDir);
     fs::create_directories(dir);
-    // Plots are painted with Qt; no display needed.
-    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
-    QGuiApplication qt(argc, argv);
+    const auto qt = qtForPlots(argc, argv);
     const auto stop = [] { return interrupted.load(); };
 
     std::cerr << "whitted-tradeoff: " << name << " at " << scene.render.width << "x"
@@ -371,7 +413,8 @@ int run(const Flags& f, int argc, char** argv) {
             std::cerr << "whitted-tradeoff: --report needs --dirs\n";
             return kExitBadInput;
         }
-        return writeReport(f.report, f.reportDirs, f.qualityCsv, commandLine(argc, argv));
+        return writeReport(f.report, f.reportDirs, f.qualityCsv, f.samplerCsv,
+                           commandLine(argc, argv));
     }
     if (f.scenePath.empty()) {
         std::cerr << "whitted-tradeoff: a scene file is required\n";

@@ -8,11 +8,14 @@
 # two sample counts against it, then runs Measure and waits
 # TRADEOFF_MEASURE_SECONDS (150 unless set) for it. With --moving it selects
 # the three balls (a click, two Shift+clicks), presses G and moves the pointer
-# up, and takes the picture during the move. Safe to re-run.
+# up, and takes the picture during the move. With --ray-tree X Y it Ctrl+clicks
+# the window's point X,Y, which opens the Ray Tree dock on that pixel, then
+# clicks the window's point RAY_TREE_ROW ("X Y", if set): a row of the dock,
+# whose ray the view then draws highlighted. Safe to re-run.
 # Needs xvfb, x11-utils (xwininfo) and imagemagick (import), and xdotool for
-# --precision-view, --tradeoff-view and --moving. Build first (scripts/setup.sh).
+# --precision-view, --tradeoff-view, --moving and --ray-tree. Build first (scripts/setup.sh).
 # Usage: scripts/screenshot.sh [--scene SCENE.json] [--precision-view | --tradeoff-view |
-#                               --moving] [OUT.png]
+#                               --moving | --ray-tree X Y] [OUT.png]
 set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -21,12 +24,14 @@ scene=scenes/seed.json
 precision_view=
 tradeoff_view=
 moving=
+ray_tree=
 while [[ $# -gt 0 ]]; do
   case $1 in
     --scene) scene=$2; shift 2 ;;
     --precision-view) precision_view=1; shift ;;
     --tradeoff-view) tradeoff_view=1; shift ;;
     --moving) moving=1; shift ;;
+    --ray-tree) ray_tree="$2 $3"; shift 3 ;;
     *) out=$1; shift ;;
   esac
 done
@@ -39,7 +44,7 @@ fail() {
 }
 
 [[ -x build/bin/whitted ]] || fail "build/bin/whitted is not built (run scripts/setup.sh)"
-tools="Xvfb xwininfo import${precision_view:+ xdotool}${tradeoff_view:+ xdotool}${moving:+ xdotool}"
+tools="Xvfb xwininfo import${precision_view:+ xdotool}${tradeoff_view:+ xdotool}${moving:+ xdotool}${ray_tree:+ xdotool}"
 for tool in $tools; do
   command -v "$tool" >/dev/null 2>&1 || fail "$tool not found (apt-get install xvfb x11-utils imagemagick xdotool)"
 done
@@ -173,6 +178,22 @@ if [[ -n "$moving" ]]; then
     at 867 $((493 - 6 * step))
     sleep 0.05
   done
+fi
+
+if [[ -n "$ray_tree" ]]; then
+  sleep 2
+  id=$(DISPLAY=$display xdotool search --name "$title" | head -n 1)
+  DISPLAY=$display xdotool windowfocus --sync "$id" ||
+    fail "could not focus the editor"
+  # shellcheck disable=SC2086 # X and Y, two words
+  DISPLAY=$display xdotool mousemove --sync $ray_tree keydown ctrl click 1 keyup ctrl ||
+    fail "could not Ctrl+click at $ray_tree"
+  sleep 2
+  if [[ -n "${RAY_TREE_ROW:-}" ]]; then
+    # shellcheck disable=SC2086 # X and Y, two words
+    DISPLAY=$display xdotool mousemove --sync $RAY_TREE_ROW click 1 ||
+      fail "could not click the row at $RAY_TREE_ROW"
+  fi
 fi
 
 # The example scenes at 640x480 render in well under a second, and compare in

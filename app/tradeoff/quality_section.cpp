@@ -5,15 +5,11 @@
 #include <set>
 #include <sstream>
 
+#include "report.h"
+
 namespace whitted::tradeoff {
 
 namespace {
-
-std::string printed(const char* pattern, double a, double b = 0.0) {
-    char text[64];
-    std::snprintf(text, sizeof text, pattern, a, b);
-    return text;
-}
 
 std::string targetText(const QualityRow& r) {
     return printed("%.0f dB", r.targetPsnrDb) +

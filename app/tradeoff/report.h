@@ -10,6 +10,9 @@
 
 namespace whitted::tradeoff {
 
+// `pattern` (printf's, up to two doubles) filled in: the reports' figures.
+std::string printed(const char* pattern, double a, double b = 0.0);
+
 // Every point as a Markdown table, front rows in bold.
 std::string pointsTable(const std::vector<TradeoffPoint>& points);
 

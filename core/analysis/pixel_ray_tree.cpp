@@ -115,12 +115,15 @@ PixelRayTree treeIn(const Scene& scene, int x, int y) {
 }  // namespace
 
 PixelRayTree pixelRayTree(const Scene& scene, int x, int y) {
+    return pixelRayTree(scene, x, y, scene.render.precision);
+}
+
+PixelRayTree pixelRayTree(const Scene& scene, int x, int y, Precision precision) {
     if (x < 0 || y < 0 || x >= scene.render.width || y >= scene.render.height)
         throw std::out_of_range("pixel " + std::to_string(x) + "," + std::to_string(y) +
                                 " is outside the " + std::to_string(scene.render.width) + "x" +
                                 std::to_string(scene.render.height) + " picture");
-    return scene.render.precision == Precision::Float ? treeIn<float>(scene, x, y)
-                                                      : treeIn<double>(scene, x, y);
+    return precision == Precision::Float ? treeIn<float>(scene, x, y) : treeIn<double>(scene, x, y);
 }
 
 Vec3 sumOfContributions(const RayTreeNode& node) {

@@ -52,6 +52,9 @@ struct PixelRayTree {
 // Pixel (x, y) of the scene's picture; the scene must be valid. Throws
 // std::out_of_range when the pixel lies outside the picture.
 PixelRayTree pixelRayTree(const Scene& scene, int x, int y);
+// The same traced in `precision` rather than the scene's own: float against
+// double without a copy of the scene.
+PixelRayTree pixelRayTree(const Scene& scene, int x, int y, Precision precision);
 
 // The sum of every node's contribution: the pixel's value but for rounding.
 Vec3 sumOfContributions(const RayTreeNode& node);

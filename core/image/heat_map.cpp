@@ -52,4 +52,16 @@ Image heatMap(const Image& a, const Image& b) {
     return out;
 }
 
+Image countMap(const std::vector<std::uint8_t>& counts, int width, int height, int top) {
+    if (counts.size() != std::size_t(width) * std::size_t(height))
+        throw std::invalid_argument("countMap: not one count a pixel");
+    Image out(width, height);
+    for (std::size_t p = 0; p < counts.size(); ++p) {
+        const float share = top > 0 ? std::min(1.0f, float(counts[p]) / float(top)) : 0.0f;
+        const glm::vec3 c = heatMapColour(share * kHeatMapSaturation);
+        for (int k = 0; k < 3; ++k) out.rgb[3 * p + k] = srgbDecode(c[k]);
+    }
+    return out;
+}
+
 }  // namespace whitted

@@ -9,6 +9,9 @@
 // purple, 4/255 orange-red, 8/255 and more pale yellow.
 #pragma once
 
+#include <cstdint>
+#include <vector>
+
 #include <glm/vec3.hpp>
 
 #include "image/image.h"
@@ -25,5 +28,10 @@ glm::vec3 heatMapColour(float difference);
 // as a linear image: shown through the sRGB curve (SPEC §5), as the editor and
 // PNG export do, each pixel is heatMapColour() to within half an 8-bit step.
 Image heatMap(const Image& a, const Image& b);
+
+// A map of small counts on the same ramp, 0 black and `top` (or more) pale
+// yellow: how deep Whitted's 1980 sampling cut each pixel. `counts` holds
+// width x height values, row by row; a linear image as heatMap()'s.
+Image countMap(const std::vector<std::uint8_t>& counts, int width, int height, int top);
 
 }  // namespace whitted

@@ -17,20 +17,10 @@
 #include "scene/scene_io.h"
 #include "tracer/kernel_dispatch.h"
 #include "tracer/progress_share.h"
+#include "tracer/render_tiles.h"
+#include "tracer/whitted1980_render.h"
 
 namespace whitted {
-namespace {
-
-struct Tile {
-    int x, y, w, h;
-};
-
-struct Pass {
-    PassKind kind;
-    int firstSample, lastSample;  // samples [first, last) of every pixel
-    double work;                  // relative cost, for the progress fraction
-    bool centres = false;         // one sample at each pixel's centre (kPixelCentre)
-};
 
 // Centre-out order: the middle of the image, where people look, arrives first.
 std::vector<Tile> spiralTiles(int width, int height, int size) {
@@ -46,6 +36,15 @@ std::vector<Tile> spiralTiles(int width, int height, int size) {
                      [&](const Tile& a, const Tile& b) { return distance(a) < distance(b); });
     return tiles;
 }
+
+namespace {
+
+struct Pass {
+    PassKind kind;
+    int firstSample, lastSample;  // samples [first, last) of every pixel
+    double work;                  // relative cost, for the progress fraction
+    bool centres = false;         // one sample at each pixel's centre (kPixelCentre)
+};
 
 // The tile edge: an adaptive render's own (adaptive_sampling.h), else as asked.
 int tileEdgeOf(const RenderOptions& o) {
@@ -530,6 +529,28 @@ class TileRenderer {
     PixelLargest pixelLargest_;  // adaptive renders with a limit on the largest error
 };
 
+template <typename T>
+RenderResult renderWith(const Scene& scene, const RenderOptions& options,
+                        const TileCallback& onTile, const StopPredicate& shouldStop) {
+    if (!options.whitted1980) return TileRenderer<T>(scene, options, onTile, shouldStop).run();
+    PreparedScene<T> s = prepareScene<T>(scene, options.bvhCache);
+    s.pruneBelow = T(options.pruneBelowWeight);
+    return renderWhitted1980(s, scene.render, options, onTile, shouldStop);
+}
+
+std::optional<std::string> whitted1980Problem(const RenderOptions& o) {
+    if (!o.whitted1980) return std::nullopt;
+    if (o.adaptive || !o.regions.empty() || !o.alsoAtDepths.empty())
+        return "Whitted's 1980 sampling renders the whole picture, with no target and no "
+               "regions or other depths";
+    if (o.whitted1980->maxLevels < 0 || o.whitted1980->maxLevels > kMaxWhitted1980Levels)
+        return "Whitted's 1980 sampling cuts a pixel 0 to " +
+               std::to_string(kMaxWhitted1980Levels) + " times";
+    if (!(o.whitted1980->threshold >= 0))
+        return "Whitted's 1980 sampling needs a threshold of 0 or more";
+    return std::nullopt;
+}
+
 }  // namespace
 
 int renderThreads(const RenderSettings& settings, const RenderOptions& options) {
@@ -566,6 +587,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options, const Tile
         throw std::invalid_argument(*problem);
     if (auto problem = alsoAtDepthsProblem(scene.render, options))
         throw std::invalid_argument(*problem);
+    if (auto problem = whitted1980Problem(options)) throw std::invalid_argument(*problem);
     if (const AroundRegions* around = options.aroundRegions;
         around &&
         (around->image.width != scene.render.width || around->image.height != scene.render.height ||
@@ -576,8 +598,8 @@ RenderResult render(const Scene& scene, const RenderOptions& options, const Tile
     activeKernel();
     const auto start = std::chrono::steady_clock::now();
     RenderResult result = scene.render.precision == Precision::Double
-                              ? TileRenderer<double>(scene, options, onTile, shouldStop).run()
-                              : TileRenderer<float>(scene, options, onTile, shouldStop).run();
+                              ? renderWith<double>(scene, options, onTile, shouldStop)
+                              : renderWith<float>(scene, options, onTile, shouldStop);
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

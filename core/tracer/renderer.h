@@ -21,6 +21,7 @@
 #include "scene/scene.h"
 #include "tracer/adaptive_sampling.h"
 #include "tracer/tracer.h"
+#include "tracer/whitted1980_sampling.h"
 
 namespace whitted {
 
@@ -76,6 +77,10 @@ struct RenderOptions {
     // render for several. Only for a fixed render without preview
     // (oneShotOptions()); std::invalid_argument otherwise.
     std::vector<int> alsoAtDepths{};
+    // Set: Whitted's own adaptive antialiasing (whitted1980_sampling.h), in
+    // one pass of the whole picture, instead of the scene's samples per pixel.
+    // Not with `adaptive`, `regions` or `alsoAtDepths` (std::invalid_argument).
+    std::optional<Whitted1980Sampling> whitted1980 = std::nullopt;
 };
 
 // For a render nobody watches (a file, a measurement): one pass of all the
@@ -153,6 +158,8 @@ struct RenderResult {
     // An adaptive render with a limit on the largest error: each rendered
     // pixel's estimate of it, in codes, at the samples its tile reached.
     PixelLargest pixelLargest;
+    // A render with RenderOptions::whitted1980: how deep each pixel was cut.
+    SubdivisionLevels subdivision;
 };
 
 // Renders the scene with its render settings. Throws std::invalid_argument for a

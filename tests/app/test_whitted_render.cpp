@@ -13,6 +13,7 @@
 #include "image/image_io.h"
 #include "support/core_support.h"
 #include "support/test_support.h"
+#include "tracer/renderer.h"
 
 namespace whitted {
 namespace {
@@ -385,6 +386,73 @@ TEST(WhittedRender, InspectOutsideThePictureOrWithAnImage_ExitTwoSayingWhy) {
     EXPECT_NE(r.err.find("--inspect prints one pixel's ray tree and renders no image"),
               std::string::npos)
         << r.err;
+    EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
+}
+
+TEST(WhittedRender, SamplerWhitted1980_WritesTheCoresPictureItsStatsAndItsMap) {
+    TempDir dir;
+    const fs::path out = dir / "w.exr", stats = dir / "stats.json", map = dir / "map.png";
+    const ProgramRun r =
+        runRender({test::kSeedScenePath, "-o", out.string(), "--width", "64", "--height", "48",
+                   "--sampler", "whitted1980", "--threshold", "6", "--subdivisions", "3", "--stats",
+                   stats.string(), "--subdivision-map", map.string()});
+    ASSERT_EQ(r.exitCode, 0) << describe(r);
+    EXPECT_NE(r.err.find("Whitted 1980 sampling (threshold 6 codes, at most 3 subdivisions)"),
+              std::string::npos)
+        << r.err;
+
+    RenderOptions options = oneShotOptions();
+    options.whitted1980 = Whitted1980Sampling{6.0, 3};
+    const RenderResult want = render(test::seedScene(64, 48), options);
+    const Image written = readImage(out);
+    EXPECT_TRUE(test::samePixels(written, want.image))
+        << test::firstDifference(written, want.image);
+
+    const nlohmann::json j = nlohmann::json::parse(test::readFile(stats));
+    EXPECT_FALSE(j.contains("samples_per_pixel")) << j.dump(2);
+    EXPECT_EQ(j["sampler"]["name"], "whitted1980");
+    EXPECT_EQ(j["sampler"]["threshold"], 6.0);
+    EXPECT_EQ(j["sampler"]["subdivisions"], 3);
+    EXPECT_EQ(j["rays"]["camera"].get<std::uint64_t>(), want.rays.camera);
+    EXPECT_DOUBLE_EQ(j["sampler"]["camera_rays_per_pixel"].get<double>(),
+                     double(want.rays.camera) / (64 * 48));
+    const auto atDepth = j["sampler"]["pixels_at_each_depth"].get<std::vector<long long>>();
+    ASSERT_EQ(atDepth.size(), 4u);
+    for (int level = 0; level <= 3; ++level)
+        EXPECT_EQ(atDepth[level],
+                  std::count(want.subdivision.levels.begin(), want.subdivision.levels.end(), level))
+            << level;
+
+    // The map: black where a pixel was not cut, pale yellow where cut three times.
+    const Image shown = readImage(map);
+    ASSERT_EQ(shown.width, 64);
+    for (int y = 0; y < 48; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const float* p = shown.pixel(x, y);
+            if (want.subdivision.at(x, y) == 0) {
+                EXPECT_EQ(p[0] + p[1] + p[2], 0.0f) << x << "," << y;
+            }
+            if (want.subdivision.at(x, y) == 3) {
+                EXPECT_GT(p[1], 0.9f) << x << "," << y;
+            }
+        }
+}
+
+TEST(WhittedRender, SamplerFlagsThatDoNotGo_ExitTwoAndWriteNothing) {
+    TempDir dir;
+    const std::string out = (dir / "o.png").string();
+    ProgramRun r =
+        runRender({test::kSeedScenePath, "-o", out, "--sampler", "whitted1980", "--spp", "4"});
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_NE(r.err.find("--sampler whitted1980 chooses its own rays"), std::string::npos) << r.err;
+    r = runRender({test::kSeedScenePath, "-o", out, "--threshold", "4"});
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    EXPECT_NE(r.err.find("need --sampler whitted1980"), std::string::npos) << r.err;
+    r = runRender(
+        {test::kSeedScenePath, "-o", out, "--sampler", "whitted1980", "--subdivisions", "7"});
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
+    r = runRender({test::kSeedScenePath, "-o", out, "--sampler", "whitted1981"});
+    EXPECT_EQ(r.exitCode, 2) << describe(r);
     EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
 }
 

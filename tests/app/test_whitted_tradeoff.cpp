@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "analysis/quality_table.h"
+#include "image/image_io.h"
 #include "scene/scene_io.h"
 #include "support/core_support.h"
 #include "support/test_support.h"
@@ -133,6 +134,50 @@ TEST(WhittedTradeoff, ReportWithQualityCsv_TargetsAgainstWhatWasMeasured) {
     EXPECT_EQ(bad.exitCode, 2);
     EXPECT_NE(bad.out.find("quality.csv: line 2: malformed value"), std::string::npos) << bad.out;
     EXPECT_EQ(test::readFile(md), text);
+}
+
+TEST(WhittedTradeoff, ReportWithSamplerCsv_ComparesWhitted1980WithTheFastestOfOursAsGood) {
+    TempDir dir;
+    saveScene(test::seedScene(64, 48), dir / "small.json");
+    const fs::path out = dir / "out";
+    ASSERT_EQ(
+        tradeoff({(dir / "small.json").string(), "--out-dir", out.string(), "--quick"}).exitCode,
+        0);
+    const fs::path csv = dir / "whitted1980.csv";
+    std::ofstream(csv) << "scene,sampler,setting,width,height,camera_rays_per_pixel,"
+                          "rays_per_pixel,seconds,psnr_db,largest_codes\n"
+                       << "seed,fixed,1 spp,160,120,1,3.1,0.002,31.5,120\n"
+                       << "seed,fixed,4 spp,160,120,4,12.3,0.008,38.2,60\n"
+                       << "seed,adaptive,to 40 dB,160,120,2.5,8,0.006,40.5,50\n"
+                       << "seed,whitted1980,\"threshold 8, 2 cuts\",160,120,1.4,4.4,0.003,36.0,90\n"
+                       << "seed,whitted1980,\"threshold 1, 4 cuts\",160,120,9,28,0.02,45.0,30\n";
+    const fs::path md = dir / "tradeoff.md";
+    const ProgramRun r =
+        tradeoff({"--report", md.string(), "--dirs", out.string(), "--sampler-csv", csv.string()});
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const std::string text = test::readFile(md);
+    EXPECT_NE(text.find("## Whitted's 1980 sampling against ours"), std::string::npos) << text;
+    // 36 dB in 3 ms: the fastest of ours as good is the adaptive 40.5 dB in 6 ms,
+    // not 4 spp's 38.2 dB in 8 ms.
+    EXPECT_NE(text.find("| threshold 8, 2 cuts | 1.40 | 3.0 | 36.0 | 90 | adaptive to 40 dB "
+                        "(40.5 dB) | 6.0 | **0.50** |"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("| threshold 1, 4 cuts | 9.00 | 20.0 | 45.0 | 30 | none of ours reaches "
+                        "it | | |"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("In all, 1 of 2 settings"), std::string::npos) << text;
+    EXPECT_NE(text.find("![seed](tradeoff/whitted1980/seed.png)"), std::string::npos) << text;
+    const Image plot = readImage(dir / "tradeoff/whitted1980/seed.png");
+    EXPECT_EQ(plot.width, 700);
+    EXPECT_EQ(plot.height, 450);
+
+    std::ofstream(csv, std::ios::app) << "seed,fixed,16 spp,160,120,16,fast\n";
+    const ProgramRun bad =
+        tradeoff({"--report", md.string(), "--dirs", out.string(), "--sampler-csv", csv.string()});
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.out.find("whitted1980.csv: line 7"), std::string::npos) << bad.out;
 }
 
 TEST(WhittedTradeoff, WidthAndHeight_OverrideTheScenesSize) {

@@ -7,6 +7,18 @@ namespace whitted::ui {
 void QualityChoice::setTarget(std::optional<QualityTarget> target) {
     if (target == target_) return;
     target_ = std::move(target);
+    if (target_) whitted1980_.reset();
+    emit changed();
+}
+
+void QualityChoice::setWhitted1980(std::optional<Whitted1980Sampling> sampling) {
+    const auto same = [](const auto& a, const auto& b) {
+        return a.has_value() == b.has_value() &&
+               (!a || (a->threshold == b->threshold && a->maxLevels == b->maxLevels));
+    };
+    if (same(sampling, whitted1980_)) return;
+    whitted1980_ = sampling;
+    if (whitted1980_) target_.reset();
     emit changed();
 }
 

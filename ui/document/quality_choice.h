@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "analysis/quality_target.h"
+#include "tracer/whitted1980_sampling.h"
 
 class QComboBox;
 
@@ -27,7 +28,13 @@ class QualityChoice : public QObject {
 
     // Unset: render the scene's samples per pixel and max depth.
     const std::optional<QualityTarget>& target() const { return target_; }
+    // A target sets the sampler back to the scene's samples per pixel.
     void setTarget(std::optional<QualityTarget> target);
+    // Set: the view samples as Whitted's 1980 paper does (corners, cut where
+    // they differ) instead of the scene's samples per pixel; it leaves any
+    // target, which chooses samples of its own.
+    const std::optional<Whitted1980Sampling>& whitted1980() const { return whitted1980_; }
+    void setWhitted1980(std::optional<Whitted1980Sampling> sampling);
 
     // "Final: 50 dB, no pixel off by more than 16 codes", or what no target means.
     static QString describe(const std::optional<QualityTarget>& target);
@@ -60,11 +67,12 @@ class QualityChoice : public QObject {
     void forgetReached();
 
   signals:
-    void changed();       // the target: the view renders again
+    void changed();       // the target or the sampler: the view renders again
     void reachedNoted();  // only what a render reached: nothing to render
 
   private:
     std::optional<QualityTarget> target_;
+    std::optional<Whitted1980Sampling> whitted1980_;
     std::map<std::string, QString> reached_;
 };
 

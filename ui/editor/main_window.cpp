@@ -23,9 +23,11 @@
 #include "editor/export_job.h"
 #include "editor/float_range_warning.h"
 #include "editor/window_placement.h"
+#include "image/heat_map.h"
 #include "panels/preset_controls.h"
 #include "panels/scene_panel.h"
 #include "tradeoff_dock/tradeoff_view.h"
+#include "viewport/image_convert.h"
 #include "viewport/render_view.h"
 
 namespace whitted::ui {
@@ -139,7 +141,7 @@ void MainWindow::sceneReplaced() {
 }
 
 void MainWindow::requestRender() {
-    worker_.request(doc_.snapshot(), quality_.target());
+    worker_.request(doc_.snapshot(), quality_.target(), quality_.whitted1980());
     newestFrameShown_ = false;
 }
 
@@ -156,22 +158,28 @@ void MainWindow::onFrame(const RenderFrame& frame) {
     // Queued behind the paint that setFrame() asks for, so that the frame is
     // on screen before the prediction copies the scene.
     QMetaObject::invokeMethod(this, &MainWindow::predictWhenShown, Qt::QueuedConnection);
-    view_->setFrame(frame.image, QSizeF(frame.settings.width / double(frame.block),
-                                        frame.settings.height / double(frame.block)));
+    lastFrame_ = frame;
+    showFrameOrMap();
     // A render to a quality decides after each pass whether another follows:
     // it has no count of passes to give.
     passLabel_->setText(frame.preview ? tr("Preview")
                         : frame.qualityPlan
                             ? tr("Pass %1").arg(frame.pass + 1)
                             : tr("Pass %1 of %2").arg(frame.pass + 1).arg(frame.passCount));
-    samplesLabel_->setText(QualityChoice::samplesPerPixel(frame.samples));
+    samplesLabel_->setText(!frame.whitted1980 ? QualityChoice::samplesPerPixel(frame.samples)
+                           : frame.renderComplete
+                               ? tr("Whitted 1980: %1 camera rays a pixel")
+                                     .arg(double(frame.cameraRays) / (double(frame.settings.width) *
+                                                                      frame.settings.height),
+                                          0, 'f', 2)
+                               : tr("Whitted 1980 sampling"));
     timeLabel_->setText(tr("%1 s").arg(frame.seconds, 0, 'f', 2));
     speedLabel_->setText(frame.renderComplete
                              ? tr("%1 Mrays/s").arg(frame.mraysPerSecond, 0, 'f', 1)
                              : tr("rendering…"));
     if (frame.qualityPlan)
         showQualityReached(frame);
-    else if (frame.renderComplete) {  // the predictions are for settings, not targets
+    else if (frame.renderComplete && !frame.whitted1980) {  // predictions: for the settings
         record_.addRender({frame.settings, frame.seconds, frame.rays});
         // The newest request's frame: the document holds the scene it rendered.
         Scene rendered = doc_.scene();
@@ -179,6 +187,24 @@ void MainWindow::onFrame(const RenderFrame& frame) {
         record_.addViewRender(rendered, frame.seconds);
     }
     emit frameShown(frame);
+}
+
+void MainWindow::showFrameOrMap() {
+    const RenderFrame& frame = lastFrame_;
+    if (frame.image.isNull()) return;
+    if (subdivisionMap_->isChecked() && frame.subdivision && frame.whitted1980) {
+        const SubdivisionLevels& levels = *frame.subdivision;
+        view_->setFrame(toQImage(
+            countMap(levels.levels, levels.width, levels.height, frame.whitted1980->maxLevels)));
+        return;
+    }
+    if (subdivisionMap_->isChecked() && frame.renderComplete)
+        statusBar()->showMessage(
+            tr("Only Whitted 1980 sampling has a subdivision map: choose it under Antialiasing "
+               "in the Render tab"),
+            5000);
+    view_->setFrame(frame.image, QSizeF(frame.settings.width / double(frame.block),
+                                        frame.settings.height / double(frame.block)));
 }
 
 // A render to a quality: the target, the depth chosen, the samples it took

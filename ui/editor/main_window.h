@@ -34,6 +34,7 @@ namespace whitted::ui {
 class RenderView;
 class ScenePanel;
 class PrecisionView;
+class RayTreeView;
 class Autosave;
 struct Recovery;
 class TradeoffView;
@@ -63,6 +64,7 @@ class MainWindow : public QMainWindow {
     PropertyPanel* propertyPanel() { return propertyPanel_; }
     PrecisionView* precisionView() { return precisionView_; }
     TradeoffView* tradeoffView() { return tradeoffView_; }
+    RayTreeView* rayTreeView() { return rayTreeView_; }
     TradeoffRecord* tradeoffRecord() { return &record_; }
     QualityChoice* qualityChoice() { return &quality_; }
     FloatRangeWarning* floatRangeWarning() { return floatRangeWarning_; }
@@ -129,6 +131,7 @@ class MainWindow : public QMainWindow {
     // main_window_docks.cpp
     void buildDocks();
     void buildTradeoffDock();
+    void buildRayTreeDock();
     // Shown under the settings, a dock squeezed small gets half of the column.
     void giveHalfOfColumn(QDockWidget* settingsDock, QDockWidget* dock);
 
@@ -147,6 +150,7 @@ class MainWindow : public QMainWindow {
     QString lastDirectory() const;
     void rememberDirectory(const QString& path);
     void onFrame(const RenderFrame& frame);
+    void showFrameOrMap();
     void showQualityReached(const RenderFrame& frame);
     void requestRender();
     // Asks predictor_ once edits have paused and the newest edit's first
@@ -170,6 +174,7 @@ class MainWindow : public QMainWindow {
     PropertyPanel* propertyPanel_ = nullptr;
     PrecisionView* precisionView_ = nullptr;
     TradeoffView* tradeoffView_ = nullptr;
+    RayTreeView* rayTreeView_ = nullptr;
     FloatRangeWarning* floatRangeWarning_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QToolBar* toolBar_ = nullptr;
@@ -178,6 +183,10 @@ class MainWindow : public QMainWindow {
     QAction *undoAction_ = nullptr, *redoAction_ = nullptr;
     QLabel* passLabel_ = nullptr;
     QLabel* samplesLabel_ = nullptr;
+    // The last frame, and how deep Whitted 1980 sampling cut its pixels (null
+    // for other samplers): what View > Subdivision Map switches between.
+    RenderFrame lastFrame_;
+    QAction* subdivisionMap_ = nullptr;
     QLabel* timeLabel_ = nullptr;
     QLabel* speedLabel_ = nullptr;
     QString lastError_;

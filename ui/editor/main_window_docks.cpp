@@ -9,6 +9,7 @@
 #include "panels/property_panels.h"
 #include "panels/scene_panel.h"
 #include "precision_dock/precision_view.h"
+#include "ray_tree_dock/ray_tree_view.h"
 #include "tradeoff_dock/tradeoff_view.h"
 #include "viewport/render_view.h"
 
@@ -51,6 +52,7 @@ void MainWindow::buildDocks() {
                 if (visible) giveHalfOfColumn(settingsDock, precisionDock);
             });
     buildTradeoffDock();
+    buildRayTreeDock();
 
     connect(scenePanel_, &ScenePanel::selectionChanged, this, [this, tabs](ItemKind, int index) {
         if (index >= 0) tabs->setCurrentWidget(propertyPanel_);
@@ -84,6 +86,37 @@ void MainWindow::buildTradeoffDock() {
             dock->raise();
         });
     connect(this, &MainWindow::frameShown, tradeoffView_, &TradeoffView::frameShown);
+}
+
+void MainWindow::buildRayTreeDock() {
+    // Under the render view beside the Trade-off dock, hidden until a pixel is
+    // Ctrl+clicked or it is asked for: the tree's rows want the window's width.
+    rayTreeView_ = new RayTreeView(&doc_);
+    auto* dock = new QDockWidget(tr("Ray Tree"), this);
+    dock->setObjectName("rayTreeDock");
+    dock->setWidget(rayTreeView_);
+    addDockWidget(Qt::BottomDockWidgetArea, dock);
+    dock->hide();
+    QAction* toggle = dock->toggleViewAction();
+    toggle->setObjectName("toggleRayTreeView");
+    toggle->setShortcut(QKeySequence(tr("Ctrl+Shift+R")));
+    toggle->setStatusTip(tr("The rays that make a pixel's colour: Ctrl+click a pixel"));
+    connect(view_, &RenderView::pixelInspected, this, [this, dock](QPoint pixel) {
+        rayTreeView_->inspect(pixel);
+        dock->show();
+        dock->raise();
+    });
+    connect(rayTreeView_, &RayTreeView::overlayChanged, this, [this] {
+        if (rayTreeView_->isVisible())
+            view_->setInspectedRays(rayTreeView_->rays(), rayTreeView_->highlightedRay());
+        else
+            view_->setInspectedRays({}, -1);
+    });
+    connect(dock, &QDockWidget::visibilityChanged, this, [this, dock](bool visible) {
+        if (visible && !dock->isFloating() && dockWidgetArea(dock) == Qt::BottomDockWidgetArea &&
+            dock->height() < height() / 4)
+            resizeDocks({dock}, {height() / 3}, Qt::Vertical);
+    });
 }
 
 void MainWindow::giveHalfOfColumn(QDockWidget* settingsDock, QDockWidget* dock) {

@@ -236,6 +236,13 @@ void MainWindow::buildViewMenu() {
         else
             cameraMenu->addAction(a);
     }
+    subdivisionMap_ = viewMenu->addAction(tr("Su&bdivision Map"));
+    subdivisionMap_->setObjectName(QStringLiteral("showSubdivisionMap"));
+    subdivisionMap_->setCheckable(true);
+    subdivisionMap_->setStatusTip(
+        tr("How deep Whitted 1980 sampling cut each pixel: black not at all, pale yellow the "
+           "most (Render tab, Antialiasing)"));
+    connect(subdivisionMap_, &QAction::toggled, this, [this] { showFrameOrMap(); });
     QAction* snap = viewMenu->addAction(tr("Snap &Step…"), this, [this] { askSnapStep(); });
     snap->setObjectName(QStringLiteral("snapStep"));
     snap->setStatusTip(tr("The grid that Ctrl snaps a move to"));

@@ -1,6 +1,8 @@
 // The property, camera and render settings panels: forms of bound fields.
 #include "panels/property_panels.h"
 
+#include <string_view>
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
@@ -17,6 +19,7 @@
 #include "panels/number_field.h"
 #include "panels/panel_fields.h"
 #include "panels/preset_controls.h"
+#include "panels/sampler_controls.h"
 #include "panels/sphere_page.h"
 
 namespace whitted::ui {
@@ -231,12 +234,16 @@ RenderSettingsPanel::RenderSettingsPanel(SceneDocument* doc, TradeoffRecord* rec
         // not what the render uses (greyed "8" under Final, rendered at 6, read
         // as the depth of the picture).
         const auto followTarget = [this, quality] {
-            const bool settings = !quality->target();
-            const QString unused = settings
-                                       ? QString()
-                                       : tr("  (not used while rendering to %1)")
-                                             .arg(QString::fromStdString(quality->target()->name));
+            const QString target =
+                quality->target() ? QString::fromStdString(quality->target()->name) : QString();
             for (const char* name : {"renderMaxDepth", "renderSamples"}) {
+                const bool samples = std::string_view(name) == "renderSamples";
+                QString unused;
+                if (!target.isEmpty())
+                    unused = tr("  (not used while rendering to %1)").arg(target);
+                else if (samples && quality->whitted1980())
+                    unused = tr("  (not used by Whitted 1980 sampling)");
+                const bool settings = unused.isEmpty();
                 auto* field = findChild<IntField*>(QLatin1String(name));
                 field->setSuffix(unused);
                 if (field->isEnabled() == settings) continue;
@@ -244,12 +251,16 @@ RenderSettingsPanel::RenderSettingsPanel(SceneDocument* doc, TradeoffRecord* rec
                 // The field's own tooltip comes back with the settings.
                 if (!settings) field->setProperty("settingsToolTip", field->toolTip());
                 field->setToolTip(settings ? field->property("settingsToolTip").toString()
-                                           : tr("Chosen for the scene at each render while "
-                                                "rendering to a quality (Render to)"));
+                                  : !target.isEmpty()
+                                      ? tr("Chosen for the scene at each render while "
+                                           "rendering to a quality (Render to)")
+                                      : tr("Whitted 1980 sampling chooses its own rays "
+                                           "(Antialiasing)"));
             }
         };
         connect(quality, &QualityChoice::changed, this, followTarget);
         followTarget();
+        addSamplerRows(form, quality);
     }
 
     connect(doc_, &SceneDocument::sceneChanged, this, &RenderSettingsPanel::refresh);

@@ -5,6 +5,7 @@
 #include <QPainter>
 #include <QWheelEvent>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <vector>
@@ -227,7 +228,23 @@ void RenderView::mouseReleaseEvent(QMouseEvent* e) {
         return;
     }
     if (e->button() != Qt::LeftButton) return;
+    if (e->modifiers().testFlag(Qt::ControlModifier)) return inspectPixel(e->position());
     clickSelect(e->position(), e->modifiers().testFlag(Qt::ShiftModifier));
+}
+
+void RenderView::inspectPixel(const QPointF& pos) {
+    const QRect r = imageRect();
+    if (!r.contains(pos.toPoint())) return;
+    const Scene& scene = doc_->scene();
+    const QPointF image = imagePoint(scene, r, pos);
+    emit pixelInspected(QPoint(std::clamp(int(image.x()), 0, scene.render.width - 1),
+                               std::clamp(int(image.y()), 0, scene.render.height - 1)));
+}
+
+void RenderView::setInspectedRays(std::vector<DrawnRay> rays, int highlighted) {
+    overlay_.rays = std::move(rays);
+    overlay_.highlightedRay = highlighted;
+    update();
 }
 
 void RenderView::wheelEvent(QWheelEvent* e) {
@@ -390,6 +407,9 @@ QList<QPair<QString, QString>> RenderView::mouseControls() {
         {tr("Wheel"), tr("Move the camera nearer to or farther from what is under the cursor")},
         {tr("Click"), tr("Select the sphere or light under the cursor")},
         {tr("Shift+click"), tr("Add it to the selection, or take it out")},
+        {tr("Ctrl+click"),
+         tr("Show the rays that make the pixel's colour (the Ray Tree dock, drawn over the "
+            "picture)")},
         {tr("B, then drag"),
          tr("Select the spheres (or lights) inside the box; Shift: add to the selection")},
         {tr("G, then move"), tr("Move the selected spheres or lights with the pointer")},

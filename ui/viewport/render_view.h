@@ -20,6 +20,7 @@
 // (as G does, kept on release). Click selects what is under the pointer,
 // Shift+click adds it to the selection or takes it out; B, then a drag,
 // selects the spheres and lights inside the box (Shift: adds to the selection).
+// Ctrl+click inspects the pixel under the pointer (the Ray Tree dock).
 //
 // G moves the selection with the pointer, as in Blender: in the plane through
 // the active item facing the camera, the point grabbed staying under the
@@ -103,6 +104,10 @@ class RenderView : public QWidget {
     // What the mouse does in the view, for the help: (gesture, effect) pairs.
     static QList<QPair<QString, QString>> mouseControls();
 
+    // The rays drawn over the picture: an inspected pixel's tree, `highlighted`
+    // (an index into rays, or -1) drawn over the others.
+    void setInspectedRays(std::vector<DrawnRay> rays, int highlighted);
+
     // The name shown for what is under the cursor; empty when nothing is.
     QString hoverText() const { return overlay_.hoverText; }
 
@@ -117,6 +122,8 @@ class RenderView : public QWidget {
     void moveMessage(const QString& text);
     // A move or scale ended, kept or put back.
     void moveFinished();
+    // Ctrl+click on the picture: pixel (x, y) of the scene's render size.
+    void pixelInspected(QPoint pixel);
 
   protected:
     void paintEvent(QPaintEvent*) override;
@@ -177,6 +184,7 @@ class RenderView : public QWidget {
     QString moveText() const;
     // Click and box selection.
     void clickSelect(const QPointF& pos, bool toggle);
+    void inspectPixel(const QPointF& pos);
     void boxSelect(const QRect& box, bool add);
     void flyKey(QKeyEvent* e);
 

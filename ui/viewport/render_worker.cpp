@@ -43,8 +43,9 @@ void RenderWorker::deliver() {
 }
 
 quint64 RenderWorker::request(std::shared_ptr<const Scene> scene,
-                              const std::optional<QualityTarget>& quality) {
-    return requests_.request(RenderRequest{std::move(scene), quality});
+                              const std::optional<QualityTarget>& quality,
+                              const std::optional<Whitted1980Sampling>& whitted1980) {
+    return requests_.request(RenderRequest{std::move(scene), quality, whitted1980});
 }
 
 Scene viewSized(Scene scene) {
@@ -75,10 +76,12 @@ using Clock = std::chrono::steady_clock;
 // posted, so frames go out in the order they were made.
 class FrameAssembler {
   public:
-    FrameAssembler(const Scene& scene, std::shared_ptr<const QualityPlan> plan, quint64 generation,
+    FrameAssembler(const Scene& scene, std::shared_ptr<const QualityPlan> plan,
+                   std::optional<Whitted1980Sampling> whitted1980, quint64 generation,
                    std::function<bool()> stopping, std::function<void(RenderFrame)> post)
         : scene_(scene),
           plan_(std::move(plan)),
+          whitted1980_(whitted1980),
           generation_(generation),
           stopping_(std::move(stopping)),
           post_(std::move(post)),
@@ -127,6 +130,10 @@ class FrameAssembler {
         frame.rays = result.rays.total();
         frame.linear = std::make_shared<const Image>(std::move(result.image));
         frame.qualityReached = result.adaptive;
+        frame.cameraRays = result.rays.camera;
+        if (!result.subdivision.levels.empty())
+            frame.subdivision =
+                std::make_shared<const SubdivisionLevels>(std::move(result.subdivision));
         return frame;
     }
 
@@ -162,12 +169,14 @@ class FrameAssembler {
         frame.samples = samplesDone_;
         frame.settings = scene_.render;
         frame.qualityPlan = plan_;
+        frame.whitted1980 = whitted1980_;
         frame.seconds = std::chrono::duration<double>(Clock::now() - start_).count();
         return frame;
     }
 
     const Scene& scene_;
     const std::shared_ptr<const QualityPlan> plan_;
+    const std::optional<Whitted1980Sampling> whitted1980_;
     const quint64 generation_;
     const std::function<bool()> stopping_;
     const std::function<void(RenderFrame)> post_;
@@ -206,8 +215,9 @@ void RenderWorker::renderOne(RenderRequest requested, quint64 generation) {
         applyPlan(*plan, *planned, options);
         shared = std::move(planned);
     }
+    options.whitted1980 = requested.whitted1980;
     const Scene& scene = *shared;
-    FrameAssembler frames(scene, plan, generation, shouldStop,
+    FrameAssembler frames(scene, plan, options.whitted1980, generation, shouldStop,
                           [this](RenderFrame frame) { post(std::move(frame)); });
     RenderResult result = render(
         scene, options, [&](const TileUpdate& t) { frames.addTile(t); }, shouldStop);

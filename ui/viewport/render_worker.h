@@ -44,6 +44,7 @@ Scene viewSized(Scene scene);
 struct RenderRequest {
     std::shared_ptr<const Scene> scene;  // the document's snapshot, never copied to be read
     std::optional<QualityTarget> quality;
+    std::optional<Whitted1980Sampling> whitted1980;  // instead of the scene's samples
 };
 
 struct RenderFrame {
@@ -69,6 +70,11 @@ struct RenderFrame {
     // depth is in `settings`) and, in the complete frame, what was reached.
     std::shared_ptr<const QualityPlan> qualityPlan;
     std::optional<AdaptiveOutcome> qualityReached;
+    // Sampled as Whitted's 1980 paper does: how, and in the complete frame,
+    // how deep each pixel was cut and the camera rays it took.
+    std::optional<Whitted1980Sampling> whitted1980;
+    std::shared_ptr<const SubdivisionLevels> subdivision;
+    std::uint64_t cameraRays = 0;
 };
 
 class RenderWorker : public QObject {
@@ -84,7 +90,8 @@ class RenderWorker : public QObject {
     // scene must pass validateScene(), as the document's always does; the
     // render does not check it again.
     quint64 request(std::shared_ptr<const Scene> scene,
-                    const std::optional<QualityTarget>& quality = std::nullopt);
+                    const std::optional<QualityTarget>& quality = std::nullopt,
+                    const std::optional<Whitted1980Sampling>& whitted1980 = std::nullopt);
     quint64 latestGeneration() const { return requests_.latestTicket(); }
 
     // How often frames are sent while a pass is in progress.

@@ -182,6 +182,7 @@ void paintViewOverlay(QPainter& painter, const Scene& scene, const QRect& imageR
     painter.setClipRect(imageRect);
     if (selection.kind() == ItemKind::Sphere)
         paintSelectedSpheres(painter, scene, imageRect, selection);
+    paintRayTree(painter, scene, imageRect, overlay.rays, overlay.highlightedRay);
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         const bool isSelected = selection.contains(ItemKind::Light, int(i));
         paintLightMarker(painter, lightMarkerPlace(scene, imageRect, scene.lights[i].position),

@@ -1,5 +1,6 @@
 // What the render view draws over the picture: the selected spheres' outlines
-// (the active one brighter; dots at their centres past kMostOutlines),
+// (the active one brighter; dots at their centres past kMostOutlines), the
+// rays of the pixel the Ray Tree dock inspects,
 // a marker for each light (lights have no surface to see; one outside the
 // picture sits at its edge with an arrow towards it), the orbit's pivot
 // while dragging, and the name of what is under the cursor. Positions come
@@ -8,6 +9,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include <QPoint>
 #include <QRect>
@@ -15,6 +17,7 @@
 
 #include "document/scene_document.h"
 #include "scene/scene.h"
+#include "viewport/ray_tree_overlay.h"
 
 class QPainter;
 
@@ -24,7 +27,9 @@ struct ViewOverlay {
     std::optional<Vec3> pivot;  // the orbit's pivot, drawn while a drag turns about it
     QString hoverText;          // empty: nothing under the cursor
     QPoint hoverPos;
-    QRect box;  // the box being dragged out to select with (B); empty: none
+    QRect box;                   // the box being dragged out to select with (B); empty: none
+    std::vector<DrawnRay> rays;  // an inspected pixel's ray tree (the Ray Tree dock)
+    int highlightedRay = -1;
 };
 
 // Outlines cost a polygon each: a selection of more spheres shows dots.

@@ -1,0 +1,37 @@
+// docs/tradeoff.md's section on Whitted's 1980 sampling: bench_whitted1980's
+// measurements of it against our fixed and adaptive sampling, a table and a
+// plot a scene, and the verdict the figures give.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <QString>
+
+#include "plot/scatter_plot.h"
+
+namespace whitted::tradeoff {
+
+// One render of bench_whitted1980's CSV.
+struct SamplerRow {
+    std::string scene, sampler, setting;  // sampler: fixed, adaptive or whitted1980
+    int width = 0, height = 0;
+    double cameraRaysPerPixel = 0, raysPerPixel = 0, seconds = 0, psnrDb = 0, largestCodes = 0;
+};
+
+// Throws std::runtime_error naming the file and line when it is not such a CSV.
+std::vector<SamplerRow> readSamplerCsv(const std::filesystem::path& file);
+
+// PSNR against milliseconds, one line a sampler, for one scene's rows.
+ui::PlotSpec samplerPlot(const QString& scene, const std::vector<SamplerRow>& rows);
+
+// The section; `plots` holds each scene's plot file, relative to the report,
+// in the order the scenes first appear in `rows`.
+std::string samplerSection(const std::vector<SamplerRow>& rows, const std::string& csvFile,
+                           const std::vector<std::string>& plots);
+
+// The scenes in the order they first appear.
+std::vector<std::string> samplerScenes(const std::vector<SamplerRow>& rows);
+
+}  // namespace whitted::tradeoff

@@ -8,9 +8,13 @@
 // Then, for each of the 1980 settings, the fastest of ours that is at least as
 // good: a ratio under 1 is a win for 1980.
 //
-// Usage: bench_whitted1980 [WIDTH [CSV]] (default 160, the height three
-// quarters of it). With CSV, the rows are also written there
-// (benchmarks/whitted1980.csv keeps the published ones).
+// Usage: bench_whitted1980 [WIDTH [CSV [PICTURE]]] (default 160, the height
+// three quarters of it). With CSV, the rows are also written there
+// (benchmarks/whitted1980.csv keeps the published ones); with PICTURE, why the
+// 1980 sampler stops short on the seed, as four panels side by side, each
+// twice its size: its render (threshold 8, 2 cuts), the reference, the error
+// of each pixel (the Precision Check's heat map) and how deep each pixel was
+// cut (docs/tradeoff/whitted1980/why-seed.png).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -24,7 +28,9 @@
 #include "analysis/quality_check.h"
 #include "base/csv_rows.h"
 #include "bench_scenes.h"
+#include "image/heat_map.h"
 #include "image/image_error.h"
+#include "image/image_io.h"
 #include "tracer/renderer.h"
 
 using namespace whitted;
@@ -59,7 +65,8 @@ std::vector<Sampler> samplers() {
     for (const auto& [threshold, levels] :
          {std::pair{16.0, 1}, {8.0, 2}, {4.0, 2}, {4.0, 3}, {2.0, 3}, {1.0, 4}}) {
         char setting[64];
-        std::snprintf(setting, sizeof setting, "threshold %g, %d cuts", threshold, levels);
+        std::snprintf(setting, sizeof setting, "threshold %g, %d cut%s", threshold, levels,
+                      levels == 1 ? "" : "s");
         Sampler s{"whitted1980", setting, oneShotOptions()};
         s.options.whitted1980 = Whitted1980Sampling{threshold, levels};
         list.push_back(s);
@@ -120,6 +127,26 @@ void printScene(const std::vector<Row>& rows) {
     }
 }
 
+// `panel` at twice its size into `into` from column `x`.
+void paste(const Image& panel, Image& into, int x) {
+    for (int y = 0; y < into.height; ++y)
+        for (int dx = 0; dx < 2 * panel.width; ++dx)
+            std::copy_n(panel.pixel(dx / 2, y / 2), 3, into.pixel(x + dx, y));
+}
+
+void writeWhy(const Scene& scene, const Image& reference, const std::string& file) {
+    RenderOptions options = oneShotOptions();
+    options.whitted1980 = Whitted1980Sampling{8.0, 2};
+    const RenderResult result = render(scene, options);
+    const int w = scene.render.width, h = scene.render.height;
+    Image why(8 * w, 2 * h);
+    paste(result.image, why, 0);
+    paste(reference, why, 2 * w);
+    paste(heatMap(result.image, reference), why, 4 * w);
+    paste(countMap(result.subdivision.levels, w, h, 2), why, 6 * w);
+    writeImage(why, file, {});
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -144,6 +171,7 @@ int main(int argc, char** argv) {
         std::vector<Row> rows;
         for (const Sampler& sampler : samplers())
             rows.push_back(measure(named, sampler, reference));
+        if (argc > 3 && named.name == "seed") writeWhy(named.scene, reference, argv[3]);
         printScene(rows);
         for (const Row& r : rows)
             if (csv.is_open())

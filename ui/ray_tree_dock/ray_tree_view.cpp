@@ -15,6 +15,7 @@
 #include <QVBoxLayout>
 
 #include "document/scene_document.h"
+#include "image/image_compare.h"
 #include "image/srgb.h"
 
 namespace whitted::ui {
@@ -28,10 +29,11 @@ QString rgbText(const Vec3& c) {
     return QStringLiteral("%1, %2, %3").arg(c.r, 0, 'f', 4).arg(c.g, 0, 'f', 4).arg(c.b, 0, 'f', 4);
 }
 
-// An 8-bit step of the linear value: less is a difference no picture shows.
+// A step of the 8-bit picture or more, as the Precision Check counts them.
 bool differ(const Vec3& a, const Vec3& b) {
-    const Vec3 d = glm::abs(a - b);
-    return std::max({d.r, d.g, d.b}) >= 1.0 / 255;
+    const float fa[3] = {float(a.r), float(a.g), float(a.b)};
+    const float fb[3] = {float(b.r), float(b.g), float(b.b)};
+    return displayDifference(fa, fb) >= 1.0f / 255.0f;
 }
 
 QIcon swatch(const QColor& colour) {

@@ -23,7 +23,7 @@ namespace {
 // sanitizer with other tests busy on both cores, seconds.
 constexpr int kTreeTimeoutMs = 30000;
 
-enum Column { RayColumn, HitColumn, DistanceColumn, WeightColumn, AddsColumn, OtherColumn };
+enum Column { RayColumn, AddsColumn, OtherColumn, HitColumn, WeightColumn, DistanceColumn };
 
 QString rgbText(const Vec3& c) {
     return QStringLiteral("%1, %2, %3").arg(c.r, 0, 'f', 4).arg(c.g, 0, 'f', 4).arg(c.b, 0, 'f', 4);

@@ -22,7 +22,9 @@ namespace whitted::ui {
 
 namespace {
 
-enum Column { RayColumn, HitColumn, DistanceColumn, WeightColumn, AddsColumn, OtherColumn };
+// What a ray adds right after it, what the reader came for, and the same in
+// the other precision beside it.
+enum Column { RayColumn, AddsColumn, OtherColumn, HitColumn, WeightColumn, DistanceColumn };
 
 // Figures as the dock lists them: linear colours to four decimals.
 QString rgbText(const Vec3& c) {
@@ -96,8 +98,8 @@ RayTreeView::RayTreeView(SceneDocument* doc, QWidget* parent)
     summary_->setText(
         tr("Ctrl+click a pixel of the picture to see the rays that make its colour."));
     rows_->setObjectName(QStringLiteral("rayTreeRows"));
-    rows_->setHeaderLabels({tr("Ray"), tr("Hits"), tr("Distance"), tr("Weight"),
-                            tr("Adds (linear r, g, b)"), tr("In the other precision")});
+    rows_->setHeaderLabels({tr("Ray"), tr("Adds (linear r, g, b)"), tr("In the other precision"),
+                            tr("Hits"), tr("Weight"), tr("Distance")});
     rows_->setAlternatingRowColors(true);
     rows_->setUniformRowHeights(true);
     rows_->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -193,19 +195,19 @@ QTreeWidgetItem* RayTreeView::addRow(QTreeWidgetItem* parent, const RayTreeNode&
     const bool shadow = node.kind == RayTreeNode::Kind::Shadow;
     item->setText(AddsColumn, shadow ? tr("(in its hit's)") : rgbText(node.contribution));
     if (!shadow) item->setIcon(AddsColumn, swatch(displayColour(node.contribution)));
-    if (!other) {
+    // The same ray in the other precision hits the same thing (a shadow ray:
+    // lets through the same light, to an 8-bit step).
+    const bool sameHit =
+        other && other->hit == node.hit &&
+        other->totalInternalReflection == node.totalInternalReflection &&
+        std::abs(other->transmittance - node.transmittance) < 1.0 / 255;
+    if (!other)
         item->setText(OtherColumn, tr("no such ray"));
-    } else if (other->hit != node.hit || other->transmittance != node.transmittance ||
-               other->totalInternalReflection != node.totalInternalReflection) {
+    else if (!sameHit)
         item->setText(OtherColumn, hitText(*other, shown_.sphereNames));
-    } else {
+    else
         item->setText(OtherColumn, shadow ? tr("the same") : rgbText(other->contribution));
-    }
-    const bool different = !other || other->hit != node.hit ||
-                           other->totalInternalReflection != node.totalInternalReflection ||
-                           (other->transmittance <= 0) != (node.transmittance <= 0) ||
-                           differ(other->contribution, node.contribution);
-    if (different) {
+    if (!sameHit || (!shadow && differ(other->contribution, node.contribution))) {
         item->setForeground(OtherColumn, QColor(220, 60, 40));
         item->setToolTip(OtherColumn, tr("Float and double differ here by an 8-bit step or more"));
     }
@@ -217,7 +219,7 @@ QTreeWidgetItem* RayTreeView::addRow(QTreeWidgetItem* parent, const RayTreeNode&
         cut->setText(AddsColumn, tr("would add %1").arg(rgbText(node.pastDepth)));
         QFont italic = cut->font(RayColumn);
         italic.setItalic(true);
-        for (int c = RayColumn; c <= OtherColumn; ++c) cut->setFont(c, italic);
+        for (int c = RayColumn; c <= DistanceColumn; ++c) cut->setFont(c, italic);
     }
     for (std::size_t i = 0; i < node.children.size(); ++i)
         addRow(item, node.children[i], childOf(other, i), rayIndex);

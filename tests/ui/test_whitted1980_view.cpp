@@ -51,8 +51,10 @@ TEST_F(Whitted1980ViewTest, ChosenInTheRenderTab_TheViewShowsCoresPicture) {
     const double perPixel = double(want.rays.camera) / (kWidth * kHeight);
     EXPECT_TRUE(statusSays(
         QStringLiteral("Whitted 1980: %1 camera rays a pixel").arg(perPixel, 0, 'f', 2)));
-    // Samples per pixel no longer count, and say so.
+    // Samples per pixel no longer count, and say so; nor do their predictions.
     EXPECT_FALSE(child<IntField>("renderSamples")->isEnabled());
+    EXPECT_TRUE(child<QLabel>("predictedTime")->text().startsWith("none for Whitted 1980"))
+        << child<QLabel>("predictedTime")->text().toStdString();
 
     // A finer threshold and more cuts: rendered again, with them.
     const int before = log->completed;

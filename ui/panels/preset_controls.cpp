@@ -203,6 +203,13 @@ void PresetControls::refresh() {
         const QString reached = quality_->lastReached(target->name);
         time_->setText(targetTimeText(ahead, reached));
         error_->setText(targetErrorText(ahead, target));
+    } else if (quality_->whitted1980()) {
+        // Its rays follow the picture's edges: no probe or past render of the
+        // settings speaks for them.
+        const QString none = tr("none for Whitted 1980 sampling: the status bar says what each "
+                                "render took");
+        time_->setText(none);
+        error_->setText(none);
     } else {
         time_->setText(timeText(now));
         error_->setText(errorText(now));

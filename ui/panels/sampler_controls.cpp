@@ -36,9 +36,14 @@ void addSamplerRows(QFormLayout* form, QualityChoice* quality) {
     const Whitted1980Sampling defaults;
     threshold->setValue(defaults.threshold);
     subdivisions->setValue(defaults.maxLevels);
-    form->addRow(QObject::tr("Antialiasing:"), sampler);
-    form->addRow(QObject::tr("Threshold:"), threshold);
-    form->addRow(QObject::tr("Subdivisions:"), subdivisions);
+    // Under the samples per pixel, which it replaces when chosen.
+    int row = form->rowCount() - 1;
+    QFormLayout::ItemRole role;
+    if (QWidget* samples = form->parentWidget()->findChild<QWidget*>("renderSamples"))
+        form->getWidgetPosition(samples, &row, &role);
+    form->insertRow(row + 1, QObject::tr("Antialiasing:"), sampler);
+    form->insertRow(row + 2, QObject::tr("Threshold:"), threshold);
+    form->insertRow(row + 3, QObject::tr("Subdivisions:"), subdivisions);
 
     const auto choose = [=] {
         if (sampler->currentIndex() == 0)

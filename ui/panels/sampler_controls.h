@@ -11,8 +11,9 @@ namespace whitted::ui {
 
 class QualityChoice;
 
-// Adds the rows to `form`: "renderSampler" (a combo box), and, shown while
-// Whitted 1980 is chosen, "samplerThreshold" and "samplerSubdivisions".
+// Adds the rows to `form`, under its "renderSamples" field: "renderSampler"
+// (a combo box), and, shown while Whitted 1980 is chosen, "samplerThreshold"
+// and "samplerSubdivisions".
 void addSamplerRows(QFormLayout* form, QualityChoice* quality);
 
 }  // namespace whitted::ui

@@ -182,15 +182,18 @@ std::string samplerSectionWithPlots(const std::vector<tradeoff::SamplerRow>& row
         std::string slug = scene;
         for (char& c : slug)
             if (!std::isalnum(static_cast<unsigned char>(c))) c = '-';
-        const std::string relative = "tradeoff/whitted1980/" + slug + ".png";
+        const std::string stem = "tradeoff/whitted1980/" + slug;
         std::vector<tradeoff::SamplerRow> mine;
         for (const tradeoff::SamplerRow& r : rows)
             if (r.scene == scene) mine.push_back(r);
         fs::create_directories(base / "tradeoff" / "whitted1980");
-        writePng(ui::renderPlot(tradeoff::samplerPlot(QString::fromStdString(scene), mine),
-                                QSize(700, 450)),
-                 base / relative);
-        plots.push_back(relative);
+        for (const auto& [axis, ending] : {std::pair{tradeoff::SamplerAxis::Time, ".png"},
+                                           {tradeoff::SamplerAxis::CameraRays, "-rays.png"}})
+            writePng(
+                ui::renderPlot(tradeoff::samplerPlot(QString::fromStdString(scene), mine, axis),
+                               QSize(560, 400)),
+                base / (stem + ending));
+        plots.push_back(stem);
     }
     return tradeoff::samplerSection(rows, csvFile, plots);
 }

@@ -119,10 +119,17 @@ std::vector<std::string> samplerScenes(const std::vector<SamplerRow>& rows) {
     return scenes;
 }
 
-ui::PlotSpec samplerPlot(const QString& scene, const std::vector<SamplerRow>& rows) {
+ui::PlotSpec samplerPlot(const QString& scene, const std::vector<SamplerRow>& rows,
+                         SamplerAxis axis) {
+    const bool time = axis == SamplerAxis::Time;
+    const auto xOf = [time](const SamplerRow& r) {
+        return time ? r.seconds * 1e3 : r.cameraRaysPerPixel;
+    };
     ui::PlotSpec spec;
-    spec.title = QStringLiteral("%1: error against time by sampler").arg(scene);
-    spec.xLabel = QStringLiteral("render time (ms), two threads");
+    spec.title = QStringLiteral("%1: error against %2 by sampler")
+                     .arg(scene, time ? QStringLiteral("time") : QStringLiteral("camera rays"));
+    spec.xLabel = time ? QStringLiteral("render time (ms), two threads")
+                       : QStringLiteral("camera rays a pixel");
     spec.yLabel = QStringLiteral("PSNR of the 8-bit picture (dB)");
     spec.logX = true;
     spec.highlightName.clear();
@@ -136,12 +143,12 @@ ui::PlotSpec samplerPlot(const QString& scene, const std::vector<SamplerRow>& ro
         for (const SamplerRow& r : rows)
             if (r.sampler == samplers[k]) mine.push_back(r);
         std::sort(mine.begin(), mine.end(),
-                  [](const SamplerRow& a, const SamplerRow& b) { return a.seconds < b.seconds; });
+                  [&](const SamplerRow& a, const SamplerRow& b) { return xOf(a) < xOf(b); });
         ui::PlotLine line;
         line.colour = ui::plotPaletteColour(k);
         line.dashed = k == 2;
         for (const SamplerRow& r : mine) {
-            const double x = r.seconds * 1e3, y = std::min(r.psnrDb, 99.0);
+            const double x = xOf(r), y = std::min(r.psnrDb, 99.0);
             line.points.emplace_back(x, y);
             spec.points.push_back({x, y, QString::fromStdString(r.setting), false, k, 0});
         }
@@ -171,7 +178,9 @@ std::string samplerSection(const std::vector<SamplerRow>& rows, const std::strin
     const std::vector<std::string> scenes = samplerScenes(rows);
     for (std::size_t i = 0; i < scenes.size(); ++i) {
         md << "### " << scenes[i] << "\n\n";
-        if (i < plots.size()) md << "![" << scenes[i] << "](" << plots[i] << ")\n\n";
+        if (i < plots.size())
+            md << "![" << scenes[i] << ": error against time](" << plots[i] << ".png) !["
+               << scenes[i] << ": error against camera rays](" << plots[i] << "-rays.png)\n\n";
         sceneTable(md, ofScene(rows, scenes[i]), tally);
         md << "\n";
     }

@@ -23,11 +23,15 @@ struct SamplerRow {
 // Throws std::runtime_error naming the file and line when it is not such a CSV.
 std::vector<SamplerRow> readSamplerCsv(const std::filesystem::path& file);
 
-// PSNR against milliseconds, one line a sampler, for one scene's rows.
-ui::PlotSpec samplerPlot(const QString& scene, const std::vector<SamplerRow>& rows);
+// PSNR against milliseconds or against camera rays a pixel, one line a
+// sampler, for one scene's rows.
+enum class SamplerAxis { Time, CameraRays };
+ui::PlotSpec samplerPlot(const QString& scene, const std::vector<SamplerRow>& rows,
+                         SamplerAxis axis);
 
-// The section; `plots` holds each scene's plot file, relative to the report,
-// in the order the scenes first appear in `rows`.
+// The section; `plots` holds each scene's plot files relative to the report,
+// without their ending (STEM.png against time, STEM-rays.png against camera
+// rays), in the order the scenes first appear in `rows`.
 std::string samplerSection(const std::vector<SamplerRow>& rows, const std::string& csvFile,
                            const std::vector<std::string>& plots);
 

@@ -168,10 +168,15 @@ TEST(WhittedTradeoff, ReportWithSamplerCsv_ComparesWhitted1980WithTheFastestOfOu
               std::string::npos)
         << text;
     EXPECT_NE(text.find("In all, 1 of 2 settings"), std::string::npos) << text;
-    EXPECT_NE(text.find("![seed](tradeoff/whitted1980/seed.png)"), std::string::npos) << text;
-    const Image plot = readImage(dir / "tradeoff/whitted1980/seed.png");
-    EXPECT_EQ(plot.width, 700);
-    EXPECT_EQ(plot.height, 450);
+    EXPECT_NE(text.find("![seed: error against time](tradeoff/whitted1980/seed.png) "
+                        "![seed: error against camera rays](tradeoff/whitted1980/seed-rays.png)"),
+              std::string::npos)
+        << text;
+    for (const char* plot : {"seed.png", "seed-rays.png"}) {
+        const Image image = readImage(dir / "tradeoff/whitted1980" / plot);
+        EXPECT_EQ(image.width, 560) << plot;
+        EXPECT_EQ(image.height, 400) << plot;
+    }
 
     std::ofstream(csv, std::ios::app) << "seed,fixed,16 spp,160,120,16,fast\n";
     const ProgramRun bad =

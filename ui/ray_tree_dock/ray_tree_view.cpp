@@ -107,7 +107,9 @@ RayTreeView::RayTreeView(SceneDocument* doc, QWidget* parent)
     layout->addWidget(summary_);
     layout->addWidget(rows_, 1);
 
-    connect(&worker_, &RayTreeWorker::treeReady, this, &RayTreeView::onTree);
+    connect(&worker_, &RayTreeWorker::treeReady, this, [this] {
+        if (std::optional<RayTreeResult> tree = worker_.takeTree()) onTree(*tree);
+    });
     connect(doc_, &SceneDocument::sceneChanged, this, [this] {
         if (isVisible()) trace();
     });
@@ -197,10 +199,9 @@ QTreeWidgetItem* RayTreeView::addRow(QTreeWidgetItem* parent, const RayTreeNode&
     if (!shadow) item->setIcon(AddsColumn, swatch(displayColour(node.contribution)));
     // The same ray in the other precision hits the same thing (a shadow ray:
     // lets through the same light, to an 8-bit step).
-    const bool sameHit =
-        other && other->hit == node.hit &&
-        other->totalInternalReflection == node.totalInternalReflection &&
-        std::abs(other->transmittance - node.transmittance) < 1.0 / 255;
+    const bool sameHit = other && other->hit == node.hit &&
+                         other->totalInternalReflection == node.totalInternalReflection &&
+                         std::abs(other->transmittance - node.transmittance) < 1.0 / 255;
     if (!other)
         item->setText(OtherColumn, tr("no such ray"));
     else if (!sameHit)

@@ -35,9 +35,7 @@ RayTreeWorker::RayTreeWorker(QObject* parent)
       requests_(
           RequestThread<Request>::Policy::LatestWins,
           [this](Request&& request, quint64 generation) { trace(std::move(request), generation); },
-          lowerThisThreadsPriority) {
-    qRegisterMetaType<whitted::ui::RayTreeResult>();
-}
+          lowerThisThreadsPriority) {}
 
 quint64 RayTreeWorker::request(std::shared_ptr<const Scene> scene, QPoint pixel) {
     return requests_.request({std::move(scene), pixel});
@@ -60,7 +58,16 @@ void RayTreeWorker::trace(Request&& request, quint64 generation) {
     if (requests_.stale(generation)) return;
     describeScene(*request.scene, result);
     request.scene.reset();
-    emit treeReady(result);
+    {
+        std::lock_guard lock(readyMutex_);
+        ready_ = std::move(result);
+    }
+    emit treeReady();
+}
+
+std::optional<RayTreeResult> RayTreeWorker::takeTree() {
+    std::lock_guard lock(readyMutex_);
+    return std::exchange(ready_, std::nullopt);
 }
 
 }  // namespace whitted::ui

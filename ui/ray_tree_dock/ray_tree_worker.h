@@ -5,6 +5,8 @@
 #pragma once
 
 #include <memory>
+#include <mutex>
+#include <optional>
 
 #include <QHash>
 #include <QObject>
@@ -42,8 +44,14 @@ class RayTreeWorker : public QObject {
     quint64 request(std::shared_ptr<const Scene> scene, QPoint pixel);
     quint64 latestGeneration() const { return requests_.latestTicket(); }
 
+    // In the GUI thread, after treeReady: the newest tree traced, once.
+    std::optional<RayTreeResult> takeTree();
+
   signals:
-    void treeReady(const whitted::ui::RayTreeResult& result);
+    // From the worker's thread: a tree waits in takeTree(). The tree itself
+    // passes under our own mutex, not inside Qt's queued signal, so that
+    // ThreadSanitizer sees the hand-over (as RenderWorker's frames do).
+    void treeReady();
 
   private:
     struct Request {
@@ -52,9 +60,10 @@ class RayTreeWorker : public QObject {
     };
     void trace(Request&& request, quint64 generation);
 
+    std::mutex readyMutex_;
+    std::optional<RayTreeResult> ready_;  // guarded by readyMutex_
+    // Last, so that it stops and joins its thread before the rest goes.
     RequestThread<Request> requests_;
 };
 
 }  // namespace whitted::ui
-
-Q_DECLARE_METATYPE(whitted::ui::RayTreeResult)

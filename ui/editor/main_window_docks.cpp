@@ -106,11 +106,13 @@ void MainWindow::buildRayTreeDock() {
         dock->show();
         dock->raise();
     });
-    connect(rayTreeView_, &RayTreeView::overlayChanged, this, [this] {
-        if (rayTreeView_->isVisible())
-            view_->setInspectedRays(rayTreeView_->rays(), rayTreeView_->highlightedRay());
+    // In the view's context and not the window's: the dock hides (and says
+    // so) while the window is being destroyed, when it is a window no more.
+    connect(rayTreeView_, &RayTreeView::overlayChanged, view_, [view = view_, tree = rayTreeView_] {
+        if (tree->isVisible())
+            view->setInspectedRays(tree->rays(), tree->highlightedRay());
         else
-            view_->setInspectedRays({}, -1);
+            view->setInspectedRays({}, -1);
     });
     connect(dock, &QDockWidget::visibilityChanged, this, [this, dock](bool visible) {
         if (visible && !dock->isFloating() && dockWidgetArea(dock) == Qt::BottomDockWidgetArea &&

@@ -532,10 +532,16 @@ class TileRenderer {
 template <typename T>
 RenderResult renderWith(const Scene& scene, const RenderOptions& options,
                         const TileCallback& onTile, const StopPredicate& shouldStop) {
-    if (!options.whitted1980) return TileRenderer<T>(scene, options, onTile, shouldStop).run();
+    const RenderSettings settings = scene.render;
+    if (!options.whitted1980) {
+        TileRenderer<T> renderer(scene, options, onTile, shouldStop);
+        if (options.onPrepared) options.onPrepared();
+        return renderer.run();
+    }
     PreparedScene<T> s = prepareScene<T>(scene, options.bvhCache);
     s.pruneBelow = T(options.pruneBelowWeight);
-    return renderWhitted1980(s, scene.render, options, onTile, shouldStop);
+    if (options.onPrepared) options.onPrepared();
+    return renderWhitted1980(s, settings, options, onTile, shouldStop);
 }
 
 std::optional<std::string> whitted1980Problem(const RenderOptions& o) {

@@ -81,6 +81,11 @@ struct RenderOptions {
     // one pass of the whole picture, instead of the scene's samples per pixel.
     // Not with `adaptive`, `regions` or `alsoAtDepths` (std::invalid_argument).
     std::optional<Whitted1980Sampling> whitted1980 = std::nullopt;
+    // Called on the render's thread once the scene is prepared, before the
+    // first tile: from then on render() reads nothing of the scene it was
+    // given, so that its owner may change or free it (the editor's worker
+    // lets go of its snapshot, so that the next edit need not copy the scene).
+    std::function<void()> onPrepared{};
 };
 
 // For a render nobody watches (a file, a measurement): one pass of all the

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <mutex>
 #include <ostream>
 #include <string>
@@ -660,6 +661,33 @@ TEST(Renderer, LargestSceneTheFormatAllows_StartsAndStopsAtOnce) {
     EXPECT_EQ(result.image.width, kMaxImageSize);
     EXPECT_LT(total - toStop, 10.0);
     EXPECT_LT(toStop, 2.0);
+}
+
+// The editor's worker lets go of its snapshot when the scene is prepared, and
+// the next edit may then change or free it: render() must read nothing of it
+// after. Freed here; AddressSanitizer reports any later read.
+TEST(Renderer, OnPrepared_BeforeTheFirstTile_TheSceneMayBeFreedThen) {
+    for (const bool whitted1980 : {false, true}) {
+        auto scene = std::make_unique<Scene>(test::seedScene(64, 48));
+        const Image expected = test::renderImage(*scene);
+        RenderOptions options;
+        if (whitted1980) options.whitted1980 = Whitted1980Sampling{};
+        int prepared = 0, tilesBefore = -1;
+        std::atomic<int> tiles{0};
+        options.onPrepared = [&] {
+            ++prepared;
+            tilesBefore = tiles.load();
+            scene.reset();
+        };
+        const RenderResult result = render(*scene, options, [&](const TileUpdate&) { ++tiles; });
+        EXPECT_EQ(prepared, 1) << whitted1980;
+        EXPECT_EQ(tilesBefore, 0) << whitted1980;
+        EXPECT_GT(tiles.load(), 0) << whitted1980;
+        if (!whitted1980) {
+            EXPECT_TRUE(test::samePixels(result.image, expected))
+                << test::firstDifference(result.image, expected);
+        }
+    }
 }
 
 }  // namespace

@@ -758,22 +758,22 @@ TEST(TradeoffRecord, ViewPace_IsTheMedianOfWhatItsRendersTookBeyondTheProbes) {
         << p.timeSource.toStdString();
 
     // The first render shares the cores with the window's first showing: no pace.
-    record.addViewRender(scene, 0.9);
+    probe->contentRevision = 7;
+    record.addViewRender(7, scene.render, 0.9);
     record.setProbePrediction(probe);
     EXPECT_EQ(record.viewPace().renders, 0);
     // Rendered after the prediction, or before it: either pairs them, once.
-    record.addViewRender(scene, 0.25);
+    record.addViewRender(7, scene.render, 0.25);
     EXPECT_EQ(record.viewPace().renders, 1);
     EXPECT_DOUBLE_EQ(record.viewPace().secondsAPixelPass, 0.05 / pixelPasses);
     record.setProbePrediction(probe);
     EXPECT_EQ(record.viewPace().renders, 1);
-    // Another scene's render, or other settings: not what the probes predicted.
-    Scene moved = scene;
-    moved.spheres[0].center.x += 0.1;
-    record.addViewRender(moved, 0.9);
+    // Another scene's render (the document's next revision), or other
+    // settings: not what the probes predicted.
+    record.addViewRender(8, scene.render, 0.9);
     Scene more = scene;
     more.render.samplesPerPixel = 16;
-    record.addViewRender(more, 0.9);
+    record.addViewRender(7, more.render, 0.9);
     EXPECT_EQ(record.viewPace().renders, 1);
 
     p = record.predict(scene);
@@ -788,14 +788,14 @@ TEST(TradeoffRecord, ViewPace_IsTheMedianOfWhatItsRendersTookBeyondTheProbes) {
 
     // The median of the last five: the first (0.05 s) has gone.
     for (double extra : {0.0, 0.09, 0.01, 0.03, 0.02}) {
-        record.addViewRender(scene, 0.2 + extra);
+        record.addViewRender(7, scene.render, 0.2 + extra);
         record.setProbePrediction(probe);
     }
     EXPECT_EQ(record.viewPace().renders, 5);
     EXPECT_NEAR(record.viewPace().secondsAPixelPass * pixelPasses, 0.02, 1e-12);
     // Renders quicker than predicted: the passes priced at nothing, not less.
     for (int i = 0; i < 3; ++i) {
-        record.addViewRender(scene, 0.15);
+        record.addViewRender(7, scene.render, 0.15);
         record.setProbePrediction(probe);
     }
     EXPECT_EQ(record.viewPace().secondsAPixelPass, 0.0);

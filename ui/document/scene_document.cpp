@@ -56,6 +56,21 @@ class ListDelta {
             if (list[index_[k]].name != to[k].name) return true;
         return false;
     }
+    // Whether applying the change to `list` moves, resizes, adds or removes a
+    // sphere: what the view's marks of a selection follow.
+    bool changesGeometry(const std::vector<T>& list, bool forward) const {
+        if constexpr (!std::is_same_v<T, Sphere>) {
+            return false;
+        } else {
+            if (whole_) return true;
+            const std::vector<T>& to = forward ? after_ : before_;
+            for (std::size_t k = 0; k < index_.size(); ++k)
+                if (list[index_[k]].center != to[k].center ||
+                    list[index_[k]].radius != to[k].radius)
+                    return true;
+            return false;
+        }
+    }
     // Applies the change forwards (redo) or backwards (undo); true when it
     // added, removed, renamed or reordered items.
     bool apply(std::vector<T>& list, bool forward) const {
@@ -228,6 +243,7 @@ void SceneDocument::applyDelta(const SceneDelta& delta, bool forward) {
         return false;
     }();
     if (moves) selection_.rememberNames(scene);
+    if (delta.spheres.changesGeometry(scene.spheres, forward)) ++geometryRevision_;
     bool structural = delta.spheres.apply(scene.spheres, forward);
     structural = delta.lights.apply(scene.lights, forward) || structural;
     structural = delta.materials.apply(scene.materials, forward) || structural;
@@ -247,6 +263,7 @@ void SceneDocument::reset(const Scene& scene, const QString& filePath) {
     runOpen_ = false;
     scene_ = std::make_shared<Scene>(scene);
     ++contentRevision_;
+    ++geometryRevision_;
     resetSceneValid_ = !validateScene(*scene_);
     selection_.clear();
     filePath_ = filePath;

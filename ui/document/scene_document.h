@@ -45,6 +45,10 @@ class SceneDocument : public QObject {
     // redo or reset but one of the render settings alone (size, samples,
     // depth, precision). A render's time speaks for the revision it showed.
     std::uint64_t contentRevision() const { return contentRevision_; }
+    // Changes whenever a sphere is moved, resized, added or removed (and with
+    // a new scene): what the view's marks of the selection depend on, with
+    // the camera. A material or a light alone leaves it.
+    std::uint64_t geometryRevision() const { return geometryRevision_; }
     QUndoStack* undoStack() { return &undo_; }
     // What is selected; emptied by reset(), following its items across edits.
     SceneSelection* selection() { return &selection_; }
@@ -127,6 +131,7 @@ class SceneDocument : public QObject {
     bool runOpen_ = false;  // the top step is a camera run that the next Join edit may extend
     bool resetSceneValid_ = false;  // what reset() was given passed validateScene
     std::uint64_t contentRevision_ = 0;
+    std::uint64_t geometryRevision_ = 0;
 };
 
 // The list of a scene (const or not like it) that holds items of type T:

@@ -148,7 +148,7 @@ void MainWindow::requestRender() {
 void MainWindow::predictWhenShown() {
     if (!predictionDue_ || !newestFrameShown_) return;
     predictionDue_ = false;
-    predictor_.sceneChanged(doc_.scene(), quality_.target());
+    predictor_.sceneChanged(doc_.scene(), quality_.target(), doc_.contentRevision());
 }
 
 void MainWindow::onFrame(const RenderFrame& frame) {
@@ -182,9 +182,7 @@ void MainWindow::onFrame(const RenderFrame& frame) {
     else if (frame.renderComplete && !frame.whitted1980) {  // predictions: for the settings
         record_.addRender({frame.settings, frame.seconds, frame.rays});
         // The newest request's frame: the document holds the scene it rendered.
-        Scene rendered = doc_.scene();
-        rendered.render = frame.settings;
-        record_.addViewRender(rendered, frame.seconds);
+        record_.addViewRender(doc_.contentRevision(), frame.settings, frame.seconds);
     }
     emit frameShown(frame);
 }

@@ -21,8 +21,9 @@ ProbePredictor::ProbePredictor(PlanMemo& plans, QObject* parent)
     connect(this, &ProbePredictor::posted, this, &ProbePredictor::deliver, Qt::QueuedConnection);
 }
 
-void ProbePredictor::sceneChanged(const Scene& scene, const std::optional<QualityTarget>& target) {
-    waiting_ = {scene, target};
+void ProbePredictor::sceneChanged(const Scene& scene, const std::optional<QualityTarget>& target,
+                                  std::uint64_t contentRevision) {
+    waiting_ = {scene, target, contentRevision};
     quiet_.start();
 }
 
@@ -37,6 +38,7 @@ void ProbePredictor::predict(ProbeRequest&& request, quint64 ticket) {
     for (const std::optional<QualityTarget>& target : targets) {
         auto result = predictOne(request.scene, target, ticket);
         if (requests_.stale(ticket)) return;
+        result->contentRevision = request.contentRevision;
         post(std::move(result));
     }
 }

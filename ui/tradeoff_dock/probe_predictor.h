@@ -19,6 +19,7 @@
 #include <QObject>
 #include <QTimer>
 
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -35,10 +36,12 @@ namespace whitted::ui {
 struct ProbeRequest {
     Scene scene;
     std::optional<QualityTarget> target;  // set: a render to it, not to the settings
+    std::uint64_t contentRevision = 0;    // the document's, for the scene
 };
 
 struct ProbePrediction {
     Scene scene;                          // what was predicted: its content and render settings
+    std::uint64_t contentRevision = 0;    // the document's when it was asked for
     RenderPrediction prediction;          // of the settings, when there is no target
     std::optional<QualityTarget> target;  // set: a render to it was predicted instead
     TargetPrediction toTarget;
@@ -58,7 +61,9 @@ class ProbePredictor : public QObject {
     // Predicts a render of `scene`, to `target` if set (then to its own
     // settings too), then to each preset's target, once edits have paused
     // for kQuietMs.
-    void sceneChanged(const Scene& scene, const std::optional<QualityTarget>& target);
+    // `contentRevision` is the document's (SceneDocument::contentRevision()).
+    void sceneChanged(const Scene& scene, const std::optional<QualityTarget>& target,
+                      std::uint64_t contentRevision = 0);
 
   signals:
     // In the GUI thread.

@@ -47,9 +47,10 @@ const TargetPrediction* TradeoffRecord::targetPrediction(const Scene& scene,
     return nullptr;
 }
 
-void TradeoffRecord::addViewRender(const Scene& scene, double seconds) {
+void TradeoffRecord::addViewRender(std::uint64_t contentRevision, const RenderSettings& settings,
+                                   double seconds) {
     if (!std::exchange(firstViewRenderSeen_, true)) return;
-    lastView_ = ViewRender{scene, seconds};
+    lastView_ = ViewRender{contentRevision, settings, seconds};
     pace();
     emit changed();
 }
@@ -58,10 +59,12 @@ void TradeoffRecord::addViewRender(const Scene& scene, double seconds) {
 // render ends before the probes start, a long one after they are done.
 void TradeoffRecord::pace() {
     if (!lastView_ || !probe_ || !probe_->prediction.predicted ||
-        probe_->prediction.seconds <= 0.0 || probe_->scene != lastView_->scene)
+        probe_->prediction.seconds <= 0.0 ||
+        probe_->contentRevision != lastView_->contentRevision ||
+        !(probe_->scene.render == lastView_->settings))
         return;
     paces_.push_back((lastView_->seconds - probe_->prediction.seconds) /
-                     pixelPasses(lastView_->scene.render));
+                     pixelPasses(lastView_->settings));
     if (paces_.size() > kPaceRenders) paces_.pop_front();
     lastView_.reset();
 }

@@ -45,12 +45,16 @@ class TradeoffRecord : public QObject {
     // The view's pace is the median of this many renders' (settings_prediction.h).
     static constexpr std::size_t kPaceRenders = 5;
 
-    // The view finished rendering `scene` (its content and the settings it
-    // rendered) in `seconds`. Once the probes have predicted that very scene,
-    // the two give the view's pace. Not the first render: it shares the cores
-    // with the window's first showing (in bench_editor_prediction it
-    // took 1.4 times the seed's renders after it).
-    void addViewRender(const Scene& scene, double seconds);
+    // The view finished rendering the document's content of revision
+    // `contentRevision` (SceneDocument::contentRevision()) at `settings` in
+    // `seconds`. Once the probes have predicted that very scene, the two give
+    // the view's pace. Not the first render: it shares the cores with the
+    // window's first showing (in bench_editor_prediction it took 1.4 times
+    // the seed's renders after it). By revision, not a copy of the scene:
+    // at a million spheres each finished render copied 100 MB in the
+    // editor's thread.
+    void addViewRender(std::uint64_t contentRevision, const RenderSettings& settings,
+                       double seconds);
     ViewPace viewPace() const;
 
     // Forgets everything but the view's pace (a matter of the machine and the
@@ -66,7 +70,8 @@ class TradeoffRecord : public QObject {
 
   private:
     struct ViewRender {
-        Scene scene;
+        std::uint64_t contentRevision = 0;
+        RenderSettings settings;
         double seconds = 0.0;
     };
     // The view's newest render and the probes' newest prediction, once both

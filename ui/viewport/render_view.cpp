@@ -81,6 +81,7 @@ void RenderView::paintEvent(QPaintEvent*) {
     // Scaled while a new frame is on its way: the old image, stretched, beats a blank.
     p.setRenderHint(QPainter::SmoothPixmapTransform, frame_.width() > imageRect().width());
     p.drawImage(QRectF(imageRect()), frame_, frameShown_);
+    overlay_.geometryRevision = doc_->geometryRevision();
     paintViewOverlay(p, doc_->scene(), imageRect(), *doc_->selection(), overlay_);
 }
 

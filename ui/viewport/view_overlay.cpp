@@ -41,8 +41,23 @@ void paintSphereOutline(QPainter& painter, const Scene& scene, const QRect& r, c
     painter.drawPath(path);
 }
 
+const std::vector<ImagePoint>& dotsOf(const Scene& scene, const SceneSelection& selection,
+                                      std::uint64_t geometryRevision, SelectionDots& dots) {
+    const int w = scene.render.width, h = scene.render.height;
+    if (dots.geometryRevision != geometryRevision || dots.width != w || dots.height != h ||
+        !(dots.camera == scene.camera) || dots.indices != selection.indices()) {
+        dots.points = projectCentres(scene.camera, w, h, scene.spheres, selection.indices());
+        dots.camera = scene.camera;
+        dots.width = w;
+        dots.height = h;
+        dots.geometryRevision = geometryRevision;
+        dots.indices = selection.indices();
+    }
+    return dots.points;
+}
+
 void paintSelectedSpheres(QPainter& painter, const Scene& scene, const QRect& r,
-                          const SceneSelection& selection) {
+                          const SceneSelection& selection, ViewOverlay& overlay) {
     // Indices ascend: the last one says whether all are spheres of this scene.
     if (selection.empty() || selection.indices().back() >= int(scene.spheres.size())) return;
     const int active = selection.active();
@@ -53,8 +68,7 @@ void paintSelectedSpheres(QPainter& painter, const Scene& scene, const QRect& r,
         QPolygonF dots;
         dots.reserve(selection.count());
         for (const ImagePoint& at :
-             projectCentres(scene.camera, scene.render.width, scene.render.height, scene.spheres,
-                            selection.indices()))
+             dotsOf(scene, selection, overlay.geometryRevision, overlay.dots))
             dots.append(toWidget(scene, r, at));
         // Square dots of one-pixel points, unsmoothed: the raster engine's
         // fast path, where wide or smoothed points were stroked one by one.
@@ -176,12 +190,12 @@ QPointF imagePoint(const Scene& scene, const QRect& imageRect, const QPointF& wi
 }
 
 void paintViewOverlay(QPainter& painter, const Scene& scene, const QRect& imageRect,
-                      const SceneSelection& selection, const ViewOverlay& overlay) {
+                      const SceneSelection& selection, ViewOverlay& overlay) {
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing);
     painter.setClipRect(imageRect);
     if (selection.kind() == ItemKind::Sphere)
-        paintSelectedSpheres(painter, scene, imageRect, selection);
+        paintSelectedSpheres(painter, scene, imageRect, selection, overlay);
     paintRayTree(painter, scene, imageRect, overlay.rays, overlay.highlightedRay);
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         const bool isSelected = selection.contains(ItemKind::Light, int(i));

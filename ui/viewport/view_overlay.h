@@ -8,6 +8,7 @@
 // the tracer puts the things they mark.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include <QRect>
 #include <QString>
 
+#include "camera/view_projection.h"
 #include "document/scene_document.h"
 #include "scene/scene.h"
 #include "viewport/ray_tree_overlay.h"
@@ -23,6 +25,19 @@ class QPainter;
 
 namespace whitted::ui {
 
+// Where a large selection's dots go, kept from paint to paint: a frame
+// repaints the view, and projecting 100,000 centres each time was a fifth of
+// the editor's thread while a material was given to them. Valid while the
+// camera, the picture's size, the spheres' geometry and the selection are
+// those it was made for.
+struct SelectionDots {
+    Camera camera;
+    int width = 0, height = 0;
+    std::uint64_t geometryRevision = ~std::uint64_t(0);
+    std::vector<int> indices;
+    std::vector<ImagePoint> points;
+};
+
 struct ViewOverlay {
     std::optional<Vec3> pivot;  // the orbit's pivot, drawn while a drag turns about it
     QString hoverText;          // empty: nothing under the cursor
@@ -30,14 +45,17 @@ struct ViewOverlay {
     QRect box;                   // the box being dragged out to select with (B); empty: none
     std::vector<DrawnRay> rays;  // an inspected pixel's ray tree (the Ray Tree dock)
     int highlightedRay = -1;
+    SelectionDots dots;
+    std::uint64_t geometryRevision = 0;  // the document's, when painted
 };
 
 // Outlines cost a polygon each: a selection of more spheres shows dots.
 inline constexpr int kMostOutlines = 2000;
 
 // Draws the overlay for `scene` seen in `imageRect` (the picture's place in the widget).
+// The overlay's dots are brought up to date as they are drawn.
 void paintViewOverlay(QPainter& painter, const Scene& scene, const QRect& imageRect,
-                      const SceneSelection& selection, const ViewOverlay& overlay);
+                      const SceneSelection& selection, ViewOverlay& overlay);
 
 // The light whose marker covers widget point `pos` (the nearest if several), or -1.
 int lightMarkerAt(const Scene& scene, const QRect& imageRect, const QPointF& pos);

@@ -265,6 +265,40 @@ TEST(SceneDocument, ContentRevision_MovesWithWhatARenderShows_NotWithRenderSetti
     EXPECT_NE(doc.contentRevision(), beforeSettings);
 }
 
+// The view's marks of a large selection are kept while the spheres' geometry
+// stays: a material, a light or the camera leave the revision, a move, a new
+// radius, an added sphere, their undo and a new scene move it.
+TEST(SceneDocument, GeometryRevision_MovesWithTheSpheresShapesAndPlacesAlone) {
+    SceneDocument doc;
+    doc.reset(test::seedScene(), QString());
+    std::uint64_t revision = doc.geometryRevision();
+    const auto moved = [&] {
+        const bool changed = doc.geometryRevision() != revision;
+        revision = doc.geometryRevision();
+        return changed;
+    };
+    EXPECT_TRUE(
+        doc.editItems<Sphere>({0, 1}, "material", [](Sphere& s, int) { s.material = "white"; }));
+    EXPECT_FALSE(moved());
+    EXPECT_TRUE(doc.editItem<Light>(0, "light", [](Light& l) { l.position.x += 1; }));
+    EXPECT_TRUE(doc.edit("camera", [](Scene& s) { s.camera.position.y += 1; }));
+    EXPECT_FALSE(moved());
+    EXPECT_TRUE(doc.editItem<Sphere>(0, "move", [](Sphere& s) { s.center.x += 1; }));
+    EXPECT_TRUE(moved());
+    EXPECT_TRUE(doc.editItem<Sphere>(1, "radius", [](Sphere& s) { s.radius *= 2; }));
+    EXPECT_TRUE(moved());
+    doc.undoStack()->undo();
+    EXPECT_TRUE(moved());
+    EXPECT_TRUE(doc.edit("add", [](Scene& s) {
+        Sphere extra = s.spheres[0];
+        extra.name = "extra";
+        s.spheres.push_back(extra);
+    }));
+    EXPECT_TRUE(moved());
+    doc.reset(test::seedScene(), QString());
+    EXPECT_TRUE(moved());
+}
+
 // A render thread reads the snapshot it was given while the user goes on
 // editing: every way of editing leaves a held snapshot as it was, and the
 // document shows the edits. Without a holder the scene is edited where it lies.

@@ -5,8 +5,8 @@
 // depth (double, 256 samples), so that only the sampling differs. For each
 // render: camera rays and all rays a pixel, seconds (the best of three, two
 // threads) and the error (PSNR of the 8-bit picture, largest error in codes).
-// Then, for each of the 1980 settings, the fastest of ours that is at least as
-// good: a ratio under 1 is a win for 1980.
+// `whitted-tradeoff --report --sampler-csv` sets each 1980 setting against the
+// fastest of ours that is as good (docs/tradeoff.md).
 //
 // Usage: bench_whitted1980 [WIDTH [CSV [PICTURE]]] (default 160, the height
 // three quarters of it). With CSV, the rows are also written there
@@ -96,35 +96,16 @@ Row measure(const NamedScene& named, const Sampler& sampler, const Image& refere
     return row;
 }
 
-// The fastest of ours (fixed or adaptive) at least as good as `row`.
-const Row* fastestAsGood(const std::vector<Row>& rows, const Row& row) {
-    const Row* best = nullptr;
-    for (const Row& other : rows)
-        if (other.sampler != "whitted1980" && other.psnr >= row.psnr &&
-            (!best || other.seconds < best->seconds))
-            best = &other;
-    return best;
-}
-
 void printScene(const std::vector<Row>& rows) {
     std::printf("\n### %s\n\n", rows.front().scene.c_str());
     std::printf(
         "| sampler | setting | camera rays/px | rays/px | ms | PSNR dB | largest codes "
-        "| ours as good: ms, which | ratio |\n|---|---|---|---|---|---|---|---|---|\n");
-    for (const Row& row : rows) {
-        std::printf("| %s | %s | %.2f | %.1f | %.1f | %.1f | %.0f |", row.sampler.c_str(),
+        "|\n|---|---|---|---|---|---|---|\n");
+    for (const Row& row : rows)
+        std::printf("| %s | %s | %.2f | %.1f | %.1f | %.1f | %.0f |\n", row.sampler.c_str(),
                     row.setting.c_str(), row.cameraRaysPerPixel, row.raysPerPixel,
                     row.seconds * 1e3, row.psnr, row.largest);
-        const Row* ours = row.sampler == "whitted1980" ? fastestAsGood(rows, row) : nullptr;
-        if (row.sampler != "whitted1980")
-            std::printf(" | |\n");
-        else if (!ours)
-            std::printf(" none reaches it | |\n");
-        else
-            std::printf(" %.1f, %s %s | %.2f |\n", ours->seconds * 1e3, ours->sampler.c_str(),
-                        ours->setting.c_str(), row.seconds / ours->seconds);
-        std::fflush(stdout);
-    }
+    std::fflush(stdout);
 }
 
 // `panel` at twice its size into `into` from column `x`.

@@ -8,7 +8,7 @@
 #include <QPainter>
 #include <QPixmap>
 
-#include "image/srgb.h"
+#include "viewport/image_convert.h"
 
 namespace whitted::ui {
 
@@ -17,12 +17,6 @@ namespace {
 // The inverse of whitted::srgbEncode, for a dialog value in [0,1].
 double srgbDecode(double encoded) {
     return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
-}
-
-QColor toDisplay(const Vec3& linear) {
-    return QColor::fromRgbF(srgbEncode(static_cast<float>(linear.x)),
-                            srgbEncode(static_cast<float>(linear.y)),
-                            srgbEncode(static_cast<float>(linear.z)));
 }
 
 QString shortNumber(double v) {
@@ -54,7 +48,7 @@ void ColorButton::changeEvent(QEvent* event) {
 }
 
 void ColorButton::pick() {
-    const QColor shown = toDisplay(color_);
+    const QColor shown = displayColour(color_);
     const QColor picked = QColorDialog::getColor(shown, this, tr("Choose a colour"));
     if (!picked.isValid() || picked.rgb() == shown.rgb()) return;
     // A channel the user left alone keeps its exact value: the dialog's 8 bits
@@ -72,7 +66,7 @@ void ColorButton::updateSwatch() {
     swatch.fill(Qt::transparent);
     QPainter painter(&swatch);
     painter.setPen(palette().color(QPalette::Mid));
-    painter.setBrush(isEnabled() ? toDisplay(color_) : palette().color(QPalette::Window));
+    painter.setBrush(isEnabled() ? displayColour(color_) : palette().color(QPalette::Window));
     painter.drawRect(swatch.rect().adjusted(0, 0, -1, -1));
     painter.end();
     setIcon(QIcon(swatch));

@@ -16,7 +16,7 @@
 
 #include "document/scene_document.h"
 #include "image/image_compare.h"
-#include "image/srgb.h"
+#include "viewport/image_convert.h"
 
 namespace whitted::ui {
 
@@ -46,11 +46,6 @@ QIcon swatch(const QColor& colour) {
     painter.setBrush(colour);
     painter.drawRect(0, 0, 11, 11);
     return QIcon(pixmap);
-}
-
-QColor displayColour(const Vec3& linear) {
-    const auto channel = [](double v) { return srgbEncode8(float(std::clamp(v, 0.0, 1.0))); };
-    return QColor(channel(linear.r), channel(linear.g), channel(linear.b));
 }
 
 QString kindText(const RayTreeNode& node, const QStringList& lights) {

@@ -49,4 +49,10 @@ QImage toQImage(const Image& image) {
     return out;
 }
 
+QColor displayColour(const Vec3& linear) {
+    return QColor::fromRgbF(srgbEncode(static_cast<float>(linear.x)),
+                            srgbEncode(static_cast<float>(linear.y)),
+                            srgbEncode(static_cast<float>(linear.z)));
+}
+
 }  // namespace whitted::ui

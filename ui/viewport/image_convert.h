@@ -2,9 +2,11 @@
 // through core's own srgbEncode8, so the view shows what a PNG export holds.
 #pragma once
 
+#include <QColor>
 #include <QImage>
 
 #include "image/image.h"
+#include "scene/scene.h"
 
 namespace whitted::ui {
 
@@ -21,5 +23,9 @@ QImage blackImage(int width, int height);
 
 // The whole image as a new QImage.
 QImage toQImage(const Image& image);
+
+// A linear colour as the screen shows it: each channel through the sRGB curve
+// (a colour button's swatch, a ray's share of a pixel).
+QColor displayColour(const Vec3& linear);
 
 }  // namespace whitted::ui

@@ -178,15 +178,13 @@ std::string samplerSectionWithPlots(const std::vector<tradeoff::SamplerRow>& row
     char* argv[] = {name, nullptr};
     const auto qt = qtForPlots(argc, argv);
     std::vector<std::string> plots;
+    fs::create_directories(base / "tradeoff" / "whitted1980");
     for (const std::string& scene : tradeoff::samplerScenes(rows)) {
         std::string slug = scene;
         for (char& c : slug)
             if (!std::isalnum(static_cast<unsigned char>(c))) c = '-';
         const std::string stem = "tradeoff/whitted1980/" + slug;
-        std::vector<tradeoff::SamplerRow> mine;
-        for (const tradeoff::SamplerRow& r : rows)
-            if (r.scene == scene) mine.push_back(r);
-        fs::create_directories(base / "tradeoff" / "whitted1980");
+        const std::vector<tradeoff::SamplerRow> mine = tradeoff::samplerRowsOf(rows, scene);
         for (const auto& [axis, ending] : {std::pair{tradeoff::SamplerAxis::Time, ".png"},
                                            {tradeoff::SamplerAxis::CameraRays, "-rays.png"}})
             writePng(

@@ -29,13 +29,6 @@ SamplerRow rowOf(const std::vector<std::string>& c) {
             std::stod(c[9])};
 }
 
-std::vector<SamplerRow> ofScene(const std::vector<SamplerRow>& rows, const std::string& scene) {
-    std::vector<SamplerRow> found;
-    for (const SamplerRow& r : rows)
-        if (r.scene == scene) found.push_back(r);
-    return found;
-}
-
 // The fastest of ours (fixed or adaptive) at least as good as `row`, if any.
 const SamplerRow* fastestAsGood(const std::vector<SamplerRow>& rows, const SamplerRow& row) {
     const SamplerRow* best = nullptr;
@@ -111,6 +104,14 @@ std::vector<SamplerRow> readSamplerCsv(const std::filesystem::path& file) {
     return readCsvValues(file, kSamplerCsvHeader, "bench_whitted1980 CSV", rowOf);
 }
 
+std::vector<SamplerRow> samplerRowsOf(const std::vector<SamplerRow>& rows,
+                                      const std::string& scene) {
+    std::vector<SamplerRow> found;
+    for (const SamplerRow& r : rows)
+        if (r.scene == scene) found.push_back(r);
+    return found;
+}
+
 std::vector<std::string> samplerScenes(const std::vector<SamplerRow>& rows) {
     std::vector<std::string> scenes;
     for (const SamplerRow& r : rows)
@@ -181,7 +182,7 @@ std::string samplerSection(const std::vector<SamplerRow>& rows, const std::strin
         if (i < plots.size())
             md << "![" << scenes[i] << ": error against time](" << plots[i] << ".png) !["
                << scenes[i] << ": error against camera rays](" << plots[i] << "-rays.png)\n\n";
-        sceneTable(md, ofScene(rows, scenes[i]), tally);
+        sceneTable(md, samplerRowsOf(rows, scenes[i]), tally);
         md << "\n";
     }
     md << "In all, " << tally.wins << " of " << tally.settings

@@ -37,5 +37,8 @@ std::string samplerSection(const std::vector<SamplerRow>& rows, const std::strin
 
 // The scenes in the order they first appear.
 std::vector<std::string> samplerScenes(const std::vector<SamplerRow>& rows);
+// The rows of one scene, in their order.
+std::vector<SamplerRow> samplerRowsOf(const std::vector<SamplerRow>& rows,
+                                      const std::string& scene);
 
 }  // namespace whitted::tradeoff

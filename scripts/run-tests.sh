@@ -19,9 +19,11 @@ logs=$(mktemp -d)
 stage_names=()
 stage_seconds=()
 run_start=$SECONDS
+# The jobs started beside the stages (`beside`), by name.
+declare -A beside_pids=()
 
-# kill_tree PID: the process and everything it started (the fuzzer's build or
-# run, when an earlier stage fails).
+# kill_tree PID: the process and everything it started (a build or the fuzzer
+# beside the stages, when a stage fails).
 kill_tree() {
   local child
   for child in $(cat /proc/"$1"/task/*/children 2>/dev/null); do
@@ -34,10 +36,11 @@ report() {
   local status=$?
   # A failure while reporting must not replace the suite's own exit code.
   set +e +o pipefail
-  if [[ -n "${fuzz_pid:-}" ]]; then
-    kill_tree "$fuzz_pid"
-    wait "$fuzz_pid" 2>/dev/null
-  fi
+  local pid
+  for pid in "${beside_pids[@]}"; do
+    kill_tree "$pid"
+    wait "$pid" 2>/dev/null
+  done
   echo
   echo "run-tests: time by stage"
   local i
@@ -80,10 +83,53 @@ tests() {
   ctest "$@" | tee "$log"
 }
 
+# Builds go beside the test stages, niced: a test suite leaves a third of the
+# two cores idle (tests that wait on Slurm, on a GUI's timers, on starting a
+# process), and a niced compile takes only that. The ASan build starts beside
+# the Release suite, the TSan build beside the ASan suite; each stage that
+# needs one waits for what is left of it. The fuzzer's build and run go beside
+# the rest of the ASan build, not niced: libFuzzer runs one process, so the
+# build's jobs take the other core.
+
+# beside NAME COMMAND...: starts the command in the background; `await NAME`
+# shows its output and returns its exit code.
+beside() {
+  local name=$1
+  shift
+  (
+    start=$SECONDS
+    status=0
+    "$@" || status=$?
+    echo $((SECONDS - start)) >"$logs/$name.seconds"
+    exit "$status"
+  ) >"$logs/$name.out" 2>&1 &
+  beside_pids[$name]=$!
+}
+
+# await NAME: the stage that waits for a job started beside; its time in the
+# report is the job's own, from its start.
+await() {
+  local name=$1 status=0
+  wait "${beside_pids[$name]}" || status=$?
+  unset "beside_pids[$name]"
+  cat "$logs/$name.out"
+  return "$status"
+}
+
+# await_stage NAME STAGE-NAME: `stage`, reporting the job's own time.
+await_stage() {
+  stage "$2" await "$1"
+  stage_seconds[-1]=$(cat "$logs/$1.seconds" 2>/dev/null || echo "${stage_seconds[-1]}")
+}
+
 stage "set-up and build (Release)" bash scripts/setup.sh
 
 # GUI tests run without a display.
 export QT_QPA_PLATFORM=offscreen
+if ((!quick)); then
+  beside asan-build eval 'nice -n 19 cmake --preset asan >/dev/null &&
+    nice -n 19 cmake --build --preset asan'
+fi
 # --no-tests=error: a suite that registered no test must not pass.
 stage "test suite (Release) but the long validations" \
   tests release --test-dir build --output-on-failure -j2 --no-tests=error -LE validation
@@ -93,43 +139,15 @@ fi
 stage "long numerical validations (Release)" \
   tests validation --test-dir build --output-on-failure -j2 --no-tests=error -L validation
 
-configure_quietly() {
-  cmake --preset "$1" >/dev/null
-}
+beside fuzz eval 'CXX=clang++ cmake -S tests/fuzz -B build-fuzz -G Ninja >/dev/null &&
+  cmake --build build-fuzz &&
+  tests fuzz --test-dir build-fuzz --output-on-failure --no-tests=error'
+await_stage asan-build "build (AddressSanitizer + UndefinedBehaviorSanitizer; begun beside the Release suite)"
 
-# The fuzzer's build and run go beside the AddressSanitizer build: libFuzzer
-# runs one process, which left a core idle for its 30 s, and the build's jobs,
-# niced, take what it leaves, so the fuzzer tries as many inputs as alone. Its
-# output is shown, and its exit code taken, when it ends.
-fuzz_out="$logs/fuzz-stage.out"
-fuzz_seconds_file="$logs/fuzz-stage.seconds"
-(
-  start=$SECONDS
-  CXX=clang++ cmake -S tests/fuzz -B build-fuzz -G Ninja >/dev/null &&
-    cmake --build build-fuzz &&
-    tests fuzz --test-dir build-fuzz --output-on-failure --no-tests=error
-  status=$?
-  echo $((SECONDS - start)) >"$fuzz_seconds_file"
-  exit "$status"
-) >"$fuzz_out" 2>&1 &
-fuzz_pid=$!
-
-stage "build (AddressSanitizer + UndefinedBehaviorSanitizer)" \
-  eval 'configure_quietly asan && nice -n 10 cmake --build --preset asan'
+beside tsan-build eval 'nice -n 19 cmake --preset tsan >/dev/null &&
+  nice -n 19 cmake --build --preset tsan'
 stage "test suite under AddressSanitizer + UndefinedBehaviorSanitizer" tests asan --preset asan
-
-stage "build (ThreadSanitizer: threaded tests)" \
-  eval 'configure_quietly tsan && cmake --build --preset tsan'
+await_stage tsan-build "build (ThreadSanitizer: threaded tests; begun beside the ASan suite)"
 stage "renderer, worker and editor tests under ThreadSanitizer" tests tsan --preset tsan
 
-# wait_for_fuzzing: the fuzzer's output and exit code; its stage's time is
-# its own, not this wait's.
-wait_for_fuzzing() {
-  local status=0
-  wait "$fuzz_pid" || status=$?
-  fuzz_pid=
-  cat "$fuzz_out"
-  return "$status"
-}
-stage "scene loader fuzzer: build, corpus, a short run (beside the ASan build)" wait_for_fuzzing
-stage_seconds[-1]=$(cat "$fuzz_seconds_file" 2>/dev/null || echo "${stage_seconds[-1]}")
+await_stage fuzz "scene loader fuzzer: build, corpus, a short run (beside the ASan build)"

@@ -83,7 +83,8 @@ void fillLeafSpheres(SphereBvh<T>& bvh, const SphereSet<T>& spheres) {
 template <typename T>
 std::shared_ptr<const SphereBvh<T>> sphereBvhFor(std::span<const glm::dvec3> centres,
                                                  std::span<const double> radii,
-                                                 const SphereSet<T>& spheres, BvhCache* cache) {
+                                                 const SphereSet<T>& spheres, BvhCache* cache,
+                                                 const glm::dvec3& frameOrigin) {
     if (!cache) {
         BvhBuildOptions lazily;
         lazily.lazy = true;
@@ -92,9 +93,17 @@ std::shared_ptr<const SphereBvh<T>> sphereBvhFor(std::span<const glm::dvec3> cen
         return tree;
     }
     BvhCache::Entry<T>& kept = cache->entry<T>();
-    // use_count 1: no earlier render still reads the tree being refit.
-    if (kept.tree && kept.tree.use_count() == 1 && kept.spheres == radii.size() &&
-        refitSphereBvh(*kept.tree, centres, radii) &&
+    // use_count 1: no earlier render still reads the tree being refit or refilled.
+    const bool keptAlone = kept.tree && kept.tree.use_count() == 1 && kept.spheres == radii.size();
+    if (keptAlone && cache->geometryRevision != 0 &&
+        kept.geometryRevision == cache->geometryRevision && kept.frameOrigin == frameOrigin) {
+        fillLeafSpheres(*kept.tree, spheres);  // the eye may have moved inside the frame
+        ++cache->reuses;
+        return kept.tree;
+    }
+    kept.geometryRevision = cache->geometryRevision;
+    kept.frameOrigin = frameOrigin;
+    if (keptAlone && refitSphereBvh(*kept.tree, centres, radii) &&
         sahCost(*kept.tree) <= BvhCache::kWornOut * kept.builtCost) {
         fillLeafSpheres(*kept.tree, spheres);
         ++cache->refits;
@@ -108,12 +117,13 @@ std::shared_ptr<const SphereBvh<T>> sphereBvhFor(std::span<const glm::dvec3> cen
     return kept.tree;
 }
 
-#define WHITTED_BVH_REFIT(T)                                                    \
-    template bool refitSphereBvh<T>(SphereBvh<T>&, std::span<const glm::dvec3>, \
-                                    std::span<const double>);                   \
-    template double sahCost<T>(const SphereBvh<T>&);                            \
-    template std::shared_ptr<const SphereBvh<T>> sphereBvhFor<T>(               \
-        std::span<const glm::dvec3>, std::span<const double>, const SphereSet<T>&, BvhCache*);
+#define WHITTED_BVH_REFIT(T)                                                                  \
+    template bool refitSphereBvh<T>(SphereBvh<T>&, std::span<const glm::dvec3>,               \
+                                    std::span<const double>);                                 \
+    template double sahCost<T>(const SphereBvh<T>&);                                          \
+    template std::shared_ptr<const SphereBvh<T>> sphereBvhFor<T>(                             \
+        std::span<const glm::dvec3>, std::span<const double>, const SphereSet<T>&, BvhCache*, \
+        const glm::dvec3&);
 WHITTED_BVH_REFIT(float)
 WHITTED_BVH_REFIT(double)
 #undef WHITTED_BVH_REFIT

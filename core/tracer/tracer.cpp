@@ -209,7 +209,7 @@ PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache) {
     bvh.radii.resize(useBvh ? count : 0);
     prepareSpheres(scene, s, bvh);
     if (useBvh) {
-        s.bvh = sphereBvhFor<T>(bvh.centres, bvh.radii, s.spheres, bvhCache);
+        s.bvh = sphereBvhFor<T>(bvh.centres, bvh.radii, s.spheres, bvhCache, s.frameOrigin);
         s.useBvh = true;
     }
     return s;

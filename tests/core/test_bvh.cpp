@@ -475,6 +475,54 @@ TEST(BvhRefit, MovedSpheresAndCameraRenderLikeBruteForce) {
     }
 }
 
+// With the caller's geometry revision unchanged, a render uses the kept tree as
+// it is, and the picture is the brute-force one bit for bit: new materials
+// show. A camera move to another frame, or a new revision, refits.
+TEST(BvhReuse, SameGeometryRevision_UsesTheTreeAsItIs_NewMaterialsShow) {
+    for (const Precision precision : {Precision::Float, Precision::Double}) {
+        SCOPED_TRACE(precisionName(precision));
+        Scene scene = randomScene(600, Layout::Field, testSeed(64), true);
+        scene.render.precision = precision;
+        BvhCache cache;
+        cache.geometryRevision = 7;
+        RenderOptions options;
+        options.threads = 2;
+        options.progressive = false;
+        options.bvhCache = &cache;
+        render(scene, options);
+        ASSERT_EQ(cache.builds, 1);
+        auto expectBruteForcePicture = [&](const char* edit) {
+            const RenderResult kept = render(scene, options);
+            useAcceleration(Acceleration::bruteForce);
+            const RenderResult brute = render(scene, RenderOptions{2, 32, false});
+            useAcceleration(Acceleration::automatic);
+            ASSERT_EQ(brute.image.rgb.size(), kept.image.rgb.size());
+            EXPECT_EQ(std::memcmp(brute.image.rgb.data(), kept.image.rgb.data(),
+                                  brute.image.rgb.size() * sizeof(float)),
+                      0)
+                << edit;
+        };
+        // Half the balls take another material: nothing moved.
+        for (std::size_t i = 0; i + 1 < scene.spheres.size(); i += 2)
+            scene.spheres[i].material = scene.materials[i % scene.materials.size()].name;
+        expectBruteForcePicture("materials");
+        EXPECT_EQ(cache.reuses, 1);
+        EXPECT_EQ(cache.refits, 0);
+        // The camera moved far enough to take the centres in another frame.
+        scene.camera.position.x += 0.5;
+        expectBruteForcePicture("camera");
+        EXPECT_EQ(cache.reuses, 1);
+        EXPECT_EQ(cache.refits, 1);
+        // A ball moved, and the caller says so.
+        scene.spheres[3].center.y += 0.4;
+        cache.geometryRevision = 8;
+        expectBruteForcePicture("moved");
+        EXPECT_EQ(cache.reuses, 1);
+        EXPECT_EQ(cache.refits, 2);
+        EXPECT_EQ(cache.builds, 1);
+    }
+}
+
 // A refit of spheres that did not move gives the build's boxes bit for bit:
 // it rounds each node's box outward once where the build rounded each sphere's,
 // which is the same box.

@@ -310,10 +310,10 @@ TEST_F(ViewCameraTest, LightOutsideThePicture_MarkedAtTheEdgeTowardsIt) {
     EXPECT_EQ(window->scenePanel()->currentIndex(), 0);
 }
 
-// Issue 12 item 5: on a scene of 20,000 balls, moving one ball and orbiting
-// the camera refit the render worker's tree instead of building one (the
-// build is the costly part of an edit at this size), and the view shows
-// exactly the core's own render of the edited scene.
+// On a scene of 20,000 balls, moving one ball and orbiting the camera refit
+// the render worker's tree instead of building one (the build is the costly
+// part of an edit at this size), a new material uses it as it is, and the
+// view shows exactly the core's own render of the edited scene.
 TEST_F(ViewCameraTest, LargeScene_MoveAndOrbit_RefitTheTreeAndShowTheExactPicture) {
     ASSERT_TRUE(editAndWait([](Scene& s) {
         for (int i = 0; i < 20000; ++i)
@@ -331,12 +331,22 @@ TEST_F(ViewCameraTest, LargeScene_MoveAndOrbit_RefitTheTreeAndShowTheExactPictur
     EXPECT_EQ(worker.bvhRefits(), refits + 1);
     EXPECT_TRUE(sameImage(view->frame(), coreRender(doc->scene())));
 
+    // A material moves nothing: the tree is used as it is.
+    const int reuses = worker.bvhReuses();
+    ASSERT_TRUE(editAndWait([](Scene& s) {
+        for (std::size_t i = 4; i < s.spheres.size(); i += 3) s.spheres[i].material = "white";
+    }));
+    EXPECT_EQ(worker.bvhRefits(), refits + 1);
+    EXPECT_EQ(worker.bvhReuses(), reuses + 1);
+    EXPECT_TRUE(sameImage(view->frame(), coreRender(doc->scene())));
+
     const int before = log->completed;
     view->setFocus();
     QTest::keyClick(view, Qt::Key_Left);
     ASSERT_TRUE(waitForRender(before));
     EXPECT_EQ(worker.bvhBuilds(), builds) << "an orbit moves every sphere of the camera's frame";
     EXPECT_EQ(worker.bvhRefits(), refits + 2);
+    EXPECT_EQ(worker.bvhReuses(), reuses + 1);
     EXPECT_TRUE(sameImage(view->frame(), coreRender(doc->scene())));
 }
 

@@ -18,6 +18,7 @@
 
 #include "panels/number_field.h"
 #include "panels/scene_panel.h"
+#include "viewport/view_overlay.h"
 
 #include "support/window_events.h"
 
@@ -177,6 +178,36 @@ TEST_F(ViewSelectTest, ShiftL_SelectsEverySphereOfTheSameMaterial) {
     EXPECT_EQ(doc->selection()->kind(), ItemKind::Sphere);
     EXPECT_EQ(selected(), expected);
     EXPECT_EQ(doc->selection()->active(), int(kBlueBall));
+}
+
+// Past kMostOutlines selected spheres each shows a dot at its centre, drawn
+// over the picture whether or not the ball is hidden; Alt+A takes them away.
+TEST_F(ViewSelectTest, A_OnMoreBallsThanAreOutlined_ADotAtEachCentre_AltATakesThemAway) {
+    const int balls = kMostOutlines + 100;
+    ASSERT_TRUE(editAndWait([&](Scene& s) {
+        // A grid of small balls in front of the seed's balls, 2 cm apart.
+        for (int i = 0; i < balls; ++i)
+            s.spheres.push_back({"dot " + std::to_string(i),
+                                 {-0.6 + 0.02 * (i % 60), 0.2 + 0.02 * (i / 60), 3.0}, 0.005,
+                                 "white"});
+    }));
+    clickSphere(kBlueBall);
+    key(Qt::Key_A);
+    ASSERT_EQ(doc->selection()->count(), balls + 4);
+    const QColor dot(215, 95, 15);  // the others of a selection (view_overlay.cpp)
+    auto colourAt = [&](int index) {
+        const QImage shown = view->grab().toImage();
+        const QPointF at = drawnCentre(index);
+        EXPECT_TRUE(view->imageRect().contains(at.toPoint()));
+        return shown.pixelColor(int(std::floor(at.x())), int(std::floor(at.y())));
+    };
+    const int count = int(doc->scene().spheres.size());
+    for (int index : {4, 4 + balls / 2, count - 1, int(kPurpleBall)}) {
+        SCOPED_TRACE("sphere " + std::to_string(index));
+        EXPECT_EQ(colourAt(index), dot);
+    }
+    key(Qt::Key_A, Qt::AltModifier);
+    EXPECT_NE(colourAt(4 + balls / 2), dot);
 }
 
 TEST_F(ViewSelectTest, G_WithTwoSelected_BothMoveByTheSameOffset_OneStep_TypedMovesBothExactly) {

@@ -141,7 +141,8 @@ void MainWindow::sceneReplaced() {
 }
 
 void MainWindow::requestRender() {
-    worker_.request(doc_.snapshot(), quality_.target(), quality_.whitted1980());
+    worker_.request(doc_.snapshot(), quality_.target(), quality_.whitted1980(),
+                    doc_.geometryRevision());
     newestFrameShown_ = false;
 }
 

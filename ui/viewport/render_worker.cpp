@@ -44,8 +44,10 @@ void RenderWorker::deliver() {
 
 quint64 RenderWorker::request(std::shared_ptr<const Scene> scene,
                               const std::optional<QualityTarget>& quality,
-                              const std::optional<Whitted1980Sampling>& whitted1980) {
-    return requests_.request(RenderRequest{std::move(scene), quality, whitted1980});
+                              const std::optional<Whitted1980Sampling>& whitted1980,
+                              std::uint64_t geometryRevision) {
+    return requests_.request(
+        RenderRequest{std::move(scene), quality, whitted1980, geometryRevision});
 }
 
 Scene viewSized(Scene scene) {
@@ -206,6 +208,7 @@ void RenderWorker::renderOne(RenderRequest requested, quint64 generation) {
     RenderOptions options;
     options.sceneValidated = true;  // request() asks for a valid scene
     options.bvhCache = &bvhCache_;
+    bvhCache_.geometryRevision = requested.geometryRevision;
     std::shared_ptr<const QualityPlan> plan;
     if (requested.quality) {
         // Chosen for the picture the view shows: its size, the scene's precision.
@@ -228,6 +231,7 @@ void RenderWorker::renderOne(RenderRequest requested, quint64 generation) {
         scene, options, [&](const TileUpdate& t) { frames.addTile(t); }, shouldStop);
     bvhBuilds_ = bvhCache_.builds;
     bvhRefits_ = bvhCache_.refits;
+    bvhReuses_ = bvhCache_.reuses;
     if (!result.completed) return;  // superseded: a newer request is waiting
     post(frames.finalFrame(std::move(result)));
 }

@@ -45,6 +45,9 @@ struct RenderRequest {
     std::shared_ptr<const Scene> scene;  // the document's snapshot, never copied to be read
     std::optional<QualityTarget> quality;
     std::optional<Whitted1980Sampling> whitted1980;  // instead of the scene's samples
+    // The document's geometryRevision() of the scene: the same as the last
+    // render's, the sphere tree is used as it is (no refit). 0: unknown.
+    std::uint64_t geometryRevision = 0;
 };
 
 struct RenderFrame {
@@ -88,19 +91,21 @@ class RenderWorker : public QObject {
     // Starts rendering `scene` as soon as the current render has stopped;
     // returns the request's generation. Never blocks on the renderer. The
     // scene must pass validateScene(), as the document's always does; the
-    // render does not check it again.
+    // render does not check it again. `geometryRevision` as RenderRequest's.
     quint64 request(std::shared_ptr<const Scene> scene,
                     const std::optional<QualityTarget>& quality = std::nullopt,
-                    const std::optional<Whitted1980Sampling>& whitted1980 = std::nullopt);
+                    const std::optional<Whitted1980Sampling>& whitted1980 = std::nullopt,
+                    std::uint64_t geometryRevision = 0);
     quint64 latestGeneration() const { return requests_.latestTicket(); }
 
     // How often frames are sent while a pass is in progress.
     static constexpr int kFrameIntervalMs = 40;
 
-    // How the renders so far got their sphere trees (built or refit). Read it
-    // between renders: the render thread updates it.
+    // How the renders so far got their sphere trees (built, refit, or kept as
+    // they were). Read it between renders: the render thread updates it.
     int bvhBuilds() const { return bvhBuilds_.load(); }
     int bvhRefits() const { return bvhRefits_.load(); }
+    int bvhReuses() const { return bvhReuses_.load(); }
 
   signals:
     // In the GUI thread (the thread this object lives in), every frame in order.
@@ -123,7 +128,7 @@ class RenderWorker : public QObject {
     PlanMemo& plans_;
     // Only the render thread touches the cache; the counts are copied out.
     BvhCache bvhCache_;
-    std::atomic<int> bvhBuilds_{0}, bvhRefits_{0};
+    std::atomic<int> bvhBuilds_{0}, bvhRefits_{0}, bvhReuses_{0};
     // Last, so that it stops and joins the render thread before the rest goes.
     RequestThread<RenderRequest> requests_;
 };

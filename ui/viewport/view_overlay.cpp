@@ -52,8 +52,29 @@ const std::vector<ImagePoint>& dotsOf(const Scene& scene, const SceneSelection& 
         dots.height = h;
         dots.geometryRevision = geometryRevision;
         dots.indices = selection.indices();
+        dots.layer = QImage();
     }
     return dots.points;
+}
+
+// The dots, 2 by 2 pixels each, in an image of `size` (the picture's place).
+const QImage& dotLayerOf(const Scene& scene, QSize size, SelectionDots& dots) {
+    if (dots.layer.size() == size) return dots.layer;
+    QImage layer(size, QImage::Format_ARGB32_Premultiplied);
+    layer.fill(Qt::transparent);
+    const QRgb colour = kAlsoSelected.rgba();  // opaque: premultiplied alike
+    const QRect place(QPoint(0, 0), size);
+    for (const ImagePoint& at : dots.points) {
+        const QPointF p = toWidget(scene, place, at);
+        const int x = int(std::floor(p.x())), y = int(std::floor(p.y()));
+        for (int row = std::max(y, 0); row < std::min(y + 2, size.height()); ++row) {
+            auto* line = reinterpret_cast<QRgb*>(layer.scanLine(row));
+            for (int column = std::max(x, 0); column < std::min(x + 2, size.width()); ++column)
+                line[column] = colour;
+        }
+    }
+    dots.layer = std::move(layer);
+    return dots.layer;
 }
 
 void paintSelectedSpheres(QPainter& painter, const Scene& scene, const QRect& r,
@@ -65,23 +86,8 @@ void paintSelectedSpheres(QPainter& painter, const Scene& scene, const QRect& r,
         for (int i : selection.indices())
             if (i != active) paintSphereOutline(painter, scene, r, scene.spheres[i], kAlsoSelected);
     } else {
-        QPolygonF dots;
-        dots.reserve(selection.count());
-        for (const ImagePoint& at :
-             dotsOf(scene, selection, overlay.geometryRevision, overlay.dots))
-            dots.append(toWidget(scene, r, at));
-        // Square dots of one-pixel points, unsmoothed: the raster engine's
-        // fast path, where wide or smoothed points were stroked one by one.
-        painter.save();
-        painter.setRenderHint(QPainter::Antialiasing, false);
-        painter.setPen(QPen(kAlsoSelected, 0));
-        QPointF at(0, 0);
-        for (const QPointF offset : {QPointF(0, 0), QPointF(1, 0), QPointF(0, 1), QPointF(1, 1)}) {
-            dots.translate(offset - at);
-            at = offset;
-            painter.drawPoints(dots);
-        }
-        painter.restore();
+        dotsOf(scene, selection, overlay.geometryRevision, overlay.dots);
+        painter.drawImage(r.topLeft(), dotLayerOf(scene, r.size(), overlay.dots));
     }
     if (active >= 0) paintSphereOutline(painter, scene, r, scene.spheres[active], kSelection);
 }

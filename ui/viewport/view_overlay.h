@@ -12,6 +12,7 @@
 #include <optional>
 #include <vector>
 
+#include <QImage>
 #include <QPoint>
 #include <QRect>
 #include <QString>
@@ -36,6 +37,11 @@ struct SelectionDots {
     std::uint64_t geometryRevision = ~std::uint64_t(0);
     std::vector<int> indices;
     std::vector<ImagePoint> points;
+    // The dots drawn once into an image the size of the picture's place in
+    // the view, which each paint lays over the picture in one go: the raster
+    // engine's drawPoints of 100,000 dots took half the editor's thread while
+    // a material was given to them (each frame repaints). Null: to be drawn.
+    QImage layer;
 };
 
 struct ViewOverlay {

@@ -273,5 +273,38 @@ TEST(FloatRangeWarningTest, StandInCheck_ShowsReason_ClickSwitchesToDouble_UndoR
     EXPECT_TRUE(warning->isVisibleTo(&bar));
 }
 
+// The check reads every sphere: it runs again when what it reads changed (a
+// move, a rename, a light, the camera), not when a sphere takes another material.
+TEST(FloatRangeWarningTest, ChecksAgainOnlyWhenWhatItReadsChanged) {
+    SceneDocument doc;
+    doc.reset(test::seedScene(), QString());
+    QWidget bar;
+    int checks = 0;
+    const FloatRangeCheck counted = [&](const Scene& s) -> std::optional<std::string> {
+        ++checks;
+        if (s.spheres[0].center.z < 100) return std::nullopt;
+        return s.spheres[0].name + " is far";
+    };
+    auto* warning = new FloatRangeWarning(&doc, counted, &bar);
+    bar.show();
+    ASSERT_EQ(checks, 1);
+    auto edit = [&](const std::function<void(Scene&)>& change) {
+        ASSERT_TRUE(doc.edit(QStringLiteral("edit"), change));
+    };
+    edit([](Scene& s) { s.spheres[0].material = s.spheres[1].material; });
+    EXPECT_EQ(checks, 1) << "a material moves nothing";
+    edit([](Scene& s) { s.spheres[0].center.z = 100; });
+    EXPECT_EQ(checks, 2);
+    EXPECT_TRUE(warning->text().contains(QStringLiteral("blue ball is far")));
+    edit([](Scene& s) { s.spheres[0].name = "far ball"; });
+    EXPECT_EQ(checks, 3);
+    EXPECT_TRUE(warning->text().contains(QStringLiteral("far ball is far")));
+    edit([](Scene& s) { s.lights[0].position.x += 1; });
+    edit([](Scene& s) { s.camera.position.y += 1; });
+    EXPECT_EQ(checks, 5);
+    doc.undoStack()->undo();
+    EXPECT_EQ(checks, 6);
+}
+
 }  // namespace
 }  // namespace whitted::ui

@@ -23,11 +23,22 @@ FloatRangeWarning::FloatRangeWarning(SceneDocument* doc, FloatRangeCheck check, 
     setIcon(style()->standardIcon(QStyle::SP_MessageBoxWarning));
     setToolTip(tr("Click to render this scene in double precision (undoable)"));
     connect(this, &QPushButton::clicked, this, &FloatRangeWarning::switchToDouble);
+    // The document emits structureChanged before sceneChanged: counted first.
+    connect(doc_, &SceneDocument::structureChanged, this, [this] { ++structureChanges_; });
     connect(doc_, &SceneDocument::sceneChanged, this, &FloatRangeWarning::refresh);
     refresh();
 }
 
+FloatRangeWarning::Inputs FloatRangeWarning::inputs() const {
+    const Scene& scene = doc_->scene();
+    return {doc_->geometryRevision(), structureChanges_,     scene.camera, scene.lights,
+            scene.materials,          scene.render.precision};
+}
+
 void FloatRangeWarning::refresh() {
+    Inputs now = inputs();
+    if (checked_ == now) return;
+    checked_ = std::move(now);
     const std::optional<QString> text = floatRangeWarningText(doc_->scene(), check_);
     setText(text.value_or(QString()));
     // Without a parent a shown widget would be a window of its own.

@@ -137,6 +137,21 @@ TEST_F(MainWindowTest, Preview_ShowsEachBlockWhereItsPixelsAre) {
     EXPECT_GT(differentFromFull, 0) << "the preview looks like the full render: not blocky";
 }
 
+// A preview that takes longer than its budget makes the next one's blocks
+// twice as large, down to 32 across the picture or a tile; one that would fit
+// four times over makes them finer again, never finer than 8.
+TEST(PreviewBlock, CoarserWhileSlow_FinerOnceTheFinerFits) {
+    EXPECT_EQ(nextPreviewBlock(8, 1.0, 640), 8);
+    EXPECT_EQ(nextPreviewBlock(8, kPreviewBudgetMs + 0.1, 640), 16);
+    EXPECT_EQ(nextPreviewBlock(16, kPreviewBudgetMs + 0.1, 640), 16) << "640 / 32 is 20 across";
+    EXPECT_EQ(nextPreviewBlock(16, kPreviewBudgetMs + 0.1, 1280), 32);
+    EXPECT_EQ(nextPreviewBlock(32, kPreviewBudgetMs + 0.1, 4096), 32) << "a tile";
+    EXPECT_EQ(nextPreviewBlock(8, 100.0, 160), 8) << "160 / 16 is 10 across";
+    EXPECT_EQ(nextPreviewBlock(16, kPreviewBudgetMs / 2, 640), 16) << "at 8, 4 times that";
+    EXPECT_EQ(nextPreviewBlock(16, kPreviewBudgetMs / 8, 640), 8);
+    EXPECT_EQ(nextPreviewBlock(8, 0.0, 640), 8);
+}
+
 TEST_F(MainWindowTest, Click_OnSpherePixel_SelectsThatSphere) {
     ScenePanel* panel = window->scenePanel();
     const Scene& s = doc->scene();

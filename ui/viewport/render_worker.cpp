@@ -62,6 +62,15 @@ Scene viewSized(Scene scene) {
     return scene;
 }
 
+int nextPreviewBlock(int block, double previewMs, int width) {
+    constexpr int kTile = 32;
+    const int coarser = 2 * block;
+    if (previewMs > kPreviewBudgetMs)
+        return coarser <= kTile && width / coarser >= kFewestPreviewBlocks ? coarser : block;
+    if (block > kFinestPreviewBlock && 4 * previewMs < 0.75 * kPreviewBudgetMs) return block / 2;
+    return block;
+}
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -102,6 +111,7 @@ class FrameAssembler {
         }
         const bool passComplete = ++tilesDone_ == t.progress.tilesInPass;
         if (passComplete && t.progress.kind == PassKind::Samples) samplesDone_ = t.progress.samples;
+        if (passComplete && isPreview) previewDone_ = Clock::now();
         // A render to a plan counts its passes as it goes (each decides whether
         // another follows), so none is known to be the last: each complete one
         // is shown, and finalFrame() follows the one that was.
@@ -119,6 +129,10 @@ class FrameAssembler {
             lastSent_ = Clock::now();
         }
     }
+
+    // When the preview's last tile was converted; nothing when it was not.
+    // Read once render() has returned.
+    std::optional<Clock::time_point> previewDone() const { return previewDone_; }
 
     // The complete render's frame, with its linear image and figures.
     RenderFrame finalFrame(RenderResult result) {
@@ -194,6 +208,7 @@ class FrameAssembler {
     int samplesDone_ = 0;  // samples in every pixel: those of the last complete pass
     Clock::time_point lastSent_;
     RenderProgress lastProgress_;
+    std::optional<Clock::time_point> previewDone_;
 };
 
 }  // namespace
@@ -223,8 +238,14 @@ void RenderWorker::renderOne(RenderRequest requested, quint64 generation) {
     // snapshot, so that an edit made while it renders writes in place instead
     // of copying the scene (bench_editor_gestures: each move of the 100,000
     // balls copied them, 1 ms; a million spheres are 100 MB).
-    options.onPrepared = [&shared] { shared.reset(); };
+    std::optional<Clock::time_point> prepared;
+    options.onPrepared = [&] {
+        shared.reset();
+        prepared = Clock::now();
+    };
+    options.previewBlock = previewBlock_;
     const Scene& scene = *shared;
+    const int width = scene.render.width;  // `scene` may be gone once prepared
     FrameAssembler frames(scene, plan, options.whitted1980, generation, shouldStop,
                           [this](RenderFrame frame) { post(std::move(frame)); });
     RenderResult result = render(
@@ -232,6 +253,11 @@ void RenderWorker::renderOne(RenderRequest requested, quint64 generation) {
     bvhBuilds_ = bvhCache_.builds;
     bvhRefits_ = bvhCache_.refits;
     bvhReuses_ = bvhCache_.reuses;
+    if (prepared && frames.previewDone())
+        previewBlock_ = nextPreviewBlock(
+            previewBlock_,
+            std::chrono::duration<double, std::milli>(*frames.previewDone() - *prepared).count(),
+            width);
     if (!result.completed) return;  // superseded: a newer request is waiting
     post(frames.finalFrame(std::move(result)));
 }

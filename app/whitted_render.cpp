@@ -34,6 +34,7 @@
 #include "ray_tree_json.h"
 #include "render_flags.h"
 #include "render_quality.h"
+#include "render_stats.h"
 #include "scene/scene_io.h"
 #include "tracer/kernel_dispatch.h"
 #include "tracer/renderer.h"
@@ -141,52 +142,6 @@ class ProgressBar {
     const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-double cameraRaysPerPixel(const RenderSettings& r, const RenderResult& result) {
-    return double(result.rays.camera) / (double(r.width) * r.height);
-}
-
-// How many pixels were cut 0, 1, ... maxLevels times.
-std::vector<long long> pixelsAtEachDepth(const SubdivisionLevels& map, int maxLevels) {
-    std::vector<long long> count(maxLevels + 1, 0);
-    for (std::uint8_t level : map.levels) ++count[level];
-    return count;
-}
-
-std::string statsJson(const RenderSettings& r, const RenderResult& result,
-                      const std::optional<QualityPlan>& plan,
-                      const std::optional<Whitted1980Sampling>& whitted1980) {
-    const RayCounts& rays = result.rays;
-    nlohmann::ordered_json j;
-    j["width"] = r.width;
-    j["height"] = r.height;
-    j["samples_per_pixel"] = r.samplesPerPixel;
-    j["max_depth"] = r.maxDepth;
-    j["precision"] = std::string(precisionName(r.precision));
-    j["threads"] = result.threads;
-    j["kernel"] = activeKernelName();
-    j["seconds"] = result.seconds;
-    j["rays"] = {{"camera", rays.camera},
-                 {"shadow", rays.shadow},
-                 {"reflection", rays.reflection},
-                 {"refraction", rays.refraction},
-                 {"total", rays.total()}};
-    j["mrays_per_second"] = result.seconds > 0 ? rays.total() / result.seconds / 1e6 : 0.0;
-    if (plan && result.adaptive) {
-        j["samples_per_pixel"] = result.adaptive->meanSamples;
-        j["quality"] = qualityJson(*plan, *result.adaptive);
-    }
-    if (whitted1980) {
-        j.erase("samples_per_pixel");
-        j["sampler"] = {{"name", "whitted1980"},
-                        {"threshold", whitted1980->threshold},
-                        {"subdivisions", whitted1980->maxLevels},
-                        {"camera_rays_per_pixel", cameraRaysPerPixel(r, result)},
-                        {"pixels_at_each_depth",
-                         pixelsAtEachDepth(result.subdivision, whitted1980->maxLevels)}};
-    }
-    return j.dump(2) + "\n";
-}
-
 void writeText(const fs::path& file, const std::string& text) {
     replaceFileAtomically(file, [&](const fs::path& temp) {
         std::ofstream out(temp, std::ios::binary | std::ios::trunc);
@@ -258,7 +213,8 @@ int renderFrame(Scene& scene, const Options& o, const std::optional<PixelRect>& 
     if (!o.stats.empty()) {
         const fs::path stats = frameFile(o.stats, frame);
         try {
-            writeText(stats, statsJson(scene.render, result, plan, options.whitted1980));
+            writeText(stats,
+                      renderStats(scene.render, result, plan, options.whitted1980).dump(2) + "\n");
         } catch (const std::exception& e) {
             std::cerr << "whitted-render: " << stats.string() << ": " << e.what() << "\n";
             std::error_code ignored;

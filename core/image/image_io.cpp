@@ -19,13 +19,22 @@ struct LoadedCodec {
     std::string failure;  // why it could not be loaded
 };
 
+// setImageCodecPath()'s path, if given.
+fs::path& codecPathGiven() {
+    static fs::path given;
+    return given;
+}
+
 // The plug-in lies where the build and the install put it, relative to the
 // program (CMake: WHITTED_CODEC_FROM_PROGRAM), so a build tree and an installed
 // tree each find their own.
 LoadedCodec loadCodec() {
     std::error_code error;
     const fs::path program = fs::read_symlink("/proc/self/exe", error);
-    const fs::path plugin = (program.parent_path() / WHITTED_CODEC_FROM_PROGRAM).lexically_normal();
+    const fs::path plugin =
+        !codecPathGiven().empty()
+            ? codecPathGiven()
+            : (program.parent_path() / WHITTED_CODEC_FROM_PROGRAM).lexically_normal();
     void* handle = dlopen(plugin.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!handle) return {nullptr, "cannot load the image library: " + std::string(dlerror())};
     using Entry = const ImageCodec* (*)();
@@ -33,6 +42,14 @@ LoadedCodec loadCodec() {
     if (!entry) return {nullptr, "cannot load the image library: " + std::string(dlerror())};
     return {entry(), {}};
 }
+
+}  // namespace
+
+void setImageCodecPath(const fs::path& plugin) {
+    codecPathGiven() = plugin;
+}
+
+namespace {
 
 const LoadedCodec& loadedCodec() {
     static const LoadedCodec loaded = loadCodec();

@@ -50,6 +50,11 @@ void writeImagePart(const ImagePart& part, const std::filesystem::path& file,
 // for any other file the whole picture.
 ImagePart readImagePart(const std::filesystem::path& file);
 
+// Where the image plug-in is for a process that is not one of the programs,
+// whose place relative to the program finds it (the Python module, loaded by
+// python3, gives its own): call before any image is read or written.
+void setImageCodecPath(const std::filesystem::path& plugin);
+
 // The version of the OpenImageIO library in use, "2.4.7" (for About boxes).
 std::string openImageIOVersion();
 

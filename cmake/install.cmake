@@ -59,8 +59,13 @@ set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION graphics)
 # Depends from the shared libraries the programs link (dpkg-shlibdeps), plus
-# what no program links but Qt loads at run time: the SVG icon plugins.
+# what no program links but Qt loads at run time: the SVG icon plugins; and
+# the Python the module was built for, with NumPy, which it imports.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "libqt6svg6")
+if(WHITTED_BUILD_PYTHON)
+  string(APPEND CPACK_DEBIAN_PACKAGE_DEPENDS ", python3 (>= ${WHITTED_PYTHON_VERSION}), "
+         "python3 (<< ${WHITTED_PYTHON_VERSION}.99), python3-numpy")
+endif()
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "desktop-file-utils, shared-mime-info")
 include(CPack)

@@ -29,6 +29,9 @@ packages=(
   hyperfine
   # build time (docs/testing.md): a faster linker, objects kept between builds
   mold ccache
+  # the Python module (python/, docs/python.md): bindings, Debian's Python,
+  # NumPy arrays for images, and its tests
+  pybind11-dev python3-dev python3-numpy python3-pytest
 )
 
 missing=()

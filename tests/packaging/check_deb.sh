@@ -25,7 +25,13 @@ contents=$(dpkg-deb -c "$deb" | awk '{print $6}')
 for path in ./usr/bin/whitted ./usr/bin/whitted-render \
   ./usr/share/applications/io.github.whitted.Whitted.desktop \
   ./usr/share/icons/hicolor/scalable/apps/io.github.whitted.Whitted.svg \
-  ./usr/share/whitted/scenes/seed.json ./usr/lib/whitted/whitted_oiio.so; do
+  ./usr/share/whitted/scenes/seed.json ./usr/lib/whitted/whitted_oiio.so \
+  ./usr/lib/python3/dist-packages/whitted/__init__.py \
+  ./usr/lib/python3/dist-packages/whitted/__init__.pyi \
+  "./usr/lib/python3/dist-packages/whitted/$(basename "$build"/python/whitted/_whitted.*.so)"; do
   grep -qxF "$path" <<<"$contents" || { echo "the package lacks $path" >&2; exit 1; }
 done
-echo "$(basename "$deb"): Depends from the shared libraries, programs, image plug-in, desktop file, icons and scenes under /usr"
+for lib in 'python3-numpy' 'python3 '; do
+  grep -Eq "(^|, )$lib" <<<"$depends, " || { echo "Depends lacks $lib" >&2; exit 1; }
+done
+echo "$(basename "$deb"): Depends from the shared libraries, programs, image plug-in, Python module, desktop file, icons and scenes under /usr"

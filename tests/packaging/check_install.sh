@@ -54,4 +54,19 @@ out="$prefix/seed.png"
 "$prefix/bin/whitted-render" "$prefix/share/whitted/scenes/seed.json" -o "$out" \
   --width 64 --height 48 --quiet
 [[ -s "$out" ]] || { echo "the installed whitted-render wrote no image" >&2; exit 1; }
-echo "installed into a temporary prefix: programs, desktop file, metadata, MIME type, icons, scenes; whitted-render rendered the installed seed scene"
+
+# The Python module, where Debian's python3 looks (dist-packages), imports
+# from there alone and writes an image through the installed plug-in.
+package="$prefix/lib/python3/dist-packages/whitted"
+[[ -f "$package/__init__.py" && -f "$package/__init__.pyi" ]] ||
+  { echo "the Python package is not installed in $package" >&2; exit 1; }
+if grep -q '^WHITTED_BUILD_PYTHON:BOOL=ON' "$build/CMakeCache.txt"; then
+  (cd "$prefix" && PYTHONPATH="$prefix/lib/python3/dist-packages" /usr/bin/python3 -c "
+import whitted
+assert whitted.__file__.startswith('$prefix'), whitted.__file__
+image = whitted.render(whitted.load('share/whitted/scenes/seed.json'), width=32, height=24)
+whitted.write_image(image, 'seed-from-python.png')
+")
+  [[ -s "$prefix/seed-from-python.png" ]] || { echo "the installed module wrote no image" >&2; exit 1; }
+fi
+echo "installed into a temporary prefix: programs, desktop file, metadata, MIME type, icons, scenes, the Python module; whitted-render and the module rendered the installed seed scene"

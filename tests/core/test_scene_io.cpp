@@ -3,6 +3,7 @@
 // every scene in scenes/, and atomic saving.
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -386,6 +387,35 @@ TEST(SceneIo, EveryBadInput_RefusedNamingFileAndJsonPath) {
 
 TEST(SceneIo, InfiniteNumber_RefusedNamingFileAndJsonPath) {
     for (const BadCase& c : nonFiniteCases()) expectRefused(c);
+}
+
+// The same cases for the Python module's tests (tests/python/test_scene.py):
+// each file's text and the message loading it gives, written where
+// WHITTED_BAD_SCENES says (ctest's fixture bad_scenes sets it).
+TEST(SceneIo, EveryBadInput_WrittenForThePythonModulesTests) {
+    json cases = json::array();
+    std::vector<BadCase> all = badCases();
+    for (BadCase& c : nonFiniteCases()) all.push_back(std::move(c));
+    for (const BadCase& c : all) {
+        json j = badInputBase();
+        c.mutate(j);
+        const std::string text = textOf(j);
+        try {
+            parseScene(text, "bad scene.json");
+            ADD_FAILURE() << c.what << ": accepted";
+        } catch (const SceneError& e) {
+            cases.push_back({{"what", c.what},
+                             {"text", text},
+                             {"message", e.what()},
+                             {"field", e.jsonPath() + ": " + e.reason()}});
+        }
+    }
+    EXPECT_EQ(cases.size(), all.size());
+    if (const char* file = std::getenv("WHITTED_BAD_SCENES")) {
+        std::ofstream out(file);
+        out << cases.dump(1) << "\n";
+        ASSERT_TRUE(out.good()) << file;
+    }
 }
 
 TEST(SceneIo, InvalidJson_RefusedNamingFileAndPlace) {

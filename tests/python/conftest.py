@@ -11,7 +11,7 @@ import pytest
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 SCENES = ROOT / "scenes"
-SHIPPED = sorted(SCENES.glob("*.json"))
+SHIPPED = sorted(SCENES.rglob("*.json"))  # with scenes/extremes/
 
 
 @pytest.fixture

@@ -2,11 +2,13 @@
 refused with the file loader's messages."""
 
 import json
+import os
+import pathlib
 
 import pytest
 
 import whitted
-from conftest import SCENES
+from conftest import SHIPPED
 
 
 def test_load_gives_the_files_values_as_attributes(seed_path):
@@ -38,7 +40,7 @@ def test_lists_change_the_scene_in_place_and_save_reads_back(seed_path, tmp_path
 
 
 def test_to_dict_and_load_dict_round_trip_every_shipped_scene():
-    for path in sorted(SCENES.glob("*.json")):
+    for path in SHIPPED:
         scene = whitted.load(path)
         assert whitted.load_dict(scene.to_dict()) == scene, path.name
 
@@ -74,3 +76,34 @@ def test_a_scene_made_invalid_in_python_is_refused_by_render_and_save(seed_path,
     with pytest.raises(ValueError, match=r"^spheres\[2\]\.radius"):
         scene.save(out)
     assert not out.exists()
+
+
+def bad_scene_cases():
+    """The scene-file tests' bad cases (tests/core/test_scene_io.cpp), as the
+    fixture bad_scenes writes them: text, file message, field message."""
+    path = os.environ.get("WHITTED_BAD_SCENES")
+    if not path:
+        pytest.fail("WHITTED_BAD_SCENES is not set: run through ctest, which writes the cases")
+    with open(path) as cases:
+        return json.load(cases)
+
+
+def test_every_bad_case_of_the_scene_file_tests_raises_their_message(tmp_path, monkeypatch):
+    cases = bad_scene_cases()
+    assert len(cases) > 50
+    monkeypatch.chdir(tmp_path)
+    for case in cases:
+        pathlib.Path("bad scene.json").write_text(case["text"])
+        with pytest.raises(ValueError) as refused:
+            whitted.load("bad scene.json")
+        assert str(refused.value) == case["message"], case["what"]
+        # As a dict: the same field and reason. Not where the dict cannot say
+        # what the file did: format and version, which load_dict fills in, and
+        # infinite numbers, which JSON has no word for.
+        if "missing" in case["what"] and ("format" in case["what"] or "version" in case["what"]):
+            continue
+        if "1e999" in case["text"]:
+            continue
+        with pytest.raises(ValueError) as refused:
+            whitted.load_dict(json.loads(case["text"]))
+        assert str(refused.value) == case["field"], case["what"]

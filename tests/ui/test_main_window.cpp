@@ -139,7 +139,8 @@ TEST_F(MainWindowTest, Preview_ShowsEachBlockWhereItsPixelsAre) {
 
 // A preview that takes longer than its budget makes the next one's blocks
 // twice as large, down to 32 across the picture or a tile; one that would fit
-// four times over makes them finer again, never finer than 8.
+// four times over makes them finer again, never finer than 8. A block kept
+// from a wider scene is made finer for a narrower one.
 TEST(PreviewBlock, CoarserWhileSlow_FinerOnceTheFinerFits) {
     EXPECT_EQ(nextPreviewBlock(8, 1.0, 640), 8);
     EXPECT_EQ(nextPreviewBlock(8, kPreviewBudgetMs + 0.1, 640), 16);
@@ -150,6 +151,11 @@ TEST(PreviewBlock, CoarserWhileSlow_FinerOnceTheFinerFits) {
     EXPECT_EQ(nextPreviewBlock(16, kPreviewBudgetMs / 2, 640), 16) << "at 8, 4 times that";
     EXPECT_EQ(nextPreviewBlock(16, kPreviewBudgetMs / 8, 640), 8);
     EXPECT_EQ(nextPreviewBlock(8, 0.0, 640), 8);
+    // A block kept from a wider picture, for a narrower one.
+    EXPECT_EQ(previewBlockFor(16, 160), 8);
+    EXPECT_EQ(previewBlockFor(32, 640), 16);
+    EXPECT_EQ(previewBlockFor(32, 1280), 32);
+    EXPECT_EQ(previewBlockFor(8, 100), 8);
 }
 
 TEST_F(MainWindowTest, Click_OnSpherePixel_SelectsThatSphere) {

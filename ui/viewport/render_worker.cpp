@@ -62,6 +62,11 @@ Scene viewSized(Scene scene) {
     return scene;
 }
 
+int previewBlockFor(int block, int width) {
+    while (block > kFinestPreviewBlock && width / block < kFewestPreviewBlocks) block /= 2;
+    return std::max(block, kFinestPreviewBlock);
+}
+
 int nextPreviewBlock(int block, double previewMs, int width) {
     constexpr int kTile = 32;
     const int coarser = 2 * block;
@@ -243,9 +248,9 @@ void RenderWorker::renderOne(RenderRequest requested, quint64 generation) {
         shared.reset();
         prepared = Clock::now();
     };
-    options.previewBlock = previewBlock_;
     const Scene& scene = *shared;
     const int width = scene.render.width;  // `scene` may be gone once prepared
+    options.previewBlock = previewBlock_ = previewBlockFor(previewBlock_, width);
     FrameAssembler frames(scene, plan, options.whitted1980, generation, shouldStop,
                           [this](RenderFrame frame) { post(std::move(frame)); });
     RenderResult result = render(

@@ -53,6 +53,10 @@ inline constexpr double kPreviewBudgetMs = 6.0;
 inline constexpr int kFinestPreviewBlock = 8;
 inline constexpr int kFewestPreviewBlocks = 32;
 int nextPreviewBlock(int block, double previewMs, int width);
+// `block` as a picture `width` pixels wide may have it: no coarser than
+// kFewestPreviewBlocks across (the block kept from a wider scene's renders
+// is made finer for a narrower one), never finer than kFinestPreviewBlock.
+int previewBlockFor(int block, int width);
 
 // What the view is asked to render: the scene, to its own samples and depth
 // or, with a target, to that quality (document/quality_choice.h).

@@ -432,7 +432,19 @@ TEST(BvhLazy, BuildsOnlyTheSubtreesRaysEnter) {
     EXPECT_LE(lazyJobsBuilt(*lazy.bvh), jobs / 2);
 }
 
-// Issue 12 item 5: after an edit that moves a few spheres or the camera (it
+// The picture `image` is the brute-force render of `scene`, bit for bit.
+::testing::AssertionResult isBruteForcePicture(const Scene& scene, const Image& image) {
+    useAcceleration(Acceleration::bruteForce);
+    const RenderResult brute = render(scene, RenderOptions{2, 32, false});
+    useAcceleration(Acceleration::automatic);
+    if (brute.image.rgb.size() != image.rgb.size())
+        return ::testing::AssertionFailure() << "another size";
+    if (std::memcmp(brute.image.rgb.data(), image.rgb.data(), image.rgb.size() * sizeof(float)))
+        return ::testing::AssertionFailure() << "pixels differ from the brute-force render";
+    return ::testing::AssertionSuccess();
+}
+
+// After an edit that moves a few spheres or the camera (it
 // moves every sphere of the camera-centred frame), the render refits the kept
 // tree instead of building one, and the picture is still
 // the brute-force one, bit for bit; a refit that wears the tree out (one ball grown huge) builds.
@@ -460,14 +472,7 @@ TEST(BvhRefit, MovedSpheresAndCameraRenderLikeBruteForce) {
             const RenderResult refit = render(scene, options);
             EXPECT_EQ(cache.builds, 1) << "edit " << edit;
             EXPECT_EQ(cache.refits, edit + 1) << "edit " << edit;
-            useAcceleration(Acceleration::bruteForce);
-            const RenderResult brute = render(scene, RenderOptions{2, 32, false});
-            useAcceleration(Acceleration::automatic);
-            ASSERT_EQ(brute.image.rgb.size(), refit.image.rgb.size());
-            EXPECT_EQ(std::memcmp(brute.image.rgb.data(), refit.image.rgb.data(),
-                                  brute.image.rgb.size() * sizeof(float)),
-                      0)
-                << "edit " << edit;
+            EXPECT_TRUE(isBruteForcePicture(scene, refit.image)) << "edit " << edit;
         }
         scene.spheres[5].radius = 40;  // its boxes now cover the field
         render(scene, options);
@@ -492,15 +497,7 @@ TEST(BvhReuse, SameGeometryRevision_UsesTheTreeAsItIs_NewMaterialsShow) {
         render(scene, options);
         ASSERT_EQ(cache.builds, 1);
         auto expectBruteForcePicture = [&](const char* edit) {
-            const RenderResult kept = render(scene, options);
-            useAcceleration(Acceleration::bruteForce);
-            const RenderResult brute = render(scene, RenderOptions{2, 32, false});
-            useAcceleration(Acceleration::automatic);
-            ASSERT_EQ(brute.image.rgb.size(), kept.image.rgb.size());
-            EXPECT_EQ(std::memcmp(brute.image.rgb.data(), kept.image.rgb.data(),
-                                  brute.image.rgb.size() * sizeof(float)),
-                      0)
-                << edit;
+            EXPECT_TRUE(isBruteForcePicture(scene, render(scene, options).image)) << edit;
         };
         // Half the balls take another material: nothing moved.
         for (std::size_t i = 0; i + 1 < scene.spheres.size(); i += 2)

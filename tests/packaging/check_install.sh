@@ -57,10 +57,10 @@ out="$prefix/seed.png"
 
 # The Python module, where Debian's python3 looks (dist-packages), imports
 # from there alone and writes an image through the installed plug-in.
-package="$prefix/lib/python3/dist-packages/whitted"
-[[ -f "$package/__init__.py" && -f "$package/__init__.pyi" ]] ||
-  { echo "the Python package is not installed in $package" >&2; exit 1; }
 if grep -q '^WHITTED_BUILD_PYTHON:BOOL=ON' "$build/CMakeCache.txt"; then
+  package="$prefix/lib/python3/dist-packages/whitted"
+  [[ -f "$package/__init__.py" && -f "$package/__init__.pyi" ]] ||
+    { echo "the Python package is not installed in $package" >&2; exit 1; }
   (cd "$prefix" && PYTHONPATH="$prefix/lib/python3/dist-packages" /usr/bin/python3 -c "
 import whitted
 assert whitted.__file__.startswith('$prefix'), whitted.__file__

@@ -110,7 +110,8 @@ void bindItems(py::module_& m) {
         .def_readwrite("position", &Light::position, "In scene units (y up).")
         .def_readwrite("color", &Light::color, "Linear RGB, each >= 0.")
         .def_readwrite("intensity", &Light::intensity, "Multiplies color, >= 0.")
-        .def(py::self == py::self);
+        .def(py::self == py::self)
+        .def("__repr__", [](const Light& l) { return "<whitted.Light \"" + l.name + "\">"; });
 
     py::class_<Sphere>(m, "Sphere", "A sphere and the name of its material.")
         .def(py::init([](std::string name, const glm::dvec3& center, double radius,
@@ -123,7 +124,10 @@ void bindItems(py::module_& m) {
         .def_readwrite("center", &Sphere::center, "In scene units (y up).")
         .def_readwrite("radius", &Sphere::radius, "In scene units, > 0.")
         .def_readwrite("material", &Sphere::material, "The name of one of the scene's materials.")
-        .def(py::self == py::self);
+        .def(py::self == py::self)
+        .def("__repr__", [](const Sphere& s) {
+            return "<whitted.Sphere \"" + s.name + "\" of \"" + s.material + "\">";
+        });
 
     py::class_<Camera>(m, "Camera", "A pinhole camera.")
         .def(py::init([](const glm::dvec3& position, const glm::dvec3& lookAt, const glm::dvec3& up,
@@ -163,6 +167,10 @@ void bindScene(py::module_& m) {
     py::bind_vector<std::vector<Sphere>>(m, "SphereList");
     py::bind_vector<std::vector<Light>>(m, "LightList");
     py::bind_vector<std::vector<Material>>(m, "MaterialList");
+    // scene.spheres = [whitted.Sphere(...), ...] as well as in place.
+    py::implicitly_convertible<py::list, std::vector<Sphere>>();
+    py::implicitly_convertible<py::list, std::vector<Light>>();
+    py::implicitly_convertible<py::list, std::vector<Material>>();
 
     py::class_<Scene>(m, "Scene",
                       "A scene: camera, render settings, background, ambient light, and lists of\n"

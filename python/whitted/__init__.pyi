@@ -1,7 +1,7 @@
 # Type stubs of the whitted package, for editors and type checkers.
 # Units: positions and sizes in scene units (y up); colours linear RGB.
 from os import PathLike
-from typing import Any, Callable, Iterable, Literal, Optional, Sequence, overload
+from typing import Any, Callable, Iterable, Literal, MutableSequence, Optional, Sequence, overload
 
 import numpy
 import numpy.typing
@@ -77,18 +77,20 @@ class RenderSettings:
     """1 to 65536."""
     precision: Literal["float", "double"]
 
-class SphereList(list[Sphere]): ...
-class LightList(list[Light]): ...
-class MaterialList(list[Material]): ...
+# The scene's own lists: indexing, append, extend, insert, pop, del and len as
+# a list's; a slice is a copy; no +. A plain list may be assigned in their place.
+class SphereList(MutableSequence[Sphere]): ...
+class LightList(MutableSequence[Light]): ...
+class MaterialList(MutableSequence[Material]): ...
 
 class Scene:
     camera: Camera
     render: RenderSettings
     background: Vec3
     ambient: Vec3
-    materials: MaterialList
-    lights: LightList
-    spheres: SphereList
+    materials: MaterialList | list[Material]
+    lights: LightList | list[Light]
+    spheres: SphereList | list[Sphere]
     """Changed in place: scene.spheres[0].radius = 2 changes the scene."""
     def __init__(self) -> None: ...
     def save(self, path: Path) -> None:

@@ -39,6 +39,15 @@ def test_lists_change_the_scene_in_place_and_save_reads_back(seed_path, tmp_path
     assert back.render.precision == "double"
 
 
+def test_a_list_given_to_a_scene_replaces_its_items(seed_path):
+    scene = whitted.load(seed_path)
+    scene.spheres = [whitted.Sphere("only ball", center=(0, 0.5, 3), radius=0.5, material="blue")]
+    scene.lights = list(scene.lights) + [whitted.Light("fill", position=(-5, 3, -5), intensity=0.3)]
+    assert [s.name for s in scene.spheres] == ["only ball"]
+    assert [l.name for l in scene.lights] == ["key", "fill"]
+    assert whitted.render(scene, width=16, height=12).shape == (12, 16, 3)
+
+
 def test_to_dict_and_load_dict_round_trip_every_shipped_scene():
     for path in SHIPPED:
         scene = whitted.load(path)

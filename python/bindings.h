@@ -4,6 +4,7 @@
 // floats.
 #pragma once
 
+#include <pybind11/numpy.h>
 #include <pybind11/operators.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -12,6 +13,7 @@
 
 #include <vector>
 
+#include "image/image.h"
 #include "scene/scene.h"
 
 PYBIND11_MAKE_OPAQUE(std::vector<whitted::Sphere>)
@@ -55,5 +57,11 @@ void bindImages(py::module_& m);
 // The scene's validation, as a file's loading reports it, raised as
 // ValueError: "spheres[0].radius: must be > 0".
 void raiseIfInvalid(const Scene& scene);
+
+// An image as a float32 array of shape (height, width, 3), copied.
+py::array_t<float> arrayOf(const Image& image);
+
+// JSON text (a scene file's, a render's stats) as Python dicts and lists.
+py::object fromJsonText(const std::string& text);
 
 }  // namespace whitted::python

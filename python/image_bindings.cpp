@@ -1,7 +1,5 @@
 // Images in and out (OpenImageIO, as the programs write them), their
 // comparison as the project measures error, and whitted-field's scenes.
-#include <pybind11/numpy.h>
-
 #include <cstring>
 #include <filesystem>
 #include <string>
@@ -31,13 +29,13 @@ Image imageOf(const FloatArray& array, const char* name) {
     return image;
 }
 
+}  // namespace
+
 py::array_t<float> arrayOf(const Image& image) {
     py::array_t<float> array({image.height, image.width, 3});
     std::memcpy(array.mutable_data(), image.rgb.data(), image.rgb.size() * sizeof(float));
     return array;
 }
-
-}  // namespace
 
 void bindImages(py::module_& m) {
     m.def(

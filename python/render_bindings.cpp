@@ -3,13 +3,11 @@
 // thread waits for it, looking every kPollMs for Ctrl+C and calling the
 // progress callback, so both happen in the caller's thread.
 #include <pybind11/functional.h>
-#include <pybind11/numpy.h>
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
-#include <cstring>
 #include <exception>
 #include <mutex>
 #include <optional>
@@ -162,12 +160,6 @@ Traced traceAside(const std::function<Traced(const StopPredicate&, std::atomic<d
     return traced;
 }
 
-py::array_t<float> toArray(const Image& image) {
-    py::array_t<float> array({image.height, image.width, 3});
-    std::memcpy(array.mutable_data(), image.rgb.data(), image.rgb.size() * sizeof(float));
-    return array;
-}
-
 py::object render(const Scene& given, const RenderArgs& args, bool returnStats,
                   const std::function<void(double)>& progress) {
     Scene scene = given;
@@ -192,11 +184,11 @@ py::object render(const Scene& given, const RenderArgs& args, bool returnStats,
         },
         progress);
     const Image& image = traced.result.image;
-    py::array_t<float> array = toArray(region ? cropImage(image, *region) : image);
+    py::array_t<float> array = arrayOf(region ? cropImage(image, *region) : image);
     if (!returnStats) return array;
-    const std::string stats =
-        renderStats(scene.render, traced.result, traced.plan, std::nullopt).dump();
-    return py::make_tuple(array, py::module_::import("json").attr("loads")(stats));
+    return py::make_tuple(
+        array,
+        fromJsonText(renderStats(scene.render, traced.result, traced.plan, std::nullopt).dump()));
 }
 
 }  // namespace

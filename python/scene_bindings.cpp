@@ -44,7 +44,7 @@ Scene loadFile(const std::filesystem::path& path) {
 }
 
 py::dict toDict(const Scene& scene) {
-    return py::module_::import("json").attr("loads")(sceneToJson(scene));
+    return fromJsonText(sceneToJson(scene));
 }
 
 std::string precisionOf(const RenderSettings& r) {
@@ -156,6 +156,10 @@ void bindItems(py::module_& m) {
 }
 
 }  // namespace
+
+py::object fromJsonText(const std::string& text) {
+    return py::module_::import("json").attr("loads")(text);
+}
 
 void raiseIfInvalid(const Scene& scene) {
     if (const auto problem = validateScene(scene))

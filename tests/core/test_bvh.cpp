@@ -432,6 +432,15 @@ TEST(BvhLazy, BuildsOnlyTheSubtreesRaysEnter) {
     EXPECT_LE(lazyJobsBuilt(*lazy.bvh), jobs / 2);
 }
 
+// A render on two threads, in one pass, that keeps its tree in `cache`.
+RenderOptions keepingTheTreeIn(BvhCache& cache) {
+    RenderOptions options;
+    options.threads = 2;
+    options.progressive = false;
+    options.bvhCache = &cache;
+    return options;
+}
+
 // The picture `image` is the brute-force render of `scene`, bit for bit.
 ::testing::AssertionResult isBruteForcePicture(const Scene& scene, const Image& image) {
     useAcceleration(Acceleration::bruteForce);
@@ -453,10 +462,7 @@ TEST(BvhRefit, MovedSpheresAndCameraRenderLikeBruteForce) {
         Scene scene = randomScene(600, Layout::Field, testSeed(61), true);
         scene.render.precision = precision;
         BvhCache cache;
-        RenderOptions options;
-        options.threads = 2;
-        options.progressive = false;
-        options.bvhCache = &cache;
+        const RenderOptions options = keepingTheTreeIn(cache);
         render(scene, options);
         ASSERT_EQ(cache.builds, 1);
         std::mt19937 rng(7);
@@ -490,10 +496,7 @@ TEST(BvhReuse, SameGeometryRevision_UsesTheTreeAsItIs_NewMaterialsShow) {
         scene.render.precision = precision;
         BvhCache cache;
         cache.geometryRevision = 7;
-        RenderOptions options;
-        options.threads = 2;
-        options.progressive = false;
-        options.bvhCache = &cache;
+        const RenderOptions options = keepingTheTreeIn(cache);
         render(scene, options);
         ASSERT_EQ(cache.builds, 1);
         auto expectBruteForcePicture = [&](const char* edit) {

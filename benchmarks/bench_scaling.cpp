@@ -5,7 +5,7 @@
 // build time, render time and Mrays/s for each; not a test.
 //   build/bin/bench_scaling [--sizes N,N,...] [--width W] [--height H]
 //                           [--max-brute N] [--no-double] [--bvh] [--csv FILE]
-//                           [--images DIR]
+//                           [--images DIR] [--layouts NAME,NAME,...]
 //   build/bin/bench_scaling WIDTH HEIGHT [MAX_BRUTE_N [N,N,...]]   (older form)
 // Defaults: 1280x720, N = 4,100,1000,10000,100000,1000000, brute force only up
 // to 10000 spheres (100k takes minutes). 1 spp, depth 5, 2 threads. Build
@@ -17,7 +17,8 @@
 // after another with the same BvhCache: the tree kept and refit, as in the
 // editor after an edit or a camera move. --images writes our float
 // render and Embree's as DIR/field-N-ours.png and DIR/field-N-embree.png, to
-// look at what the PSNR column summarises.
+// look at what the PSNR column summarises. --layouts times other fields than
+// the one the tracer was tuned on (app/field/field_layouts.h; default "field").
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -29,9 +30,9 @@
 #include <CLI/CLI.hpp>
 
 #include "bench_args.h"
+#include "field_layouts.h"
 #include "image/image_error.h"
 #include "image/image_io.h"
-#include "sphere_field.h"
 #include "tracer/bvh.h"
 #include "tracer/kernel_dispatch.h"
 #include "tracer/renderer.h"
@@ -55,6 +56,7 @@ struct Options {
     Acceleration ours = Acceleration::automatic;
     std::string csv;
     std::string images;
+    std::vector<std::string> layouts = {"field"};
 };
 
 Options parseOptions(int argc, char** argv) {
@@ -69,6 +71,11 @@ Options parseOptions(int argc, char** argv) {
     app.add_flag("--bvh", bvh, "Ours always with the BVH, not its own choice");
     app.add_option("--csv", o.csv, "Write the table as CSV");
     app.add_option("--images", o.images, "Write our render and Embree's into this folder");
+    std::vector<std::string> names;
+    for (const FieldLayout& l : fieldLayouts()) names.push_back(l.name);
+    app.add_option("--layouts", o.layouts, "Field layouts, e.g. field,clustered")
+        ->delimiter(',')
+        ->check(CLI::IsMember(names));
     // The older form: WIDTH HEIGHT [MAX_BRUTE_N [N,N,...]], always the BVH.
     std::vector<std::string> older;
     app.add_option("older", older, "WIDTH HEIGHT [MAX_BRUTE_N [N,N,...]] (older form)")
@@ -177,6 +184,7 @@ std::string cell(double value, const char* format, bool measured) {
 }
 
 struct Row {
+    std::string layout;
     int n;
     Tree tree;
     Run ours, doubles, brute;
@@ -187,18 +195,19 @@ struct Row {
 };
 
 void printHeader() {
-    std::printf("%8s %9s %7s %7s | %10s %8s %9s %10s %8s %10s | %9s %9s %10s %8s %7s %6s\n", "N",
-                "build ms", "B/sph", "B/sph d", "float ms", "Mr/s", "kept ms", "double ms",
-                "dbl/flt", "brute ms", "E high ms", "E med ms", "Embree ms", "E Mr/s", "ours/E",
-                "PSNR");
+    std::printf("%-9s %8s %9s %7s %7s | %10s %8s %9s %10s %8s %10s | %9s %9s %10s %8s %7s %6s\n",
+                "layout", "N", "build ms", "B/sph", "B/sph d", "float ms", "Mr/s", "kept ms",
+                "double ms", "dbl/flt", "brute ms", "E high ms", "E med ms", "Embree ms", "E Mr/s",
+                "ours/E", "PSNR");
 }
 
 void printRow(const Row& r) {
     const bool e = r.embree.run.ms >= 0, d = r.doubles.ms >= 0;
     std::printf(
-        "%8d %9.2f %7.1f %7.1f | %10.1f %8.2f %9.1f %10s %8s %10s | %9s %9s %10s %8s %7s %6s\n",
-        r.n, r.tree.buildMs, r.tree.bytesPerSphere, r.tree.doubleBytesPerSphere, r.ours.ms,
-        r.ours.mrays, r.kept.ms, cell(r.doubles.ms, "%.1f", d).c_str(),
+        "%-9s %8d %9.2f %7.1f %7.1f | %10.1f %8.2f %9.1f %10s %8s %10s | %9s %9s %10s %8s %7s "
+        "%6s\n",
+        r.layout.c_str(), r.n, r.tree.buildMs, r.tree.bytesPerSphere, r.tree.doubleBytesPerSphere,
+        r.ours.ms, r.ours.mrays, r.kept.ms, cell(r.doubles.ms, "%.1f", d).c_str(),
         cell(r.doubles.ms / r.ours.ms, "%.2f", d).c_str(),
         cell(r.brute.ms, "%.1f", r.brute.ms >= 0).c_str(),
         cell(r.embree.buildHighMs, "%.2f", e).c_str(),
@@ -210,20 +219,34 @@ void printRow(const Row& r) {
 }
 
 void writeCsv(std::FILE* f, const Row& r) {
-    std::fprintf(f, "%d,%.3f,%.2f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.2f,%.2f,%.3f\n",
-                 r.n, r.tree.buildMs, r.tree.bytesPerSphere, r.ours.ms, r.ours.mrays, r.doubles.ms,
-                 r.brute.ms, r.embree.buildHighMs, r.embree.buildMediumMs, r.embree.run.ms,
-                 r.embree.run.mrays, r.embree.run.ms >= 0 ? r.ours.ms / r.embree.run.ms : -1.0,
-                 r.embree.psnr, r.tree.doubleBytesPerSphere, r.kept.ms);
+    std::fprintf(f, "%s,%d,%.3f,%.2f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.2f,%.2f,%.3f\n",
+                 r.layout.c_str(), r.n, r.tree.buildMs, r.tree.bytesPerSphere, r.ours.ms,
+                 r.ours.mrays, r.doubles.ms, r.brute.ms, r.embree.buildHighMs,
+                 r.embree.buildMediumMs, r.embree.run.ms, r.embree.run.mrays,
+                 r.embree.run.ms >= 0 ? r.ours.ms / r.embree.run.ms : -1.0, r.embree.psnr,
+                 r.tree.doubleBytesPerSphere, r.kept.ms);
     std::fflush(f);
 }
 
 void saveImages(const std::string& dir, const Scene& scene, const Row& row) {
-    const std::string stem = dir + "/field-" + std::to_string(row.n);
+    const std::string stem = dir + "/" + row.layout + "-" + std::to_string(row.n);
     const ImageMetadata metadata =
         makeImageMetadata(scene.render, row.ours.ms / 1e3, "bench_scaling");
     writeImage(row.ours.image, stem + "-ours.png", metadata);
     if (row.embree.run.ms >= 0) writeImage(row.embree.image, stem + "-embree.png", metadata);
+}
+
+Row measureRow(const Options& o, const std::string& layout, const Scene& scene) {
+    const int n = int(scene.spheres.size()) - 1;  // the floor is not counted
+    Row row{layout, n, measureTree(scene), {}, {}, {}, {}, {}};
+    row.ours = renderWith(scene, o.ours, Precision::Float);
+    BvhCache cache;
+    renderWith(scene, o.ours, Precision::Float, &cache);
+    row.kept = renderWith(scene, o.ours, Precision::Float, &cache);
+    if (o.doubles) row.doubles = renderWith(scene, o.ours, Precision::Double);
+    if (n <= o.maxBrute) row.brute = renderWith(scene, Acceleration::bruteForce, Precision::Float);
+    row.embree = embreeRun(scene, row.ours.image);
+    return row;
 }
 
 }  // namespace
@@ -237,7 +260,7 @@ int main(int argc, char** argv) {
     }
     if (csv)
         std::fprintf(csv,
-                     "n,build_ms,bytes_per_sphere,float_ms,float_mrays,double_ms,brute_ms,"
+                     "layout,n,build_ms,bytes_per_sphere,float_ms,float_mrays,double_ms,brute_ms,"
                      "embree_build_high_ms,embree_build_medium_ms,embree_ms,embree_mrays,"
                      "ours_over_embree,psnr_db,bytes_per_sphere_double,kept_ms\n");
     std::printf("field of N spheres + floor, %dx%d, 1 spp, depth 5, %d threads, kernel %s\n",
@@ -251,21 +274,14 @@ int main(int argc, char** argv) {
     std::printf("ours: %s; render ms include preparation and build; -1 in the CSV: not measured\n",
                 o.ours == Acceleration::bvh ? "always the BVH" : "the tracer's own choice");
     printHeader();
-    for (const int n : o.sizes) {
-        Scene scene = sphereField({.count = n}, o.width, o.height);
-        Row row{n, measureTree(scene), {}, {}, {}, {}, {}};
-        row.ours = renderWith(scene, o.ours, Precision::Float);
-        BvhCache cache;
-        renderWith(scene, o.ours, Precision::Float, &cache);
-        row.kept = renderWith(scene, o.ours, Precision::Float, &cache);
-        if (o.doubles) row.doubles = renderWith(scene, o.ours, Precision::Double);
-        if (n <= o.maxBrute)
-            row.brute = renderWith(scene, Acceleration::bruteForce, Precision::Float);
-        row.embree = embreeRun(scene, row.ours.image);
-        printRow(row);
-        if (csv) writeCsv(csv, row);
-        if (!o.images.empty()) saveImages(o.images, scene, row);
-    }
+    for (const std::string& layout : o.layouts)
+        for (const int n : o.sizes) {
+            const Scene scene = sphereField(*fieldLayout(layout, n), o.width, o.height);
+            const Row row = measureRow(o, layout, scene);
+            printRow(row);
+            if (csv) writeCsv(csv, row);
+            if (!o.images.empty()) saveImages(o.images, scene, row);
+        }
     if (csv) std::fclose(csv);
     return 0;
 }

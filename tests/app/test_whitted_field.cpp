@@ -2,6 +2,7 @@
 // same flags give the same file, scenes/field.json is its output, and a field
 // renders the same through the sphere BVH as by brute force.
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <set>
 #include <string>
@@ -103,4 +104,125 @@ TEST(WhittedField, GeneratedField_BvhRenderEqualsBruteForceBitForBit) {
     for (float v : bvh.rgb) lo = std::min(lo, v), hi = std::max(hi, v);
     EXPECT_LT(lo, 0.05f);
     EXPECT_GT(hi, 0.5f);
+}
+
+namespace {
+
+// whitted-field's scene for the flags, read back; fails the test on an error.
+Scene fieldScene(const TempDir& dir, const std::vector<std::string>& flags) {
+    const test::ProgramRun r = field(flags, dir / "layout.json");
+    EXPECT_EQ(r.exitCode, 0) << r.out;
+    return loadScene(dir / "layout.json");
+}
+
+// The balls, without the floor (the last sphere).
+std::vector<Sphere> ballsOf(const Scene& scene) {
+    return {scene.spheres.begin(), scene.spheres.end() - 1};
+}
+
+// How many 2 x 2 squares of the floor hold a ball's centre.
+std::size_t occupiedSquares(const Scene& scene) {
+    std::set<std::pair<long, long>> squares;
+    for (const Sphere& s : ballsOf(scene))
+        squares.insert({std::lround(std::floor(s.center.x / 2)),
+                        std::lround(std::floor(s.center.z / 2))});
+    return squares.size();
+}
+
+std::size_t countOf(const Scene& scene, const std::string& material) {
+    const std::vector<Sphere> balls = ballsOf(scene);
+    return std::size_t(std::count_if(balls.begin(), balls.end(),
+                                     [&](const Sphere& s) { return s.material == material; }));
+}
+
+}  // namespace
+
+// In the same 100 x 98.5 box (2,463 squares of 2 x 2), 2,000 balls spread
+// over most squares; in 64 clumps they keep to a few hundred.
+TEST(WhittedField, LayoutClustered_GathersTheBallsInClumps) {
+    TempDir dir;
+    const std::size_t spread = occupiedSquares(fieldScene(dir, {"2000"}));
+    const std::size_t clumped = occupiedSquares(fieldScene(dir, {"2000", "--layout", "clustered"}));
+    EXPECT_GT(spread, 1200u);
+    EXPECT_LT(clumped, 800u);
+}
+
+TEST(WhittedField, LayoutRadii_SpreadsThreeDecadesAndKeepsClearOfTheCamera) {
+    TempDir dir;
+    const Scene scene = fieldScene(dir, {"2000", "--layout", "radii"});
+    double smallest = 1e9, largest = 0;
+    for (const Sphere& s : ballsOf(scene)) {
+        smallest = std::min(smallest, s.radius);
+        largest = std::max(largest, s.radius);
+        EXPECT_GT(glm::distance(s.center, scene.camera.position), s.radius + 1) << s.name;
+    }
+    EXPECT_LT(smallest, 0.012);
+    EXPECT_GT(largest, 8.0);
+}
+
+TEST(WhittedField, LayoutsGlassAndMirrors_FourBallsInFive) {
+    TempDir dir;
+    EXPECT_EQ(countOf(fieldScene(dir, {"1000", "--layout", "glass"}), "glass"), 800u);
+    EXPECT_EQ(countOf(fieldScene(dir, {"1000", "--layout", "mirrors"}), "mirror"), 800u);
+    EXPECT_EQ(countOf(fieldScene(dir, {"1000"}), "glass"), 200u);
+}
+
+TEST(WhittedField, LayoutInside_PutsTheCameraAmongFloatingBalls) {
+    TempDir dir;
+    const Scene scene = fieldScene(dir, {"1000", "--layout", "inside"});
+    const Vec3 eye = scene.camera.position;
+    int behind = 0, left = 0, above = 0, floating = 0;
+    for (const Sphere& s : ballsOf(scene)) {
+        behind += s.center.z < eye.z;
+        left += s.center.x < eye.x;
+        above += s.center.y > eye.y;
+        floating += s.center.y - s.radius > -0.5 + 1;
+    }
+    EXPECT_GT(behind, 400);
+    EXPECT_GT(left, 400);
+    EXPECT_GT(above, 300);
+    EXPECT_GT(floating, 500);
+}
+
+TEST(WhittedField, LayoutAbove_LooksStraightDownOnEveryBall) {
+    TempDir dir;
+    const Scene scene = fieldScene(dir, {"1000", "--layout", "above"});
+    const Vec3 view = glm::normalize(scene.camera.lookAt - scene.camera.position);
+    EXPECT_NEAR(view.y, -1.0, 1e-12);
+    for (const Sphere& s : ballsOf(scene)) EXPECT_LT(s.center.y + s.radius, scene.camera.position.y);
+}
+
+// Four balls a square unit at every count: 400 balls within |x| <= 5, 1,600
+// within |x| <= 10, reaching past 5.
+TEST(WhittedField, LayoutUniform_TheBoxGrowsWithTheCount) {
+    TempDir dir;
+    double widest = 0;
+    for (const Sphere& s : ballsOf(fieldScene(dir, {"400", "--layout", "uniform"})))
+        widest = std::max(widest, std::abs(s.center.x));
+    EXPECT_LE(widest, 5.0);
+    EXPECT_GT(widest, 4.0);
+    widest = 0;
+    for (const Sphere& s : ballsOf(fieldScene(dir, {"1600", "--layout", "uniform"})))
+        widest = std::max(widest, std::abs(s.center.x));
+    EXPECT_LE(widest, 10.0);
+    EXPECT_GT(widest, 9.0);
+}
+
+TEST(WhittedField, LayoutWithBoxFlags_TheFlagsWin) {
+    TempDir dir;
+    for (const Sphere& s : ballsOf(fieldScene(dir, {"300", "--layout", "glass", "--half-width",
+                                                    "3", "--near", "4", "--length", "2"}))) {
+        EXPECT_LE(std::abs(s.center.x), 3.0);
+        EXPECT_GE(s.center.z, 4.0);
+        EXPECT_LE(s.center.z, 6.0);
+    }
+}
+
+TEST(WhittedField, UnknownLayout_ExitTwoNamingTheFlagAndWriteNothing) {
+    TempDir dir;
+    const test::ProgramRun r = field({"10", "--layout", "spiral"}, dir / "f.json");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.out.find("--layout"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("spiral"), std::string::npos) << r.out;
+    EXPECT_FALSE(fs::exists(dir / "f.json"));
 }

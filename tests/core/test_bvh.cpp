@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include "field_layouts.h"
 #include "tracer/bvh.h"
 #include "tracer/bvh_traverse.h"
 #include "tracer/kernel_dispatch.h"
@@ -232,6 +233,23 @@ INSTANTIATE_TEST_SUITE_P(
         return std::string(layoutName(std::get<0>(info.param))) +
                (std::get<1>(info.param) ? "_floor" : "_noFloor");
     });
+
+// whitted-field's layouts (the ones docs/performance.md times against Embree),
+// small: clumps, radii over three decades, mostly glass or mirrors, the camera
+// inside or above, each traced with and without the tree.
+class FieldLayoutRendersLikeBruteForce : public ::testing::TestWithParam<FieldLayout> {};
+
+TEST_P(FieldLayoutRendersLikeBruteForce, EveryPixelEqualInFloatAndDouble) {
+    const std::string& name = GetParam().name;
+    Scene scene = sphereField(*fieldLayout(name, 1500), 96, 54);
+    scene.render.samplesPerPixel = kLargeSamplesPerPixel;
+    expectSameSamples<float>(scene, name + ", float");
+    expectSameSamples<double>(scene, name + ", double");
+}
+
+INSTANTIATE_TEST_SUITE_P(Count1500, FieldLayoutRendersLikeBruteForce,
+                         ::testing::ValuesIn(fieldLayouts()),
+                         [](const auto& info) { return info.param.name; });
 
 TEST(BvhRendersLikeBruteForceImage, RendererImagesEqual) {
     for (Precision p : {Precision::Float, Precision::Double}) {

@@ -5,10 +5,12 @@
 //
 //   build/bin/bench_node_width [--sizes N,N,...] [--width W] [--height H]
 //                              [--row-step S] [--random M] [--reps R] [--no-counts]
+//                              [--layout NAME]
 //
 // Defaults: N = 1000,100000,1000000 balls of app/field/sphere_field.h (the
 // scene of `whitted-field N` and bench_scaling), 1280x720, every row, 200,000
-// random rays, 5 repetitions. One thread.
+// random rays, 5 repetitions, the "field" layout (app/field/field_layouts.h).
+// One thread.
 //
 // Ray sets, each traced in packets (the kernel's lane width, 8 floats with
 // AVX2) and one ray at a time:
@@ -49,7 +51,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "sphere_field.h"
+#include "field_layouts.h"
 #include "tracer/bvh.h"
 #include "tracer/bvh_traverse.h"
 #include "tracer/ray_packet.h"
@@ -613,6 +615,7 @@ struct Options {
     int random = 200000;
     int reps = 5;
     bool counts = true;
+    std::string layout = "field";
 };
 
 Options parseOptions(int argc, char** argv) {
@@ -626,6 +629,10 @@ Options parseOptions(int argc, char** argv) {
     app.add_option("--random", o.random, "Random rays");
     app.add_option("--reps", o.reps, "Repetitions")->check(CLI::PositiveNumber);
     app.add_flag("!--no-counts", o.counts, "Skip the counting traversals");
+    std::vector<std::string> names;
+    for (const FieldLayout& l : fieldLayouts()) names.push_back(l.name);
+    app.add_option("--layout", o.layout, "Field layout (whitted-field --layout)")
+        ->check(CLI::IsMember(names));
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -714,9 +721,12 @@ void printSet(const Bench& b, const RaySet& set, const Options& o, int n, std::s
 }
 
 Bench makeBench(int n, const Options& o) {
-    Scene scene = sphereField({.count = n}, o.width, o.height);
+    Scene scene = sphereField(*fieldLayout(o.layout, n), o.width, o.height);
     useAcceleration(Acceleration::bvh);
-    Bench b{prepareScene<float>(scene), {}, {}, {}};
+    // Through a cache, which keeps whole trees: a lazy tree's subtrees would
+    // not be there to collapse.
+    BvhCache whole;
+    Bench b{prepareScene<float>(scene, &whole), {}, {}, {}};
     useAcceleration(Acceleration::automatic);
     b.wide2 = collapseBvh<2>(b.bvh());
     b.wide4 = collapseBvh<4>(b.bvh());

@@ -389,6 +389,22 @@ TEST(SceneIo, InfiniteNumber_RefusedNamingFileAndJsonPath) {
     for (const BadCase& c : nonFiniteCases()) expectRefused(c);
 }
 
+// Among 200,000 spheres (past the finder's first table sizes, with probes
+// that pass other names), a repeat far from its first is named with both.
+TEST(SceneIo, RepeatedNameAmongManySpheres_NamesBothPlaces) {
+    Scene scene;
+    scene.materials = {{"m", {1, 1, 1}, 1, 50, 0, 0, 1.5, {}}};
+    for (int i = 0; i < 200000; ++i)
+        scene.spheres.push_back({"ball " + std::to_string(i), {double(i), 0, 5}, 0.5, "m"});
+    EXPECT_FALSE(validateScene(scene).has_value());
+    scene.spheres[150000].name = "ball 7";
+    scene.spheres[190000].name = "ball 8";
+    const std::optional<SceneProblem> p = validateScene(scene);
+    ASSERT_TRUE(p.has_value());
+    EXPECT_EQ(p->jsonPath, "spheres[150000].name");
+    EXPECT_EQ(p->reason, "duplicate name \"ball 7\" (also spheres[7])");
+}
+
 // The same cases for the Python module's tests (tests/python/test_scene.py):
 // each file's text and the message loading it gives, written where
 // WHITTED_BAD_SCENES says (ctest's fixture bad_scenes sets it).

@@ -6,7 +6,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <iterator>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -38,50 +37,19 @@ std::string jsonList(const std::vector<T>& items) {
 using JsonFields = std::vector<std::pair<const char*, std::string>>;
 std::string jsonDocument(const JsonFields& top);
 
-// A text handed over a chunk at a time, for files too large to hold whole.
-class ChunkedText {
-  public:
-    virtual ~ChunkedText() = default;
-    // The next chunk, valid until the next call; empty at the end.
-    virtual std::string_view next() = 0;
-    // The whole text's length as far as known beforehand (0: unknown).
-    virtual std::uintmax_t size() const = 0;
-};
+// The fewest bytes a sphere takes in a file, for an upper bound on the
+// spheres of a text: reserved pages that stay unused are never touched, so
+// they cost address space only. 100 is about the shortest line sceneToJson()
+// writes for a sphere of short names.
+inline constexpr std::size_t kShortestSavedSphere = 100;
 
-// The characters of a ChunkedText, as the parser's input iterator. The
-// default-constructed iterator is the end. Faster than an std::istream, whose
-// per-character sbumpc() cost a tenth of the loading time.
-class ChunkIterator {
-  public:
-    using iterator_category = std::input_iterator_tag;
-    using value_type = char;
-    using difference_type = std::ptrdiff_t;
-    using pointer = const char*;
-    using reference = const char&;
+// A scene file's text to its Scene, validated: by readSceneFast()
+// (scene_fast_read.h) where it can, else by the full reader, which names what
+// is wrong. `capacity` >= size + fastReadPadding().
+Scene parseSceneText(const char* text, std::size_t size, std::size_t capacity,
+                     const std::string& sourceName);
 
-    ChunkIterator() = default;
-    explicit ChunkIterator(ChunkedText& text) : text_(&text) { fill(); }
-    const char& operator*() const { return *at_; }
-    ChunkIterator& operator++() {
-        if (++at_ == end_) fill();
-        return *this;
-    }
-    bool operator==(const ChunkIterator& o) const { return at_ == o.at_; }
-    bool operator!=(const ChunkIterator& o) const { return at_ != o.at_; }
-
-  private:
-    void fill() {
-        const std::string_view chunk = text_->next();
-        at_ = chunk.empty() ? nullptr : chunk.data();
-        end_ = chunk.empty() ? nullptr : chunk.data() + chunk.size();
-    }
-
-    ChunkedText* text_ = nullptr;
-    const char* at_ = nullptr;
-    const char* end_ = nullptr;
-};
-
-// parseScene() reading the text as it goes.
-Scene parseScene(ChunkedText& text, const std::string& sourceName);
+// The same by the full reader alone (scene_json_read.cpp).
+Scene parseSceneFully(const char* text, std::size_t size, const std::string& sourceName);
 
 }  // namespace whitted::detail

@@ -7,6 +7,7 @@
 // first, then structure in Reader::read's order (scene_json_reader.h), then
 // validateScene() for the semantic rules.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -14,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scene/scene_fast_read.h"
 #include "scene/scene_io.h"
 #include "scene/scene_json.h"
 #include "scene/scene_json_element.h"
@@ -155,12 +157,9 @@ class StreamingSax {
     }
 
     // Growing the vector of a million spheres by doubling cost a tenth of the
-    // loading time in moves and fresh pages. The estimate assumes the shortest
-    // line sceneToJson() writes for a sphere of short names; reserved pages
-    // that stay unused are never touched, so they cost address space only.
+    // loading time in moves and fresh pages.
     void reserveSpheres() {
-        constexpr std::uintmax_t kShortestSavedSphere = 100;
-        lists_.spheres.items.reserve(std::size_t(lists_.textBytes / kShortestSavedSphere));
+        lists_.spheres.items.reserve(std::size_t(lists_.textBytes / detail::kShortestSavedSphere));
     }
 
     void reset(ListKind kind) {
@@ -250,12 +249,24 @@ json detail::parseTopLevel(const std::string& text, const Reader& reader, Lists&
     return parseTop(reader, lists, text);
 }
 
-Scene parseScene(const std::string& text, const std::string& sourceName) {
-    return parse(sourceName, text.size(), text);
+Scene detail::parseSceneText(const char* text, std::size_t size, std::size_t capacity,
+                             const std::string& sourceName) {
+    if (std::optional<Scene> scene = readSceneFast(text, size, capacity)) {
+        if (auto problem = validateScene(*scene))
+            throw SceneError(sourceName, problem->jsonPath, problem->reason);
+        return std::move(*scene);
+    }
+    return parseSceneFully(text, size, sourceName);
 }
 
-Scene detail::parseScene(ChunkedText& text, const std::string& sourceName) {
-    return parse(sourceName, text.size(), ChunkIterator(text), ChunkIterator());
+Scene detail::parseSceneFully(const char* text, std::size_t size, const std::string& sourceName) {
+    return parse(sourceName, size, text, text + size);
+}
+
+Scene parseScene(const std::string& text, const std::string& sourceName) {
+    std::string padded = text;
+    padded.resize(text.size() + detail::fastReadPadding());
+    return detail::parseSceneText(padded.data(), text.size(), padded.size(), sourceName);
 }
 
 }  // namespace whitted

@@ -1,12 +1,14 @@
-// Scene files to scenes: the size guard, then the text streamed to the reader
-// a chunk at a time with progress reports, so that neither the file's text
-// nor its DOM is ever held whole.
+// Scene files to scenes: the size guard, then the whole text read into memory
+// a megabyte at a time with progress reports, with the room after it that the
+// fast reader needs (scene_fast_read.h).
 #include <unistd.h>
 
 #include <algorithm>
 #include <fstream>
 #include <vector>
 
+#include "base/uninitialised_allocator.h"
+#include "scene/scene_fast_read.h"
 #include "scene/scene_io.h"
 #include "scene/scene_json.h"
 
@@ -17,31 +19,36 @@ namespace {
 
 constexpr std::uintmax_t kMB = std::uintmax_t(1) << 20;
 
-// Hands the parser the file 1 MB at a time and reports each chunk.
-class FileChunks : public detail::ChunkedText {
-  public:
-    FileChunks(std::ifstream& in, std::uintmax_t total, const LoadProgress& progress)
-        : in_(in), total_(total), progress_(progress), chunk_(kMB) {}
-    bool failed() const { return in_.bad(); }
-    std::uintmax_t size() const override { return total_; }
-
-    std::string_view next() override {
-        in_.read(chunk_.data(), std::streamsize(chunk_.size()));
-        const auto n = std::size_t(in_.gcount());
-        done_ += n;
-        if (n > 0 && progress_) progress_(done_, std::max(done_, total_));
-        return {chunk_.data(), n};
-    }
-
-  private:
-    std::ifstream& in_;
-    std::uintmax_t total_, done_ = 0;
-    const LoadProgress& progress_;
-    std::vector<char> chunk_;
-};
+// Every byte is written by the read before it is read: no zeroing of 150 MB.
+using Bytes = std::vector<char, UninitialisedAllocator<char>>;
 
 std::string megabytes(std::uintmax_t bytes) {
     return std::to_string((bytes + kMB - 1) / kMB) + " MB";
+}
+
+// The stream's text from here to its end, then fastReadPadding() spaces;
+// `expected` its length as far as known (0: unknown). Progress a megabyte at
+// a time. Nothing when the stream failed.
+std::optional<Bytes> readPadded(std::ifstream& in, std::uintmax_t expected, std::uintmax_t limit,
+                                const LoadProgress& progress, std::size_t& size) {
+    const std::size_t padding = detail::fastReadPadding();
+    Bytes text(std::size_t(expected) + padding);
+    size = 0;
+    for (;;) {
+        if (size + padding == text.size()) {  // full: at the end, or the size was not known
+            if (in.peek() == std::ifstream::traits_type::eof()) break;
+            text.resize(std::max(2 * size, std::size_t(kMB)) + padding);
+        }
+        const std::size_t want = std::min(std::size_t(kMB), text.size() - padding - size);
+        in.read(text.data() + size, std::streamsize(want));
+        const auto n = std::size_t(in.gcount());
+        size += n;
+        if (n > 0 && progress) progress(size, std::max<std::uintmax_t>(size, expected));
+        if (n < want || size > limit) break;
+    }
+    if (in.bad()) return std::nullopt;
+    std::fill_n(text.data() + size, padding, ' ');
+    return text;
 }
 
 }  // namespace
@@ -59,18 +66,19 @@ Scene loadScene(const fs::path& file, const LoadProgress& progress, const SceneF
     if (!in) throw SceneError(file.string(), "", "cannot open file");
     std::error_code noSize;
     const std::uintmax_t size = fs::file_size(file, noSize);
-    if (!noSize && size > limit.bytes)
-        throw SceneError(file.string(), "",
-                         "is " + megabytes(size) + "; scene files larger than " +
-                             megabytes(limit.bytes) + " (" + limit.why + ") are refused");
-    FileChunks chunks(in, noSize ? 0 : size, progress);
-    try {
-        Scene scene = detail::parseScene(chunks, file.string());
-        if (!chunks.failed()) return scene;
-    } catch (const SceneError&) {
-        if (!chunks.failed()) throw;
-    }
-    throw SceneError(file.string(), "", "cannot read file");
+    const auto refused = [&](const std::string& howLarge) {
+        return SceneError(file.string(), "",
+                          "is " + howLarge + "; scene files larger than " + megabytes(limit.bytes) +
+                              " (" + limit.why + ") are refused");
+    };
+    if (!noSize && size > limit.bytes) throw refused(megabytes(size));
+    std::size_t length = 0;
+    const std::optional<Bytes> text =
+        readPadded(in, noSize ? 0 : size, limit.bytes, progress, length);
+    if (!text) throw SceneError(file.string(), "", "cannot read file");
+    // A pipe, whose size is known only as it is read, or a file that grew.
+    if (length > limit.bytes) throw refused("more than " + megabytes(limit.bytes));
+    return detail::parseSceneText(text->data(), length, text->size(), file.string());
 }
 
 }  // namespace whitted

@@ -6,6 +6,7 @@
 // both precisions. A rule changed in one and not the other (an order, a
 // threshold, total internal reflection, self-intersection) changes what the
 // later rays hit, and the counts part.
+#include <filesystem>
 #include <string>
 #include <type_traits>
 
@@ -81,7 +82,7 @@ TEST(ScalarRayTree, TracesTheTracersRays_OnRandomFieldsOfMirrorAndGlassBalls) {
 
 TEST(ScalarRayTree, TracesTheTracersRays_OnTheShippedScenes) {
     for (const char* name : {"seed", "mirrors", "glass", "whitted-1980"})
-        expectSameRays(loadScene(std::string(WHITTED_SCENES_DIR) + "/" + name + ".json"), name);
+        expectSameRays(loadScene(std::filesystem::path(WHITTED_SCENES_DIR) / name += ".json"), name);
 }
 
 // The counts can tell: at depth 5 a field sends reflected and refracted rays.

@@ -4,14 +4,17 @@
 // A loaded scene must also survive the round trip the editor relies on: its
 // canonical text loads back to an equal scene and the same bytes. The same
 // bytes pasted from the clipboard (scene_fragment.h) must be refused naming
-// the clipboard, or leave the scene pasted into valid.
+// the clipboard, or leave the scene pasted into valid. Whatever the fast reader
+// reads, the full reader reads the same (scene_fast_read.h).
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <string>
 
+#include "scene/scene_fast_read.h"
 #include "scene/scene_fragment.h"
 #include "scene/scene_io.h"
+#include "scene/scene_json.h"
 
 namespace {
 
@@ -34,11 +37,27 @@ void pasteChecked(const std::string& text) {
     }
 }
 
+// The fast reader reads only what the full reader reads, and reads it the same.
+void fastReaderAgrees(const std::string& text) {
+    std::string padded = text;
+    padded.resize(text.size() + whitted::detail::fastReadPadding());
+    const std::optional<whitted::Scene> fast =
+        whitted::detail::readSceneFast(padded.data(), text.size(), padded.size());
+    if (!fast) return;
+    try {
+        const whitted::Scene full = whitted::detail::parseSceneFully(text.data(), text.size(), "f");
+        if (!(full == *fast)) std::abort();
+    } catch (const whitted::SceneError&) {
+        if (!whitted::validateScene(*fast)) std::abort();  // refused a scene the fast one read
+    }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
     pasteChecked(text);
+    fastReaderAgrees(text);
     whitted::Scene scene;
     try {
         scene = whitted::parseScene(text, "fuzz.json");

@@ -33,9 +33,10 @@ class SceneError : public std::runtime_error {
 Scene parseScene(const std::string& text, const std::string& sourceName);
 
 // The largest scene file loadScene() reads, and why, for the refusal's message.
-// A loaded scene takes about as much memory as its file (a 1M-sphere file of
-// 144 MB peaks at 150 MB while loading), so a quarter of the machine's memory opens
-// any scene the machine can work with, while a mistaken multi-gigabyte file is
+// A loaded scene takes about as much memory as its file, and loading holds the
+// file's text and the parser's index of it besides (a 1M-sphere file of 144 MB
+// peaks at 369 MB while loading), so a quarter of the machine's memory opens any
+// scene the machine can work with, while a mistaken multi-gigabyte file is
 // refused before it is read. Never less than kMinSceneFileLimit.
 struct SceneFileLimit {
     std::uintmax_t bytes;
@@ -48,8 +49,9 @@ SceneFileLimit sceneFileLimit();
 // and its size (called once a MB; after a whole read, last with done == total).
 using LoadProgress = std::function<void(std::uintmax_t done, std::uintmax_t total)>;
 
-// Reads and parses a file as it goes, never holding its whole text. Throws
-// SceneError (unreadable files and files over the limit, refused unread, included).
+// Reads the file whole, then parses it (scene_fast_read.h). Throws SceneError
+// (unreadable files and files over the limit included: refused unread, or a
+// pipe once it passes the limit).
 Scene loadScene(const std::filesystem::path& file, const LoadProgress& progress = {},
                 const SceneFileLimit& limit = sceneFileLimit());
 

@@ -8,7 +8,10 @@
 #   share/mime/packages/     the scene files' MIME type
 #   share/icons/hicolor/     the icon, scalable and as PNGs
 #   share/whitted/scenes/    the example scenes
-# A package must run on any x86-64 machine: configure it with -DWHITTED_NATIVE=OFF.
+#   share/man/man1/          the programs' manual pages (cmake/man_pages.cmake)
+#   share/doc/whitted/       copyright and changelog, as Debian wants them
+# A package must run on any x86-64 machine: cpack refuses a build configured
+# with WHITTED_NATIVE=ON (configure it with -DWHITTED_NATIVE=OFF).
 include(GNUInstallDirs)
 
 set(WHITTED_APP_ID io.github.whitted.Whitted)
@@ -46,15 +49,44 @@ foreach(size IN LISTS WHITTED_ICON_SIZES)
 endforeach()
 add_custom_target(whitted-icons ALL DEPENDS ${icon_pngs})
 
+if(WHITTED_MAN_PAGES)
+  include(${CMAKE_CURRENT_LIST_DIR}/man_pages.cmake)
+endif()
+
+# Debian's copyright file and, for a native package, changelog.gz.
+find_program(GZIP gzip REQUIRED)
+set(changelog ${CMAKE_BINARY_DIR}/doc/changelog.gz)
+add_custom_command(OUTPUT ${changelog}
+  COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_BINARY_DIR}/doc
+  COMMAND ${GZIP} -9nc ${WHITTED_RESOURCES}/debian/changelog > ${changelog}
+  DEPENDS ${WHITTED_RESOURCES}/debian/changelog
+  COMMENT "changelog.gz")
+add_custom_target(whitted-changelog ALL DEPENDS ${changelog})
+install(FILES ${WHITTED_RESOURCES}/debian/copyright ${changelog}
+        DESTINATION ${CMAKE_INSTALL_DOCDIR})
+
 set(CPACK_PACKAGE_NAME whitted)
 set(CPACK_PACKAGE_VENDOR "The Whitted developers")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "Scene editor for a classic Whitted ray tracer")
+# One string, its lines under 80 columns: cpack indents each as Debian's
+# Description wants (a CMake list's items would be joined by semicolons).
 set(CPACK_PACKAGE_DESCRIPTION
-    "Place spheres, lights and materials and see every edit rendered again at once, with "
-    "shadows, reflection and refraction in float or double precision. Includes the "
-    "command-line renderer whitted-render.")
+    "Place spheres, lights and materials with the mouse and see every edit\n"
+    "rendered again at once, with shadows, reflection and refraction, in float\n"
+    "or double precision.\n"
+    "\n"
+    "Also the command-line renderer whitted-render, rendering on a Slurm\n"
+    "cluster with whitted-farm, and the Python module whitted.")
+string(CONCAT CPACK_PACKAGE_DESCRIPTION ${CPACK_PACKAGE_DESCRIPTION})
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
-set(CPACK_PACKAGE_CONTACT "The Whitted developers <whitted@localhost>")
+set(CPACK_PACKAGE_CONTACT
+    "Seed d7443446 maintainers <maintainers@users.noreply.h-seed-d7443446.example>")
+set(CPACK_STRIP_FILES ON)
+# cpack reads these from CPackConfig.cmake: a native build is refused
+# (cmake/cpack_checks.cmake) unless CPACK_WHITTED_ALLOW_NATIVE is set, as the
+# package's own tests do to check its contents.
+set(CPACK_WHITTED_NATIVE ${WHITTED_NATIVE})
+set(CPACK_PROJECT_CONFIG_FILE ${CMAKE_CURRENT_LIST_DIR}/cpack_checks.cmake)
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION graphics)

@@ -18,9 +18,11 @@ packages=(
   xdotool
   # SVG icons at run time (Qt's SVG plugins), the icon's PNG sizes at build time
   libqt6svg6 librsvg2-bin
+  # the programs' manual pages, made at build time from their --help
+  help2man
   # the packaging tests: desktop file, AppStream and MIME checks, the .deb's
-  # Depends from dpkg-shlibdeps
-  desktop-file-utils appstream shared-mime-info libxml2-utils dpkg-dev
+  # Depends from dpkg-shlibdeps, Debian's checks of the .deb
+  desktop-file-utils appstream shared-mime-info libxml2-utils dpkg-dev lintian
   # the scene loader's fuzzer (tests/fuzz): clang with libFuzzer's runtime
   clang libclang-rt-14-dev
   # the render farm's tests: a single-node Slurm (scripts/local-slurm.sh)

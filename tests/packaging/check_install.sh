@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the build tree into a temporary prefix (`cmake --install`) and checks
-# what a desktop needs is where the FHS puts it, that the installed renderer
+# what a desktop needs is where the FHS puts it (and the manual pages, copyright
+# and changelog), that the installed renderer
 # renders the installed seed scene, and that the desktop file starts an
 # installed program. Usage: check_install.sh BUILD_DIR
 set -euo pipefail
@@ -20,7 +21,10 @@ expect() {
 }
 for program in whitted whitted-render whitted-farm whitted-numerics whitted-tradeoff whitted-field; do
   expect "bin/$program"
+  expect "share/man/man1/$program.1.gz"
 done
+expect share/doc/whitted/copyright
+expect share/doc/whitted/changelog.gz
 expect "share/applications/$app.desktop"
 expect "share/metainfo/$app.metainfo.xml"
 expect "share/mime/packages/$app.xml"
@@ -33,6 +37,13 @@ expect share/whitted/scenes/glass.json
 expect share/whitted/scenes/field.json
 expect share/whitted/scenes/extremes/README.md
 ((missing == 0)) || exit 1
+
+# A manual page reads as one: its name line, its options, its examples.
+page=$(zcat "$prefix/share/man/man1/whitted-render.1.gz")
+for part in '^whitted-render \\- render a Whitted scene file to an image' '^\.SH OPTIONS' \
+  '^\.SH EXAMPLES' '^\\fB\\-\\-quality\\fR'; do
+  grep -Eq "$part" <<<"$page" || { echo "whitted-render(1) lacks $part" >&2; exit 1; }
+done
 
 # Nothing of the build's own: no tests, benchmarks or libraries.
 extra=$(find "$prefix/bin" -type f ! -name 'whitted*' -printf '%f\n')

@@ -103,9 +103,7 @@ void writePlanFile(const std::filesystem::path& file, const QualityPlan& plan, c
     j["precision"] = std::string(precisionName(scene.render.precision));
     j["scene"] = sceneContentDigest(scene);
     j.update(planJson(plan));
-    const std::string text = j.dump(2) + "\n";
-    replaceFileAtomically(file,
-                          [&](const std::filesystem::path& temp) { writeAllBytes(temp, text); });
+    replaceFileWithText(file, j.dump(2) + "\n");
 }
 
 QualityPlan readPlanFile(const std::filesystem::path& file, const Scene& scene,

@@ -62,15 +62,6 @@ std::string regenerateCommand(const Options& o) {
     return "`" + cmd + "` in the repository root";
 }
 
-void writeText(const fs::path& file, const std::string& text) {
-    replaceFileAtomically(file, [&](const fs::path& temp) {
-        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        out << text;
-        out.close();
-        if (!out) throw std::runtime_error(file.string() + ": cannot write file");
-    });
-}
-
 // The pictures of an earlier run would otherwise linger once the ranges move.
 void removeOldPictures(const fs::path& dir) {
     if (!fs::is_directory(dir)) return;
@@ -193,8 +184,8 @@ int run(const Options& o) {
     context.referenceFile = std::string(kImageDir) + "/reference.png";
     context.csvFile = "numerics.csv";
     const fs::path report = outDir / "numerics.md";
-    writeText(outDir / context.csvFile, csvReport(results));
-    writeText(report, markdownReport(context, results, ranges, pictures));
+    replaceFileWithText(outDir / context.csvFile, csvReport(results));
+    replaceFileWithText(report, markdownReport(context, results, ranges, pictures));
     if (!o.quiet) printSummary(ranges, report);
     return kExitOk;
 }

@@ -142,15 +142,6 @@ class ProgressBar {
     const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-void writeText(const fs::path& file, const std::string& text) {
-    replaceFileAtomically(file, [&](const fs::path& temp) {
-        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        out << text;
-        out.close();
-        if (!out) throw std::runtime_error("cannot write file");
-    });
-}
-
 // The region flag as pixels of the image, checked against its size.
 std::optional<PixelRect> regionOf(const Options& o, const RenderSettings& r) {
     if (o.region.empty()) return std::nullopt;
@@ -213,10 +204,10 @@ int renderFrame(Scene& scene, const Options& o, const std::optional<PixelRect>& 
     if (!o.stats.empty()) {
         const fs::path stats = frameFile(o.stats, frame);
         try {
-            writeText(stats,
-                      renderStats(scene.render, result, plan, options.whitted1980).dump(2) + "\n");
-        } catch (const std::exception& e) {
-            std::cerr << "whitted-render: " << stats.string() << ": " << e.what() << "\n";
+            replaceFileWithText(
+                stats, renderStats(scene.render, result, plan, options.whitted1980).dump(2) + "\n");
+        } catch (const std::exception& e) {  // "<stats file>: <reason>"
+            std::cerr << "whitted-render: " << e.what() << "\n";
             std::error_code ignored;
             fs::remove(output, ignored);  // a failed run leaves no output behind
             return kExitFailure;

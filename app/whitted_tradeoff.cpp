@@ -77,10 +77,6 @@ std::vector<int> parseIntList(const std::string& text) {
     return out;
 }
 
-void writeText(const fs::path& file, const std::string& text) {
-    replaceFileAtomically(file, [&](const fs::path& temp) { writeAllBytes(temp, text); });
-}
-
 void writePng(const QImage& image, const fs::path& file) {
     if (!image.save(QString::fromStdString(file.string()), "PNG"))
         throw std::runtime_error(file.string() + ": cannot write image");
@@ -214,14 +210,14 @@ int writeReport(const std::string& output, const std::vector<std::string>& dirs,
         tradeoff::SceneSummary s = readSummary(d);
         // Each directory's own summary follows the report's wording too.
         s.directory = ".";
-        writeText(fs::path(d) / "summary.md", tradeoff::sceneSection(s));
+        replaceFileWithText(fs::path(d) / "summary.md", tradeoff::sceneSection(s));
         s.directory = fs::relative(fs::absolute(d), base).generic_string();
         scenes.push_back(std::move(s));
     }
     const std::string quality =
         (qualityCsv.empty() ? "" : tradeoff::qualitySection(qualityRows, qualityCsv)) +
         (samplerCsv.empty() ? "" : samplerSectionWithPlots(samplerRows, samplerCsv, base));
-    writeText(output, tradeoff::report(scenes, command, quality));
+    replaceFileWithText(output, tradeoff::report(scenes, command, quality));
     for (const tradeoff::PresetChoice& p : tradeoff::choosePresets(scenes))
         std::cout << p.name << ": " << p.samplesPerPixel << " spp, depth " << p.maxDepth << ", "
                   << precisionName(p.precision) << "\n";
@@ -349,10 +345,10 @@ void writeResults(const fs::path& dir, tradeoff::SceneSummary& summary, const Re
     const ImageMetadata meta = makeImageMetadata(ref.scene.render, ref.seconds, "whitted-tradeoff");
     writeImage(ref.image, dir / "reference.png", meta);
     writeImage(normalised(truncation, summary.truncation), dir / "truncation.png", meta);
-    writeText(dir / "points.csv", tradeoff::pointsCsv(summary.points));
-    writeText(dir / "progressive.csv", tradeoff::progressiveCsv(summary.curve));
-    writeText(dir / "table.md",
-              "# " + summary.name + ": every point\n\n" + tradeoff::pointsTable(summary.points));
+    replaceFileWithText(dir / "points.csv", tradeoff::pointsCsv(summary.points));
+    replaceFileWithText(dir / "progressive.csv", tradeoff::progressiveCsv(summary.curve));
+    replaceFileWithText(dir / "table.md", "# " + summary.name + ": every point\n\n" +
+                                              tradeoff::pointsTable(summary.points));
     const QString name = QString::fromStdString(summary.name);
     writePng(ui::renderPlot(tradeoff::tradeoffPlot(name, summary.points), QSize(900, 600)),
              dir / "plot.png");
@@ -360,8 +356,8 @@ void writeResults(const fs::path& dir, tradeoff::SceneSummary& summary, const Re
         writePng(ui::renderPlot(tradeoff::progressivePlot(name, summary.curve), QSize(700, 450)),
                  dir / "progressive.png");
     summary.directory = ".";
-    writeText(dir / "summary.md", tradeoff::sceneSection(summary));
-    writeText(dir / "summary.json", summaryJson(summary).dump(2) + "\n");
+    replaceFileWithText(dir / "summary.md", tradeoff::sceneSection(summary));
+    replaceFileWithText(dir / "summary.json", summaryJson(summary).dump(2) + "\n");
 }
 
 // Measures one scene: the reference, the grid, the progressive curve; then

@@ -30,10 +30,6 @@ mapfile -d '' -t args < "$args_file"
 exec "${args[@]}"
 )";
 
-void writeFile(const fs::path& file, const std::string& bytes) {
-    replaceFileAtomically(file, [&](const fs::path& temp) { writeAllBytes(temp, bytes); });
-}
-
 std::string nulSeparated(const std::vector<std::string>& argv) {
     std::string bytes;
     for (const std::string& a : argv) bytes.append(a).push_back('\0');
@@ -60,7 +56,7 @@ std::string sbatch(const SubmitOptions& o, std::vector<std::string> flags,
 
 Jobs submit(const Plan& plan, const SubmitOptions& o) {
     fs::create_directories(o.work);
-    writeFile(o.work / "task.sh", kTaskScript);
+    replaceFileWithText(o.work / "task.sh", kTaskScript);
     fs::permissions(o.work / "task.sh", fs::perms::owner_all, fs::perm_options::add);
     Jobs jobs;
     // Waits for `job`, and is cancelled if it fails rather than pending for ever.
@@ -70,14 +66,14 @@ Jobs submit(const Plan& plan, const SubmitOptions& o) {
         return flags;
     };
     if (plan.prepare && !fs::exists(plan.prepare->output)) {
-        writeFile(o.work / "task-prepare.args", nulSeparated(plan.prepare->argv));
+        replaceFileWithText(o.work / "task-prepare.args", nulSeparated(plan.prepare->argv));
         jobs.prepare = sbatch(o, {"--job-name=whitted-prepare", "--output=prepare.log"}, "prepare");
     }
     std::string list;
     for (std::size_t i = 0; i < plan.tasks.size(); ++i) {
         if (fs::exists(plan.tasks[i].output)) continue;  // written atomically: done
-        writeFile(o.work / ("task-" + std::to_string(i) + ".args"),
-                  nulSeparated(plan.tasks[i].argv));
+        replaceFileWithText(o.work / ("task-" + std::to_string(i) + ".args"),
+                            nulSeparated(plan.tasks[i].argv));
         jobs.indices.push_back(static_cast<int>(i));
         // Appended, not "," + ...: GCC 12 warns falsely there (-Wrestrict, bug 105329).
         if (!list.empty()) list.push_back(',');
@@ -90,7 +86,7 @@ Jobs submit(const Plan& plan, const SubmitOptions& o) {
                             jobs.prepare));
     }
     if (plan.merge) {
-        writeFile(o.work / "task-merge.args", nulSeparated(plan.merge->argv));
+        replaceFileWithText(o.work / "task-merge.args", nulSeparated(plan.merge->argv));
         jobs.merge = sbatch(
             o, after({"--job-name=whitted-merge", "--output=merge.log"}, jobs.tasks), "merge");
     }

@@ -83,4 +83,12 @@ void replaceFileAtomically(const fs::path& target,
     }
 }
 
+void replaceFileWithText(const fs::path& target, std::string_view text) {
+    try {
+        replaceFileAtomically(target, [&](const fs::path& temp) { writeAllBytes(temp, text); });
+    } catch (const std::system_error& e) {
+        throw std::system_error(e.code(), target.string());
+    }
+}
+
 }  // namespace whitted

@@ -21,4 +21,8 @@ void writeAllBytes(const std::filesystem::path& file, std::string_view bytes);
 void replaceFileAtomically(const std::filesystem::path& target,
                            const std::function<void(const std::filesystem::path& temp)>& write);
 
+// `target` replaced at once by `text` (the two above). Throws std::system_error
+// whose what() names the target, not the temporary: "<target>: <reason>".
+void replaceFileWithText(const std::filesystem::path& target, std::string_view text);
+
 }  // namespace whitted

@@ -74,9 +74,8 @@ std::optional<SceneProblem> checkAtLeast(double v, double lo, const std::string&
 template <typename T>
 std::optional<SceneProblem> checkNames(const std::vector<T>& items, const char* list) {
     // Paths built only for a problem: the editor validates every edit.
-    RepeatFinder names(items.size(), [&](std::size_t i) -> std::string_view {
-        return items[i].name;
-    });
+    RepeatFinder names(items.size(),
+                       [&](std::size_t i) -> std::string_view { return items[i].name; });
     for (size_t i = 0; i < items.size(); ++i) {
         if (items[i].name.empty())
             return SceneProblem{indexed(list, i) + ".name", "must not be empty"};
@@ -336,12 +335,7 @@ std::string sceneContentDigest(const Scene& scene) {
 }
 
 void saveScene(const Scene& scene, const fs::path& file) {
-    const std::string text = sceneToJson(scene);
-    try {
-        replaceFileAtomically(file, [&](const fs::path& temp) { writeAllBytes(temp, text); });
-    } catch (const std::system_error& e) {
-        throw std::runtime_error(file.string() + ": " + e.code().message());
-    }
+    replaceFileWithText(file, sceneToJson(scene));
 }
 
 }  // namespace whitted

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "image/image_compare.h"
+#include "image/srgb.h"
 
 namespace whitted {
 
@@ -24,11 +25,6 @@ constexpr std::array<glm::vec3, 9> kInferno{{
     {0.976108f, 0.789974f, 0.196018f},
     {0.988362f, 0.998364f, 0.644924f},
 }};
-
-// The inverse of the sRGB curve (srgb.h has it only for 8-bit codes).
-float srgbDecode(float encoded) {
-    return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
-}
 
 }  // namespace
 

@@ -151,8 +151,7 @@ void srgbEncode8(const float* linear, std::size_t count, std::uint8_t* codes) {
 }
 
 float srgbDecode8(std::uint8_t code) {
-    const float c = code / 255.0f;
-    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+    return srgbDecode(code / 255.0f);
 }
 
 }  // namespace whitted

@@ -2,6 +2,7 @@
 // both show the same pixels (SPEC §5).
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
@@ -22,6 +23,14 @@ void srgbEncodeFast(const float* linear, std::size_t count, float* encoded);
 std::uint8_t srgbEncode8(float linear);
 // The same for `count` values at once, into `codes`.
 void srgbEncode8(const float* linear, std::size_t count, std::uint8_t* codes);
+
+// sRGB-encoded value in [0,1] back to linear: in float for pixels, in double
+// for a value the user picks (the colour dialog's).
+template <typename T>
+T srgbDecode(T encoded) {
+    return encoded <= T(0.04045) ? encoded / T(12.92)
+                                 : std::pow((encoded + T(0.055)) / T(1.055), T(2.4));
+}
 
 // 8-bit sRGB code back to linear.
 float srgbDecode8(std::uint8_t code);

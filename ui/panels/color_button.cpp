@@ -8,16 +8,12 @@
 #include <QPainter>
 #include <QPixmap>
 
+#include "image/srgb.h"
 #include "viewport/image_convert.h"
 
 namespace whitted::ui {
 
 namespace {
-
-// The inverse of whitted::srgbEncode, for a dialog value in [0,1].
-double srgbDecode(double encoded) {
-    return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
-}
 
 QString shortNumber(double v) {
     return QString::number(v, 'g', 3);
@@ -54,7 +50,7 @@ void ColorButton::pick() {
     // A channel the user left alone keeps its exact value: the dialog's 8 bits
     // would otherwise nudge it (and clamp values above 1) on every pick.
     auto channel = [](int before, int after, double original, float afterF) {
-        return before == after ? original : srgbDecode(afterF);
+        return before == after ? original : srgbDecode(double(afterF));
     };
     edit(Vec3{channel(shown.red(), picked.red(), color_.x, picked.redF()),
               channel(shown.green(), picked.green(), color_.y, picked.greenF()),

@@ -24,6 +24,7 @@
 
 #include "analysis/quality_target.h"
 #include "base/atomic_file.h"
+#include "base/elapsed.h"
 #include "camera/camera_control.h"
 #include "cli_input.h"
 #include "cli_main.h"
@@ -122,9 +123,7 @@ class ProgressBar {
     }
 
   private:
-    double seconds() const {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    }
+    double seconds() const { return secondsSince(start_); }
 
     void draw(double fraction, double elapsed) {
         constexpr int kWidth = 40;

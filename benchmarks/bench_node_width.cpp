@@ -51,6 +51,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "base/elapsed.h"
 #include "field_layouts.h"
 #include "tracer/bvh.h"
 #include "tracer/bvh_traverse.h"
@@ -639,10 +640,6 @@ Options parseOptions(int argc, char** argv) {
         std::exit(app.exit(e) == 0 ? 0 : 2);  // help: 0; a bad flag: 2, as before
     }
     return o;
-}
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 constexpr int kTrees = 4;

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <string>
 
+#include "base/elapsed.h"
+
 namespace whitted::tradeoff {
 
 double pointWork(const TradeoffSettings& settings) {
@@ -38,8 +40,7 @@ Progress::Progress(const TradeoffGrid& grid, bool tty)
 void Progress::point(const TradeoffProgress& p) {
     const TradeoffPoint& last = *p.last;
     doneWork_ += pointWork(last.settings);
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double elapsed = secondsSince(start_);
     // Points differ in cost by a factor of a thousand: the ETA extrapolates by
     // work done, not by points done.
     const double eta = doneWork_ > 0 ? elapsed * (totalWork_ - doneWork_) / doneWork_ : 0.0;

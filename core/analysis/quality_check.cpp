@@ -4,15 +4,9 @@
 #include <chrono>
 #include <utility>
 
+#include "base/elapsed.h"
+
 namespace whitted {
-
-namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
 
 Image convergedReference(Scene scene, int samples, int depth,
                          const std::vector<PixelRect>& regions) {

@@ -9,6 +9,7 @@
 #include "analysis/quality_target.h"
 #include "analysis/speed_probe.h"
 #include "analysis/tradeoff.h"
+#include "base/elapsed.h"
 #include "tracer/renderer.h"
 
 namespace whitted {
@@ -121,8 +122,7 @@ RenderPrediction predictRender(const Scene& scene, const StopPredicate& stop) {
     p.seconds = predictSeconds(probeSpeed(scene, kSpeedProbePixels, stop), scene, p.rays);
     if (stopped()) return p;
     p.probeRays = plan.probeRays + noise.rays;
-    p.probeSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    p.probeSeconds = secondsSince(start);
     p.predicted = true;
     return p;
 }

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "analysis/speed_probe.h"
+#include "base/elapsed.h"
 #include "tracer/adaptive_sampling.h"
 
 namespace whitted {
@@ -28,10 +29,6 @@ constexpr const char* kTooSmall = "a picture this small is rendered as fast as i
 
 bool tooSmallToPredict(const Scene& scene) {
     return double(scene.render.width) * scene.render.height <= kSpeedProbePixels;
-}
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 double pixelsOf(const std::vector<PixelRect>& rects) {

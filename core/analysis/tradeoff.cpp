@@ -7,6 +7,7 @@
 #include <mutex>
 
 #include "analysis/depth_truncation.h"
+#include "base/elapsed.h"
 
 namespace whitted {
 
@@ -128,8 +129,7 @@ std::vector<ProgressiveSample> progressiveCurve(const Scene& scene, const Image&
         std::lock_guard<std::mutex> lock(mutex);
         copyTile(u, shown);
         if (++tilesSeen[u.progress.pass] == u.progress.tilesInPass) {
-            const double seconds =
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            const double seconds = secondsSince(start);
             snapshots.push_back({u.progress.pass, u.progress.samples, seconds, shown});
         }
     };

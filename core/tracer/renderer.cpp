@@ -12,6 +12,7 @@
 #include <string>
 #include <thread>
 
+#include "base/elapsed.h"
 #include "base/parallel_for.h"
 #include "base/thread_cpu_time.h"
 #include "scene/scene_io.h"
@@ -606,8 +607,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options, const Tile
     RenderResult result = scene.render.precision == Precision::Double
                               ? renderWith<double>(scene, options, onTile, shouldStop)
                               : renderWith<float>(scene, options, onTile, shouldStop);
-    result.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.seconds = secondsSince(start);
     return result;
 }
 

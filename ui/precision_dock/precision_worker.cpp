@@ -3,6 +3,7 @@
 #include <chrono>
 #include <utility>
 
+#include "base/elapsed.h"
 #include "base/thread_priority.h"
 #include "viewport/image_convert.h"
 
@@ -36,8 +37,7 @@ void PrecisionWorker::compare(const Request& request, quint64 generation) {
     result.generation = generation;
     result.heatMap = toQImage(result.comparison.heatMap);
     result.comparison.heatMap = Image();
-    result.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.seconds = secondsSince(start);
     emit comparisonReady(result);
 }
 

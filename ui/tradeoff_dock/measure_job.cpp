@@ -3,6 +3,8 @@
 #include <chrono>
 #include <exception>
 
+#include "base/elapsed.h"
+
 namespace whitted::ui {
 
 TradeoffGrid editorMeasureGrid() {
@@ -72,8 +74,7 @@ void MeasureJob::run() {
     }
     markParetoFront(results.points);
     results.cancelled = cancelled_.load();
-    results.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    results.seconds = secondsSince(start);
     emit finished(results, error);
 }
 

@@ -49,12 +49,12 @@ foreach(size IN LISTS WHITTED_ICON_SIZES)
 endforeach()
 add_custom_target(whitted-icons ALL DEPENDS ${icon_pngs})
 
+find_program(GZIP gzip REQUIRED)
 if(WHITTED_MAN_PAGES)
   include(${CMAKE_CURRENT_LIST_DIR}/man_pages.cmake)
 endif()
 
 # Debian's copyright file and, for a native package, changelog.gz.
-find_program(GZIP gzip REQUIRED)
 set(changelog ${CMAKE_BINARY_DIR}/doc/changelog.gz)
 add_custom_command(OUTPUT ${changelog}
   COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_BINARY_DIR}/doc

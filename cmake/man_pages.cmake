@@ -5,7 +5,6 @@
 # so the sanitizer builds, which install nothing, leave them out
 # (WHITTED_MAN_PAGES, CMakePresets.json).
 find_program(HELP2MAN help2man REQUIRED)
-find_program(GZIP gzip REQUIRED)
 
 # program -> the line under NAME.
 set(whitted_man_whitted "scene editor for a classic Whitted ray tracer")

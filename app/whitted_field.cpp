@@ -38,11 +38,9 @@ int main(int argc, char** argv) {
         ->required()
         ->check(CLI::Range(0, 100'000'000));
     app.add_option("-o,--output", output, "Scene file to write (JSON)")->required();
-    std::vector<std::string> names;
-    for (const whitted::FieldLayout& l : whitted::fieldLayouts()) names.push_back(l.name);
     app.add_option("--layout", layout, layoutHelp())
         ->capture_default_str()
-        ->check(CLI::IsMember(names));
+        ->check(CLI::IsMember(whitted::fieldLayoutNames()));
     app.add_option("--seed", seed, "Random seed; the same flags give the same file")
         ->capture_default_str();
     auto* halfWidthFlag =

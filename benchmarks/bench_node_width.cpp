@@ -630,10 +630,8 @@ Options parseOptions(int argc, char** argv) {
     app.add_option("--random", o.random, "Random rays");
     app.add_option("--reps", o.reps, "Repetitions")->check(CLI::PositiveNumber);
     app.add_flag("!--no-counts", o.counts, "Skip the counting traversals");
-    std::vector<std::string> names;
-    for (const FieldLayout& l : fieldLayouts()) names.push_back(l.name);
     app.add_option("--layout", o.layout, "Field layout (whitted-field --layout)")
-        ->check(CLI::IsMember(names));
+        ->check(CLI::IsMember(fieldLayoutNames()));
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -71,11 +71,9 @@ Options parseOptions(int argc, char** argv) {
     app.add_flag("--bvh", bvh, "Ours always with the BVH, not its own choice");
     app.add_option("--csv", o.csv, "Write the table as CSV");
     app.add_option("--images", o.images, "Write our render and Embree's into this folder");
-    std::vector<std::string> names;
-    for (const FieldLayout& l : fieldLayouts()) names.push_back(l.name);
     app.add_option("--layouts", o.layouts, "Field layouts, e.g. field,clustered")
         ->delimiter(',')
-        ->check(CLI::IsMember(names));
+        ->check(CLI::IsMember(fieldLayoutNames()));
     // The older form: WIDTH HEIGHT [MAX_BRUTE_N [N,N,...]], always the BVH.
     std::vector<std::string> older;
     app.add_option("older", older, "WIDTH HEIGHT [MAX_BRUTE_N [N,N,...]] (older form)")

@@ -33,6 +33,12 @@ const std::vector<FieldLayout>& fieldLayouts() {
     return layouts;
 }
 
+std::vector<std::string> fieldLayoutNames() {
+    std::vector<std::string> names;
+    for (const FieldLayout& l : fieldLayouts()) names.push_back(l.name);
+    return names;
+}
+
 std::optional<FieldOptions> fieldLayout(std::string_view name, int count) {
     FieldOptions o;
     if (name == "uniform") {

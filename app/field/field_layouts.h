@@ -21,6 +21,9 @@ struct FieldLayout {
 // "glass", "mirrors", "inside", "above".
 const std::vector<FieldLayout>& fieldLayouts();
 
+// Their names, in that order: what --layout accepts.
+std::vector<std::string> fieldLayoutNames();
+
 // The layout's options for `count` balls; nullopt for an unknown name.
 std::optional<FieldOptions> fieldLayout(std::string_view name, int count);
 

@@ -29,6 +29,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "base/elapsed.h"
 #include "bench_args.h"
 #include "field_layouts.h"
 #include "image/image_error.h"
@@ -95,11 +96,6 @@ Options parseOptions(int argc, char** argv) {
     return o;
 }
 
-double msSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-        .count();
-}
-
 struct Run {
     double ms = -1;  // -1: not run
     double mrays = 0;
@@ -144,7 +140,7 @@ Tree measureTree(const Scene& scene) {
     for (int i = 0; i < 3; ++i) {
         const auto start = std::chrono::steady_clock::now();
         const SphereBvh<float> bvh = buildSphereBvh<float>(centres, radii);
-        tree.buildMs = std::min(tree.buildMs, msSince(start));
+        tree.buildMs = std::min(tree.buildMs, 1e3 * secondsSince(start));
         tree.bytesPerSphere = bytesPerSphere(bvh, scene.spheres.size());
     }
     tree.doubleBytesPerSphere =

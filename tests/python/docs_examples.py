@@ -1,4 +1,4 @@
-"""The Python examples of docs/python.md: each run in a folder, from which
+"""The Python examples of docs/guide/scripting.md: each run in a folder, from which
 the project's scenes/ is reachable, so that the pictures they write land
 there. `python3 tests/python/docs_examples.py FOLDER` writes them to FOLDER
 (docs/images/python for the docs); tests/python/test_docs.py runs them."""
@@ -14,7 +14,7 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 
 def examples():
-    text = (ROOT / "docs" / "python.md").read_text()
+    text = (ROOT / "docs" / "guide" / "scripting.md").read_text()
     return re.findall(r"```python\n(.*?)```", text, re.S)
 
 
@@ -32,7 +32,7 @@ def run_all(folder):
         for code in examples():
             out = io.StringIO()
             with contextlib.redirect_stdout(out):
-                exec(compile(code, "docs/python.md", "exec"), {"__name__": "__example__"})
+                exec(compile(code, "docs/guide/scripting.md", "exec"), {"__name__": "__example__"})
             printed.append(out.getvalue())
     finally:
         os.chdir(here)

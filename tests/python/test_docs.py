@@ -1,4 +1,4 @@
-"""The examples of docs/python.md run, write their pictures, and print what
+"""The examples of docs/guide/scripting.md run, write their pictures, and print what
 the page says they print."""
 
 import numpy
@@ -14,7 +14,7 @@ def test_the_three_examples_run_and_write_their_pictures(tmp_path):
                         ("float-1e0.png", (120, 160, 3)), ("float-1e19.png", (120, 160, 3))]:
         assert whitted.read_image(tmp_path / name).shape == shape, name
     assert "estimated" in printed[1]
-    page = (ROOT / "docs" / "python.md").read_text()
+    page = (ROOT / "docs" / "guide" / "scripting.md").read_text()
     for line in printed[2].splitlines():
         assert f"`{line}`" in page, line
     # The sweep's first frame is matte, its last a mirror: they differ.

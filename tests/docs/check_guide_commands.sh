@@ -10,6 +10,8 @@
 # the repository's scenes/ and to BUILD_DIR (as build/), with BUILD_DIR/bin first
 # on PATH and PYTHONPATH=BUILD_DIR/python, so a guide may write
 # `whitted-render scenes/seed.json ...` or `build/bin/whitted-render ...`.
+# `python3` is the one the module was built for: $WHITTED_PYTHON, else
+# Debian's /usr/bin/python3 (another python3 found first on PATH may lack NumPy).
 # A `console` block's lines that start with "$ " are the commands; its other
 # lines are output and are not checked.
 #
@@ -37,6 +39,8 @@ fi
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+mkdir "$work/python-bin"
+ln -s "${WHITTED_PYTHON:-/usr/bin/python3}" "$work/python-bin/python3"
 
 # Splits the pages into one file a block: NNN.sh, and NNN.where ("page:line").
 python3 - "$work" "$root" "$@" <<'PY'
@@ -81,7 +85,7 @@ for block in "$work"/*.sh; do
   dir=$(mktemp -d "$work/run.XXXXXX")
   ln -s "$root/scenes" "$dir/scenes"
   ln -s "$build" "$dir/build"
-  if ! output=$(cd "$dir" && PATH="$build/bin:$PATH" PYTHONPATH="$build/python" \
+  if ! output=$(cd "$dir" && PATH="$build/bin:$work/python-bin:$PATH" PYTHONPATH="$build/python" \
                 QT_QPA_PLATFORM=offscreen timeout 60 bash -e -o pipefail "$block" 2>&1); then
     failed=$((failed + 1))
     echo "FAILED: the block at $where"

@@ -25,7 +25,7 @@ namespace {
 // picture that most are sampled well past what they need; at the 640x480
 // the shipped scenes are saved at, 5 of 6 untuned fields' Previews came out
 // 65 to 70 codes off (64 allowed). Under 0.6 all 5 whose plan promised the
-// target met it, for about a fifth more time (docs/quality.md, "At the
+// target met it, for about a fifth more time (docs/design/quality-planning.md, "At the
 // size the scenes are saved at").
 constexpr double kLargestMargin = 0.6;
 // The probe's longest side: enough pixels to see what deeper rays add (a
@@ -67,7 +67,7 @@ constexpr int kLookAhead = 3;
 constexpr int kMostPicturesAhead = 8;
 // Below this PSNR (Draft's 20 dB) the depth search's first probe render
 // reaches 2 * kLookAhead - 1 levels, not kLookAhead: such a target's depth
-// cut was 1 to 3 on every scene measured (docs/quality.md, "One sample where
+// cut was 1 to 3 on every scene measured (docs/design/quality-planning.md, "One sample where
 // it does"), and depth 1 or 2 took two renders, to 3 and then to 7 (for 1
 // against 4); one render to 5 measures depths 0 to 2 against three deeper.
 // Stricter targets cut deeper, where a longer first render would only add
@@ -82,7 +82,7 @@ constexpr double kLongFirstProbeBelowDb = 30.0;
 // 640x480, 0 to 29% more rays from depth 16 to 48, where pixels still
 // changed by 35 to 160 codes. Capped at 16, as when every ray was followed
 // and each level cost more than the last, 4 of the 12 Previews and Finals
-// of those fields could not meet their target (docs/quality.md, "As deep as
+// of those fields could not meet their target (docs/design/quality-planning.md, "As deep as
 // the light goes").
 constexpr int kDeepestPlanned = kMaxDepth - kLookAhead;
 
@@ -665,7 +665,7 @@ PictureDepthError inDoubtDepthError(ProbeRenders& probes, QualityPlan& plan, int
 // The probe sees one of every four to sixty-four of the picture's pixels, and
 // a feature of a few pixels can lie between its centres: light trapped in a
 // small glass ball, 94 codes brighter three levels deeper, where every probe
-// centre around it was unchanged (bench_quality_fields, docs/quality.md). So
+// centre around it was unchanged (bench_quality_fields, docs/design/quality-planning.md). So
 // for a target with a limit on the largest error, the probe's depth is
 // checked at the picture's own size, and taken deeper until it fits there or
 // reaches kDeepestPlanned. It is checked against the deepest depth SPEC
@@ -679,7 +679,7 @@ PictureDepthError inDoubtDepthError(ProbeRenders& probes, QualityPlan& plan, int
 // samples a pixel such a render takes; the deep ones follow only the rays
 // that can still matter (kQualityPruneWeight). The sampled pictures come
 // several depths to a render as the centres do: a Final's planning traced
-// 0.58 to 0.81 of the rays it did with a render for each (docs/quality.md).
+// 0.58 to 0.81 of the rays it did with a render for each (docs/design/quality-planning.md).
 void checkDepthAtPictureSize(ProbeRenders& probes, int maxSamples, QualityPlan& plan) {
     if (!plan.target.largestCodes || plan.depthGiven || probes.probeIsThePicture()) return;
     // A probe that found no depth that fits and is already at the deepest
@@ -903,7 +903,7 @@ std::string describeReached(const QualityPlan& plan, const AdaptiveOutcome& a) {
                                     a.mostSamples)
                            : format("%.0f to %.0f samples a pixel (%.1f on average)",
                                     a.fewestSamples, a.mostSamples, a.meanSamples);
-    text += format(", estimated %.1f dB", estimatedPsnr(plan, a));
+    text += ", estimated " + psnrText(estimatedPsnr(plan, a));
     if (plan.target.largestCodes)
         text += format(", largest error about %.1f codes",
                        std::max(plan.depthLargest, a.estimatedLargest));
@@ -928,8 +928,7 @@ void applyPlan(const QualityPlan& plan, Scene& scene, RenderOptions& options) {
 }
 
 double estimatedPsnr(const QualityPlan& plan, const AdaptiveOutcome& outcome) {
-    const double mse = plan.depthMse + plan.precisionMse + outcome.estimatedMse;
-    return mse > 0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : 999.0;
+    return psnrFromMse(plan.depthMse + plan.precisionMse + outcome.estimatedMse);
 }
 
 bool plannedAlike(const Scene& a, const Scene& b) {

@@ -72,7 +72,7 @@ inline constexpr double kSamplingShare = 0.8;
 // reflections (kr 0.1) end after three, instead of running to depth 16,
 // while light kept at 0.9 a bounce among glass balls is followed to the end.
 // On the generated fields a Final at depth 16 traced a quarter to a half of
-// the rays and measured the same to 0.01 dB (docs/quality.md).
+// the rays and measured the same to 0.01 dB (docs/design/quality-planning.md).
 inline constexpr double kQualityPruneWeight = 1e-4;
 inline constexpr int kDefaultMaxSamples = 1024;
 // Targets this loose with no limit on the largest error start with one sample
@@ -123,7 +123,7 @@ ImageMetadata qualityMetadata(const Scene& scene, const QualityPlan& plan,
 void applyPlan(const QualityPlan& plan, Scene& scene, RenderOptions& options);
 
 // The PSNR that the plan's measured biases and the render's estimate add up
-// to; 999 when there is no error at all.
+// to (psnrFromMse: +infinity when there is no error at all).
 double estimatedPsnr(const QualityPlan& plan, const AdaptiveOutcome& outcome);
 
 // The plan for rendering `scene` (its size and precision) to `target`, with

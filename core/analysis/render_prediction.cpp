@@ -10,13 +10,14 @@
 #include "analysis/speed_probe.h"
 #include "analysis/tradeoff.h"
 #include "base/elapsed.h"
+#include "image/image_error.h"
 #include "tracer/renderer.h"
 
 namespace whitted {
 
 namespace {
 
-// Fitted on the six shipped scenes at 320x240 (bench_prediction, docs/quality.md),
+// Fitted on the six shipped scenes at 320x240 (bench_prediction, docs/design/quality-planning.md),
 // never on the generated scenes the tests check. The probes' estimate, scaled
 // to the picture, is 1.7 times the noise a fixed render then measures (the
 // halves of stratified samples differ more than their mean errs, and the
@@ -25,10 +26,6 @@ namespace {
 // between 8 and 16 (1.4 to 1.7 on those scenes).
 constexpr double kNoiseCalibration = 0.59;
 constexpr double kSteepestLongRunSlope = 1.3;
-
-double psnrOf(double mse) {
-    return mse > 0.0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : 999.0;
-}
 
 struct NoiseProbe {
     std::map<int, double> mseAt;  // samples a pixel -> the probe's estimated noise, codes^2
@@ -117,7 +114,7 @@ RenderPrediction predictRender(const Scene& scene, const StopPredicate& stop) {
                     probeNoiseAt(noise, scene.render.samplesPerPixel, p.samplingSlope) *
                     noise.scale;
     p.mseCodes2 = p.depthMse + p.precisionMse + p.samplingMse;
-    p.psnrDb = psnrOf(p.mseCodes2);
+    p.psnrDb = psnrFromMse(p.mseCodes2);
     p.rays = noise.raysPerSample * pixels * scene.render.samplesPerPixel;
     p.seconds = predictSeconds(probeSpeed(scene, kSpeedProbePixels, stop), scene, p.rays);
     if (stopped()) return p;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <vector>
@@ -11,14 +12,17 @@
 
 namespace whitted {
 
-namespace {
-
-double psnr(double mse, double peak) {
+double psnrFromMse(double mse, double peak) {
     if (mse == 0.0) return std::numeric_limits<double>::infinity();
     return 10.0 * std::log10(peak * peak / mse);
 }
 
-}  // namespace
+std::string psnrText(double db) {
+    if (std::isinf(db)) return "\u221e dB";
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f dB", db);
+    return text;
+}
 
 ErrorStats measureError(const Image& image, const Image& reference) {
     double sumLinear = 0.0, sumSrgb = 0.0;
@@ -70,9 +74,9 @@ ErrorStats measureError(const Image& image, const Image& reference) {
     const double n = 3.0 * double(w) * double(h);
     ErrorStats e;
     e.rmseLinear = std::sqrt(sumLinear / n);
-    e.psnrLinear = psnr(sumLinear / n, 1.0);
+    e.psnrLinear = psnrFromMse(sumLinear / n, 1.0);
     e.rmseSrgb8 = std::sqrt(sumSrgb / n);
-    e.psnrSrgb8 = psnr(sumSrgb / n, 255.0);
+    e.psnrSrgb8 = psnrFromMse(sumSrgb / n, 255.0);
     e.largest = double(largest) * 255.0;
     return e;
 }

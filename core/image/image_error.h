@@ -3,6 +3,8 @@
 // and the largest per-pixel difference (displayDifference, core/image/image_compare.h).
 #pragma once
 
+#include <string>
+
 #include "image/image.h"
 
 namespace whitted {
@@ -19,5 +21,13 @@ struct ErrorStats {
 // scale): it is then compared as a viewer shows it, each reference pixel
 // against the image pixel covering it (nearest neighbour).
 ErrorStats measureError(const Image& image, const Image& reference);
+
+// PSNR in dB of a mean squared error against the peak (255 for 8-bit codes,
+// 1 for linear values); +infinity for no error at all, where the ratio has no
+// bound. JSON has no infinity: nlohmann writes it as null.
+double psnrFromMse(double mse, double peak = 255.0);
+
+// "35.2 dB", or "∞ dB" for no error at all.
+std::string psnrText(double db);
 
 }  // namespace whitted

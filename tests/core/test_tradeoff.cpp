@@ -9,7 +9,10 @@
 #include <cstdint>
 #include <limits>
 
+#include <nlohmann/json.hpp>
+
 #include "analysis/depth_truncation.h"
+#include "analysis/quality_target.h"
 #include "analysis/tradeoff.h"
 #include "image/image_compare.h"
 #include "image/srgb.h"
@@ -34,6 +37,20 @@ TEST(ImageError, IdenticalImages_ZeroErrorInfinitePsnr) {
     EXPECT_EQ(e.largest, 0.0);
     EXPECT_TRUE(std::isinf(e.psnrLinear) && e.psnrLinear > 0);
     EXPECT_TRUE(std::isinf(e.psnrSrgb8) && e.psnrSrgb8 > 0);
+}
+
+// One convention wherever a PSNR is worked out: no error is +infinity, said
+// "∞ dB", and written to JSON as null.
+TEST(ImageError, NoErrorAtAll_InfinitePsnrInEveryPlaceThatSaysOne) {
+    const QualityPlan plan;         // no depth or precision error measured
+    const AdaptiveOutcome reached;  // and none estimated from the samples
+    const double db = estimatedPsnr(plan, reached);
+    EXPECT_TRUE(std::isinf(db) && db > 0);
+    EXPECT_EQ(psnrText(db), "\u221e dB");
+    EXPECT_NE(describeReached(plan, reached).find("estimated \u221e dB"), std::string::npos);
+    EXPECT_EQ(psnrText(psnrFromMse(255.0 * 255.0 / 1000.0)), "30.0 dB");
+    EXPECT_DOUBLE_EQ(psnrFromMse(0.0625, 1.0), 10.0 * std::log10(16.0));
+    EXPECT_EQ(nlohmann::json(db).dump(), "null");
 }
 
 TEST(ImageError, UniformHalfAgainstQuarter_HandComputed) {

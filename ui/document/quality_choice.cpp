@@ -2,6 +2,8 @@
 
 #include <QComboBox>
 
+#include "image/image_error.h"
+
 namespace whitted::ui {
 
 void QualityChoice::setTarget(std::optional<QualityTarget> target) {
@@ -80,10 +82,10 @@ QString QualityChoice::samplesTaken(const AdaptiveOutcome& reached) {
 }
 
 QString QualityChoice::reachedText(const QualityPlan& plan, const AdaptiveOutcome& reached) {
-    return tr("depth %1, %2, about %3 dB")
+    return tr("depth %1, %2, about %3")
         .arg(plan.maxDepth)
         .arg(samplesTaken(reached))
-        .arg(estimatedPsnr(plan, reached), 0, 'f', 1);
+        .arg(QString::fromStdString(psnrText(estimatedPsnr(plan, reached))));
 }
 
 }  // namespace whitted::ui

@@ -24,6 +24,7 @@
 #include "editor/float_range_warning.h"
 #include "editor/window_placement.h"
 #include "image/heat_map.h"
+#include "image/image_error.h"
 #include "panels/preset_controls.h"
 #include "panels/scene_panel.h"
 #include "tradeoff_dock/tradeoff_view.h"
@@ -218,10 +219,10 @@ void MainWindow::showQualityReached(const RenderFrame& frame) {
     if (!frame.renderComplete || !frame.qualityReached) return;
     const AdaptiveOutcome& reached = *frame.qualityReached;
     samplesLabel_->setText(QualityChoice::samplesTaken(reached));
-    QString estimate = tr("%1, depth %2: about %3 dB")
+    QString estimate = tr("%1, depth %2: about %3")
                            .arg(target)
                            .arg(plan.maxDepth)
-                           .arg(estimatedPsnr(plan, reached), 0, 'f', 1);
+                           .arg(QString::fromStdString(psnrText(estimatedPsnr(plan, reached))));
     if (!plan.target.name.empty())
         quality_.noteReached(plan.target.name, tr("%1 s, %2")
                                                    .arg(frame.seconds, 0, 'f', 2)

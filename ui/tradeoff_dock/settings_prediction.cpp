@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
+#include "image/image_error.h"
 #include "tracer/renderer.h"
 #include "tradeoff_dock/tradeoff_points.h"
 
@@ -114,11 +114,6 @@ std::vector<const TradeoffPoint*> samplesLine(const MeasureResults& m, const Ren
     return line;
 }
 
-double psnrOf(double rmseSrgb8) {
-    return rmseSrgb8 > 0 ? 20.0 * std::log10(255.0 / rmseSrgb8)
-                         : std::numeric_limits<double>::infinity();
-}
-
 enum class Coverage { None, Interpolated, Exact };
 
 // Fills error and time from Measure; with no cover, the reason in errorSource.
@@ -157,7 +152,7 @@ Coverage fromMeasure(const MeasureResults& m, const RenderSettings& want, Predic
     const double e = e0 > 0 && e1 > 0 ? std::exp(std::log(e0) + t * (std::log(e1) - std::log(e0)))
                                       : e0 + t * (e1 - e0);
     p.rmseSrgb8 = e;
-    p.psnrSrgb8 = psnrOf(e);
+    p.psnrSrgb8 = psnrFromMse(e * e);
     p.errorSource = QObject::tr("interpolated from Measure between %1 and %2 spp").arg(s0).arg(s1);
     // Time grows with the samples, not with their logarithm.
     p.seconds = lo.seconds + (spp - s0) / (s1 - s0) * (hi.seconds - lo.seconds);

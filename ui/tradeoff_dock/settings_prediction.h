@@ -49,7 +49,7 @@ struct Prediction {
 // What the view's renders take beyond the probes' prediction of one pass of
 // their rays: its preview and passes (each reads and writes the picture's
 // sums, each ends with a frame the window shows, on the same cores), priced
-// a pixel and a pass (at most 0.02 to 0.05 s a pass at 640x480; docs/quality.md). A
+// a pixel and a pass (at most 0.02 to 0.05 s a pass at 640x480; docs/design/quality-planning.md). A
 // factor would not do: it was 1.1 to 1.5 on renders of a tenth of a second
 // and 1.01 on one of nine. Measured in the editor, on its own renders: the
 // median of the last few whose scene the probes predicted

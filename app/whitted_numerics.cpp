@@ -19,7 +19,7 @@
 #include "numerics/difference_picture.h"
 #include "numerics/measure.h"
 #include "numerics/ranges.h"
-#include "numerics/report.h"
+#include "numerics/numerics_report.h"
 #include "numerics/sweep_plan.h"
 #include "scene/scene_io.h"
 #include "tracer/renderer.h"

@@ -25,6 +25,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -44,9 +45,9 @@
 #include "tradeoff/plots.h"
 #include "tradeoff/progress.h"
 #include "tradeoff/quality_section.h"
-#include "tradeoff/report.h"
 #include "tradeoff/results_csv.h"
 #include "tradeoff/sampler_section.h"
+#include "tradeoff/tradeoff_report.h"
 
 namespace fs = std::filesystem;
 using namespace whitted;
@@ -112,13 +113,12 @@ Image normalised(Image map, float largest) {
 json summaryJson(const tradeoff::SceneSummary& s) {
     json curve = json::array();
     for (const ProgressiveSample& c : s.curve)
-        curve.push_back(
-            {{"pass", c.pass},
-             {"samples", c.samples},
-             {"seconds", c.seconds},
-             {"rmse_srgb8", c.error.rmseSrgb8},
-             {"psnr_srgb8", std::isfinite(c.error.psnrSrgb8) ? c.error.psnrSrgb8 : 999.0},
-             {"psnr_linear", std::isfinite(c.error.psnrLinear) ? c.error.psnrLinear : 999.0}});
+        curve.push_back({{"pass", c.pass},
+                         {"samples", c.samples},
+                         {"seconds", c.seconds},
+                         {"rmse_srgb8", c.error.rmseSrgb8},
+                         {"psnr_srgb8", c.error.psnrSrgb8},  // null: no error (psnrFromMse)
+                         {"psnr_linear", c.error.psnrLinear}});
     return {{"name", s.name},
             {"command", s.command},
             {"date", s.date},
@@ -129,6 +129,11 @@ json summaryJson(const tradeoff::SceneSummary& s) {
             {"truncation", s.truncation},
             {"depth_within_tolerance", s.depthWithinTolerance},
             {"progressive", curve}};
+}
+
+// A PSNR as summaryJson wrote it: null for no error at all.
+double psnrFromJson(const json& db) {
+    return db.is_null() ? std::numeric_limits<double>::infinity() : db.get<double>();
 }
 
 tradeoff::SceneSummary readSummary(const fs::path& dir) {
@@ -152,8 +157,8 @@ tradeoff::SceneSummary readSummary(const fs::path& dir) {
         p.samples = c.at("samples");
         p.seconds = c.at("seconds");
         p.error.rmseSrgb8 = c.at("rmse_srgb8");
-        p.error.psnrSrgb8 = c.at("psnr_srgb8");
-        p.error.psnrLinear = c.at("psnr_linear");
+        p.error.psnrSrgb8 = psnrFromJson(c.at("psnr_srgb8"));
+        p.error.psnrLinear = psnrFromJson(c.at("psnr_linear"));
         s.curve.push_back(p);
     }
     s.points = tradeoff::readPointsCsv(dir / "points.csv");
@@ -350,7 +355,7 @@ void writeResults(const fs::path& dir, tradeoff::SceneSummary& summary, const Re
     replaceFileWithText(dir / "table.md", "# " + summary.name + ": every point\n\n" +
                                               tradeoff::pointsTable(summary.points));
     const QString name = QString::fromStdString(summary.name);
-    writePng(ui::renderPlot(tradeoff::tradeoffPlot(name, summary.points), QSize(900, 600)),
+    writePng(ui::renderPlot(tradeoff::errorAgainstTimePlot(name, summary.points), QSize(900, 600)),
              dir / "plot.png");
     if (!summary.curve.empty())
         writePng(ui::renderPlot(tradeoff::progressivePlot(name, summary.curve), QSize(700, 450)),

@@ -22,7 +22,8 @@ double errorFloor(const std::vector<double>& errors) {
 
 }  // namespace
 
-ui::PlotSpec tradeoffPlot(const QString& sceneName, const std::vector<TradeoffPoint>& points) {
+ui::PlotSpec errorAgainstTimePlot(const QString& sceneName,
+                                  const std::vector<TradeoffPoint>& points) {
     ui::PlotSpec spec;
     spec.title = QStringLiteral("%1: error against render time").arg(sceneName);
     spec.xLabel = QStringLiteral("render time (s, median)");

@@ -13,7 +13,8 @@ namespace whitted::tradeoff {
 
 // 8-bit RMSE against seconds, both log: colour by max_depth, shape by
 // precision, hollow markers for scales below 1, the Pareto front as a line.
-ui::PlotSpec tradeoffPlot(const QString& sceneName, const std::vector<TradeoffPoint>& points);
+ui::PlotSpec errorAgainstTimePlot(const QString& sceneName,
+                                  const std::vector<TradeoffPoint>& points);
 
 // 8-bit RMSE against elapsed seconds at the end of every progressive pass.
 ui::PlotSpec progressivePlot(const QString& sceneName, const std::vector<ProgressiveSample>& curve);

@@ -5,7 +5,7 @@
 #include <set>
 #include <sstream>
 
-#include "report.h"
+#include "tradeoff_report.h"
 
 namespace whitted::tradeoff {
 
@@ -40,7 +40,8 @@ void explanation(std::ostream& md) {
           "- **The samples**: each tile is sampled until its estimated error, from its "
           "samples' two halves and what its neighbours show, is under what is left.\n\n"
           "The status bar, its tooltip and `--stats` say what was chosen and why. "
-          "[quality.md](quality.md) explains each step, and measures it on fields "
+          "[Quality planning](design/quality-planning.md) explains each step, and measures it on "
+          "fields "
           "nothing was tuned on.\n\n";
 }
 
@@ -82,7 +83,8 @@ std::string qualitySection(const std::vector<QualityRow>& rows, const std::strin
        << "`. The time is ours, planning included, over that of the preset where it meets the "
           "target (the median of pairs of runs), else of the fewest samples a pixel that meet it "
           "at our depth (one run each), in one process. What a user waits for, whole runs "
-          "(`benchmarks/whole_run_presets.sh`), is in quality.md: there a Draft's few "
+          "(`benchmarks/whole_run_presets.sh`), is in [quality "
+          "planning](design/quality-planning.md): there a Draft's few "
           "milliseconds of planning are a few hundredths of the run.\n\n";
     table(md, rows);
     tally(md, rows);

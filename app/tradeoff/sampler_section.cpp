@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "report.h"
+#include "tradeoff_report.h"
 
 #include "base/csv_rows.h"
 

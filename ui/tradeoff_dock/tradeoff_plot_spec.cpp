@@ -29,9 +29,9 @@ int markerOf(Precision p) {
 
 }  // namespace
 
-TradeoffPlot tradeoffPlot(const std::vector<PinnedPoint>& pinned,
-                          const std::vector<TradeoffPoint>& measure) {
-    TradeoffPlot plot;
+DockPlot dockPlot(const std::vector<PinnedPoint>& pinned,
+                  const std::vector<TradeoffPoint>& measure) {
+    DockPlot plot;
     PlotSpec& spec = plot.spec;
     spec.xLabel = QObject::tr("Render time (s)");
     spec.yLabel = QObject::tr("RMSE, 8-bit sRGB");

@@ -14,13 +14,13 @@
 
 namespace whitted::ui {
 
-struct TradeoffPlot {
+struct DockPlot {
     PlotSpec spec;
     std::vector<QString> tooltips;  // parallel to spec.points
     int identical = 0;              // points with error 0, which a log axis cannot show (left out)
 };
 
-TradeoffPlot tradeoffPlot(const std::vector<PinnedPoint>& pinned,
-                          const std::vector<TradeoffPoint>& measure);
+DockPlot dockPlot(const std::vector<PinnedPoint>& pinned,
+                  const std::vector<TradeoffPoint>& measure);
 
 }  // namespace whitted::ui

@@ -269,7 +269,7 @@ void TradeoffView::refreshPlot() {
     std::vector<TradeoffPoint> shown = measurePoints();
     // While measuring, the front of the points so far.
     if (job_) markParetoFront(shown);
-    const TradeoffPlot plot = tradeoffPlot(points_, shown);
+    const DockPlot plot = dockPlot(points_, shown);
     const bool empty = plot.spec.points.empty();
     plot_->setPlot(plot.spec, plot.tooltips);
     QString note;

@@ -1,4 +1,4 @@
-#include "report.h"
+#include "tradeoff_report.h"
 
 #include <algorithm>
 #include <cmath>
@@ -171,7 +171,8 @@ void presetTable(std::ostream& md, const std::vector<PresetChoice>& presets) {
     md << "These fixed settings are fitted on the scenes below and can miss their targets on "
           "others. `whitted-render --quality draft|preview|final` renders to the target "
           "instead, choosing the depth and the samples for the scene at hand: "
-          "[quality.md](quality.md) explains how, and measures both ways on every shipped "
+          "[Quality planning](design/quality-planning.md) explains how, and measures both ways on "
+          "every shipped "
           "scene and on generated ones.\n\n";
     md << "The rule: for each preset, of the full-size settings (samples per pixel, max depth, "
           "precision) measured on every scene, the cheapest that meets the preset's targets on "

@@ -1,4 +1,4 @@
-#include "report.h"
+#include "numerics_report.h"
 
 #include <algorithm>
 #include <cstdarg>
@@ -16,10 +16,6 @@ std::string format(const char* f, ...) {
     std::vsnprintf(buffer, sizeof buffer, f, args);
     va_end(args);
     return buffer;
-}
-
-std::string precisionText(Precision p) {
-    return std::string(precisionName(p));
 }
 
 std::string percent(double fraction) {
@@ -155,9 +151,10 @@ void rangeTable(std::string& md, const std::vector<PointResult>& results,
         "met |\n|---|---|---|---|---|---|---|\n";
     for (const RangeSummary& r : ranges) {
         const Ask a = issueAsks(r.kind, r.precision);
-        md += "| " + std::string(sweepTitle(r.kind)) + " | " + precisionText(r.precision) + " | " +
-              boundText(r.kind, r.precision) + " | " + kRange(r) + " | " + failures(r) + " | " +
-              askText(r.kind, a) + " | " + metText(r, a) + " |\n";
+        md += "| " + std::string(sweepTitle(r.kind)) + " | " +
+              std::string(precisionName(r.precision)) + " | " + boundText(r.kind, r.precision) +
+              " | " + kRange(r) + " | " + failures(r) + " | " + askText(r.kind, a) + " | " +
+              metText(r, a) + " |\n";
     }
     md += "\n";
     // The issue leaves the offset bound open: state the one that holds over its range.
@@ -171,7 +168,7 @@ void rangeTable(std::string& md, const std::vector<PointResult>& results,
                 worst = &r;
         if (!worst) continue;
         md += format("Offsets of 1e2 to 1e%d in %s: at worst (k = %d) ", a.high,
-                     precisionText(p).c_str(), worst->point.k);
+                     std::string(precisionName(p)).c_str(), worst->point.k);
         md += figures(*worst) + ".\n\n";
     }
 }
@@ -207,7 +204,8 @@ void pictureSection(std::string& md, const std::vector<Picture>& pictures) {
     for (const Picture& p : pictures) {
         const SweepPoint& pt = p.result.point;
         md += format("### %s, %s, k = %s (%s)\n\n", std::string(sweepTitle(pt.kind)).c_str(),
-                     precisionText(pt.precision).c_str(), signedK(pt.k).c_str(), p.side.c_str());
+                     std::string(precisionName(pt.precision)).c_str(), signedK(pt.k).c_str(),
+                     p.side.c_str());
         md += "Transform " + transformLabel(pt) + ": " + figures(p.result) + ".\n\n";
         if (p.imageFile.empty()) continue;
         md += "| render | difference |\n|---|---|\n";
@@ -219,8 +217,8 @@ void pointTables(std::string& md, const std::vector<PointResult>& results,
                  const std::vector<RangeSummary>& ranges) {
     md += "## Every point\n\n";
     for (const RangeSummary& range : ranges) {
-        md += "### " + std::string(sweepTitle(range.kind)) + ", " + precisionText(range.precision) +
-              "\n\n";
+        md += "### " + std::string(sweepTitle(range.kind)) + ", " +
+              std::string(precisionName(range.precision)) + "\n\n";
         const bool bits = range.kind == SweepKind::Scale2;
         md += "| k | transform | > 1/255 | > 2/255 | largest | NaN/Inf |";
         md += bits ? " bit-identical |" : "";
@@ -275,8 +273,9 @@ std::string csvReport(const std::vector<PointResult>& results) {
     for (const PointResult& r : results) {
         const std::string bits =
             r.bitIdentical ? std::string(*r.bitIdentical ? "yes" : "no") : std::string();
-        csv += std::string(sweepId(r.point.kind)) + "," + precisionText(r.point.precision) + "," +
-               std::to_string(r.point.k) + "," + csvField(transformLabel(r.point)) + ",";
+        csv += std::string(sweepId(r.point.kind)) + "," +
+               std::string(precisionName(r.point.precision)) + "," + std::to_string(r.point.k) +
+               "," + csvField(transformLabel(r.point)) + ",";
         if (r.refused) {
             csv += ",,,,,,,,,no," + csvField(*r.refused) + "\n";
             continue;

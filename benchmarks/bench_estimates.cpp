@@ -1,5 +1,5 @@
 // What an adaptive pass of a render to Preview or Final costs besides its
-// rays (issue 15; docs/performance.md, "The estimates of a pass"), on a
+// rays (docs/design/performance.md), on a
 // 640x480 picture, the size the shipped scenes are saved at:
 //   BM_UnseenLargest     unseenLargest() over every 16x16 tile: what one more
 //                        sample of each pixel's most different neighbour
@@ -43,8 +43,8 @@ void BM_UnseenLargest(benchmark::State& state) {
         double largest = 0.0;
         for (int y = 0; y < kHeight; y += kAdaptiveTileEdge)
             for (int x = 0; x < kWidth; x += kAdaptiveTileEdge)
-                largest += unseenLargest(image, {x, y, kAdaptiveTileEdge, kAdaptiveTileEdge},
-                                         whole, 8, pixels);
+                largest += unseenLargest(image, {x, y, kAdaptiveTileEdge, kAdaptiveTileEdge}, whole,
+                                         8, pixels);
         benchmark::DoNotOptimize(largest);
     }
     state.SetItemsProcessed(state.iterations() * std::int64_t(kWidth) * kHeight);

@@ -12,7 +12,7 @@
 // times are the best of three builds alone; render times include scene
 // preparation and the build, Embree's too. "ours" is the tracer's own choice
 // of structure (brute force below kBvhCrossover spheres, the BVH above); with
-// --bvh, and in the older form, whose crossover figures in docs/performance.md
+// --bvh, and in the older form, whose crossover figures in docs/design/acceleration.md
 // compare the two at every N, it is always the BVH. "kept" is a float render
 // after another with the same BvhCache: the tree kept and refit, as in the
 // editor after an edit or a camera move. --images writes our float

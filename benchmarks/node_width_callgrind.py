@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Per-ray figures from a callgrind run of bench_node_width (docs/performance.md).
+"""Per-ray figures from a callgrind run of bench_node_width (docs/design/acceleration.md).
 
 bench_node_width dumps callgrind's counters after each pass, named
 "set/mode/tree"; this divides each dump's totals by the pass's rays (from the

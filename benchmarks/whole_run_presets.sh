@@ -44,8 +44,7 @@ PY
 printf '| scene | target | ours, mean of %d (s) | preset (s) | ours / preset, ± one sigma |\n' "$runs"
 printf '|---|---|---|---|---|\n'
 if [[ $which == fields ]]; then
-  # Where the preset misses at 160x120 (docs/quality.md, "Against the
-  # presets, the render pruned", 2026-12-04).
+  # Where the preset misses at 160x120 (bench_quality_fields 160 120).
   missed=(8:draft 9:draft 18:draft 2:preview 4:preview 5:preview 6:preview 7:preview
           8:preview 12:preview 13:preview 17:preview 19:preview 2:final 3:final 4:final
           5:final 6:final 7:final 8:final 10:final 12:final 14:final 15:final 16:final
@@ -65,8 +64,8 @@ if [[ $which == fields ]]; then
 fi
 
 "$build/bin/whitted-field" 300 --seed 7 --half-width 5 --length 12 -o "$work/generated.json"
-# scene:target pairs where the preset misses (docs/quality.md, "Measured";
-# at 640x480, "The shipped scenes at 640x480").
+# scene:target pairs where the preset misses at 640x480 (bench_quality 640 480,
+# docs/tradeoff.md).
 misses=" field:preview field:final generated:final "
 if ((width >= 640)); then misses+="seed:preview generated:preview "; fi
 for scene in seed glass mirrors coloured-shadows whitted-1980 field generated; do

@@ -5,7 +5,7 @@
 # the threaded tests under ThreadSanitizer (CMakePresets.json), and the scene
 # loader's fuzzer (tests/fuzz). Stops at the first failing stage, with its exit
 # code. Every run ends with each stage's time and the ten slowest tests
-# (docs/testing.md says what each stage covers).
+# (docs/design/testing.md says what each stage covers).
 set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."

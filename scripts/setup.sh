@@ -29,9 +29,9 @@ packages=(
   slurmctld slurmd slurm-client munge
   # whole-process timings in docs (benchmarks/whole_run_presets.sh)
   hyperfine
-  # build time (docs/testing.md): a faster linker, objects kept between builds
+  # build time (docs/design/testing.md): a faster linker, objects kept between builds
   mold ccache
-  # the Python module (python/, docs/python.md): bindings, Debian's Python,
+  # the Python module (python/, docs/guide/scripting.md): bindings, Debian's Python,
   # NumPy arrays for images, and its tests
   pybind11-dev python3-dev python3-numpy python3-pytest
 )

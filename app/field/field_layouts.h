@@ -1,6 +1,6 @@
 // Named field layouts, each a stress for the sphere tree that bench_scaling's
 // own field is not: whitted-field --layout and bench_scaling --layouts make
-// them, and docs/performance.md times each against Embree.
+// them, and docs/design/acceleration.md times each against Embree.
 #pragma once
 
 #include <optional>

@@ -25,8 +25,8 @@ namespace {
 // picture that most are sampled well past what they need; at the 640x480
 // the shipped scenes are saved at, 5 of 6 untuned fields' Previews came out
 // 65 to 70 codes off (64 allowed). Under 0.6 all 5 whose plan promised the
-// target met it, for about a fifth more time (docs/design/quality-planning.md, "At the
-// size the scenes are saved at").
+// target met it, for about a fifth more time (bench_quality_fields at 640x480;
+// docs/design/quality-planning.md).
 constexpr double kLargestMargin = 0.6;
 // The probe's longest side: enough pixels to see what deeper rays add (a
 // mirror's reflection of a glass ball), few enough to cost a few one-sample
@@ -67,8 +67,8 @@ constexpr int kLookAhead = 3;
 constexpr int kMostPicturesAhead = 8;
 // Below this PSNR (Draft's 20 dB) the depth search's first probe render
 // reaches 2 * kLookAhead - 1 levels, not kLookAhead: such a target's depth
-// cut was 1 to 3 on every scene measured (docs/design/quality-planning.md, "One sample where
-// it does"), and depth 1 or 2 took two renders, to 3 and then to 7 (for 1
+// cut was 1 to 3 on every scene measured (docs/design/quality-planning.md,
+// "Draft: one sample where it does"), and depth 1 or 2 took two renders, to 3 and then to 7 (for 1
 // against 4); one render to 5 measures depths 0 to 2 against three deeper.
 // Stricter targets cut deeper, where a longer first render would only add
 // its levels to the one after it.
@@ -82,8 +82,8 @@ constexpr double kLongFirstProbeBelowDb = 30.0;
 // 640x480, 0 to 29% more rays from depth 16 to 48, where pixels still
 // changed by 35 to 160 codes. Capped at 16, as when every ray was followed
 // and each level cost more than the last, 4 of the 12 Previews and Finals
-// of those fields could not meet their target (docs/design/quality-planning.md, "As deep as
-// the light goes").
+// of those fields could not meet their target (docs/design/quality-planning.md,
+// "The depth, measured").
 constexpr int kDeepestPlanned = kMaxDepth - kLookAhead;
 
 std::string format(const char* pattern, double a, double b = 0, double c = 0, double d = 0) {

@@ -7,7 +7,7 @@
 // finer the pixels, the more alike the rays of a row, the fewer nodes of the
 // tree they visit. A shrunken picture cannot show that last part: carried
 // from 160 pixels to 640 along the power of size between 80 and 160, the
-// cost missed renders by 0.6 to 1.6 times (docs/quality.md). So the probe
+// cost missed renders by 0.6 to 1.6 times (docs/design/quality-planning.md). So the probe
 // renders tiles of the picture itself, at its own size, spread over it (each
 // pixel's samples are the picture's, bit for bit: RenderOptions::regions), at
 // most kSpeedProbePixels of them, and times pixel centres and jittered samples.

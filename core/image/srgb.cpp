@@ -57,7 +57,7 @@ constexpr int kBuckets = (0x3f800000 >> kBucketShift) + 1;
 struct BucketCodes {
     // 32-bit codes, not bytes: the row form's loop then gathers both tables
     // (about 2.5 times as fast as a byte table and two dependent steps,
-    // on AVX-512: docs/performance.md, "A Draft's own costs").
+    // on AVX-512; bench_draft, docs/design/performance.md).
     std::array<std::int32_t, kBuckets> code{};
     std::array<float, kBuckets> next{};  // the threshold above `code`; infinity above 254
 };

@@ -28,7 +28,7 @@
 // was 1.4 to 2.1 times the error on the shipped scenes and on the generated
 // fields of test_quality_target, at 128x96, 320x240 and 640x480 (3 on
 // coloured-shadows, whose soft shadows change smoothly from pixel to pixel;
-// docs/quality.md has the table). A thin line between two centres shows in
+// docs/design/quality-planning.md has the table). A thin line between two centres shows in
 // neither, so a target with a limit on the largest error never starts with
 // centres. A tile chosen after the centres starts over with two samples of
 // the sequence: a centre is not one of its stratified samples.
@@ -68,7 +68,7 @@ inline bool limitsLargest(const AdaptiveSampling& limits) {
 // renders). Samples are chosen per tile: in tiles of 32 one pixel's estimate
 // took a thousand pixels to more samples; in tiles of 16, with the pixels two
 // beyond a tile vouching for it (kNearbyReach), every measured target of
-// docs/quality.md was met as before with 0.76 to 1.03 times the rays. 16 is
+// docs/design/quality-planning.md was met as before with 0.76 to 1.03 times the rays. 16 is
 // still a whole packet (simd.h) with AVX-512.
 inline constexpr int kAdaptiveTileEdge = 16;
 // How far beyond its tile, in pixels, a pixel's estimate speaks for it
@@ -174,7 +174,7 @@ void estimateNearbyLargest(std::vector<TileSamplingState>& tiles,
 // its estimate in `pixels` raised to that; returns the tile's largest, in
 // codes. It is held to the same limit as the halves' estimate, margin and
 // all: held to the target's own limit instead, an untuned field's Final at
-// 640x480 still missed (docs/quality.md, "What the samples may miss").
+// 640x480 still missed (docs/design/quality-planning.md, "Known limits").
 // After a pass, with its neighbours rendered: they are the colours a sliver
 // of it may have. Only neighbours within `rendered` count: outside a
 // render's regions the picture is black, not the scene. Unless `around`

@@ -35,12 +35,12 @@ constexpr int kSahDepth = 48;
 // costs little beside a node more, whose box is another cache line. 5, with
 // leaves of up to 8 (BvhBuildOptions), against 1 and 4: 3 to 4% more
 // instructions and 10 to 13% fewer cache misses in a render, and 35 to 38 bytes per sphere in a
-// float tree (59 to 62 in double) instead of 65 to 86 (docs/performance.md).
+// float tree (59 to 62 in double) instead of 65 to 86 (docs/design/acceleration.md).
 constexpr double kTraversalCost = 5.0;
 // The split of a larger range is chosen from about this many of its spheres,
 // evenly spaced: binning all of them read every sphere of the scene once per
 // top level, and on fields from sparse to dense this sample moved the tree's
-// SAH cost by at most 0.02% (docs/performance.md).
+// SAH cost by at most 0.02% (docs/design/acceleration.md).
 constexpr int kSplitSamples = 4096;
 // Ranges with fewer spheres than this are built as one job on one thread; the
 // levels above are split first, each level's ranges in parallel. Small enough to give two
@@ -100,7 +100,7 @@ class Builder {
         // A small range gets a bin for every two spheres (at least 4): most
         // ranges are small, and their sweeps over mostly empty bins were
         // most of the build; against a bin a sphere, 13% less time at 1M
-        // spheres for a tree 0.13% worse by the SAH (docs/performance.md).
+        // spheres for a tree 0.13% worse by the SAH (docs/design/acceleration.md).
         const bvh_build::Binning<T> map(std::min(bins_, std::max(4, n / 2)), bounds.centres);
         const bvh_build::Split best =
             r.depth < kSahDepth ? bvh_build::bestSplit(refs, n, map, std::max(1, n / kSplitSamples))

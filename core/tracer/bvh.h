@@ -32,7 +32,7 @@ namespace whitted {
 // The box is in float for double trees too, rounded outward from the double
 // box, as Embree stores its boxes: 56-byte double nodes made the double tree
 // 75 bytes per sphere, and double renders measured no slower with float boxes
-// (docs/performance.md). A box in float only ever holds more; the traversal's
+// (docs/design/acceleration.md). A box in float only ever holds more; the traversal's
 // arithmetic stays in T.
 struct BvhNode {
     float lo[3], hi[3];  // the box [lo, hi], holding every sphere below, rounded outward
@@ -99,7 +99,7 @@ struct BvhBuildOptions {
     // Build only the top of the tree now, and each subtree of fewer than a few
     // thousand spheres when a ray first enters it (lazyJobRoot()): a render
     // of a million balls on a floor enters fewer than two thirds of them
-    // (docs/performance.md). The tree then walked is the whole tree's.
+    // (docs/design/acceleration.md). The tree then walked is the whole tree's.
     bool lazy = false;
 };
 

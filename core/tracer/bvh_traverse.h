@@ -15,7 +15,7 @@
 //
 // Lanes go through the tree together, masked as they leave the boxes. Each
 // lane of reflected, refracted and shadow packets alone through the tree took
-// 1.7 to 3 times as long (docs/performance.md): a sphere test costs one
+// 1.7 to 3 times as long (docs/design/acceleration.md): a sphere test costs one
 // vector operation however few lanes it serves.
 #pragma once
 
@@ -261,7 +261,7 @@ inline bool bvhClosestStart(const SphereSet<T>& spheres, const SphereBvh<T>& bvh
 // bvhTransmittance(): inlined into the kernel's packet loop beside the
 // brute-force path, it cost the seed's render (brute force) 0.5% more
 // instructions; out of line, the 100k field's render costs 2% more
-// instructions and 15% fewer L1 misses (callgrind, docs/performance.md).
+// instructions and 15% fewer L1 misses (callgrind, docs/design/acceleration.md).
 template <typename T>
 __attribute__((noinline)) void bvhClosestHits(const SphereSet<T>& spheres, const SphereBvh<T>& bvh,
                                               const RayPacket<T>& r, typename Simd<T>::type& tBest,

@@ -49,7 +49,7 @@ struct RayPacket {
     }
     // Every lane at once; `lanes` says which of them hold rays. Built whole
     // rather than assigned to a default packet: zeroing a packet first cost a
-    // memset call per packet (callgrind, docs/performance.md).
+    // memset call per packet (callgrind, docs/design/acceleration.md).
     static RayPacket of(const Vec3x<T>& o, const Vec3x<T>& d, const V& sphere, const Mask& into,
                         unsigned lanes, bool fromCamera = false) {
         return {o.x, o.y, o.z, d.x, d.y, d.z, sphere, into, fromCamera, lanes};

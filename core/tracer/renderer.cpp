@@ -404,7 +404,7 @@ class TileRenderer {
     }
 
     // False when stopped part-way: the tile is then incomplete and not reported.
-    // Out of line: the profiles of docs/performance.md collect from it.
+    // Out of line: the profiles of docs/design/performance.md collect from it.
     __attribute__((noinline)) bool renderTile(const Pass& pass, const Tile& tile, Row& row,
                                               RayCounts& counts, TileErrorEstimate* estimate) {
         if (pass.kind == PassKind::Preview) return renderPreviewTile(tile, counts);

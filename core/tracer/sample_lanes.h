@@ -4,7 +4,7 @@
 // same whatever U is, bit for bit; a vector only computes several at once.
 // Made one pixel at a time, with a hardware division in each of Kensler's
 // permutations, the positions took nearly a third of the CPU time of renders
-// of 8 and 32 samples a pixel (bench_editor_prediction; docs/performance.md).
+// of 8 and 32 samples a pixel (bench_editor_prediction; docs/design/performance.md).
 #pragma once
 
 #include <cstdint>

@@ -133,7 +133,7 @@ struct BvhInput {
 
 // Every sphere into its own place in s.spheres, s.material and
 // s.transparency (and `bvh`, when sized), on all cores: a million spheres took
-// a second on one (docs/performance.md). Fewer than kSphereChunk stay on this
+// a second on one (docs/design/acceleration.md). Fewer than kSphereChunk stay on this
 // thread. Throws, in validateScene()'s words, for a sphere whose material is
 // missing (validated scenes never have one).
 template <typename T>

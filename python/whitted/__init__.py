@@ -9,7 +9,7 @@ compare images::
     image = whitted.render(scene, width=320, height=240)   # float32 (240, 320, 3), linear
     whitted.write_image(image, "seed.png")
 
-docs/python.md has more examples; help(whitted.render) lists every setting.
+docs/guide/scripting.md has more examples; help(whitted.render) lists every setting.
 """
 
 import os

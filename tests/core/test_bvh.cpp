@@ -234,7 +234,7 @@ INSTANTIATE_TEST_SUITE_P(
                (std::get<1>(info.param) ? "_floor" : "_noFloor");
     });
 
-// whitted-field's layouts (the ones docs/performance.md times against Embree),
+// whitted-field's layouts (the ones docs/design/acceleration.md times against Embree),
 // small: clumps, radii over three decades, mostly glass or mirrors, the camera
 // inside or above, each traced with and without the tree.
 class FieldLayoutRendersLikeBruteForce : public ::testing::TestWithParam<FieldLayout> {};

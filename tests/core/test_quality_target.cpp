@@ -8,7 +8,7 @@
 // get there at this size: Draft starts with the pixels' centres, but at
 // 128x96, where balls are a few pixels wide, their estimate sends most tiles
 // on to two samples; Preview's planning and first two samples cost more than
-// the fixed samples it needs. Their ratios are printed, and docs/quality.md
+// the fixed samples it needs. Their ratios are printed, and docs/design/quality-planning.md
 // has them at 320x240.
 #include <algorithm>
 #include <cmath>

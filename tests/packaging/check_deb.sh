@@ -35,7 +35,7 @@ done
 [[ $(dpkg-deb -f "$deb" Section) == graphics ]] || { echo "Section is not graphics" >&2; exit 1; }
 [[ $(dpkg-deb -f "$deb" Architecture) == amd64 ]] || { echo "Architecture is not amd64" >&2; exit 1; }
 
-# Debian's own checks: no error; the warnings left are in docs/install.md.
+# Debian's own checks: no error; the warnings left are in docs/guide/install.md.
 lintian --fail-on error --tag-display-limit 0 "$deb" >"$out/lintian.log" 2>&1 ||
   { echo "lintian finds errors:" >&2; cat "$out/lintian.log" >&2; exit 1; }
 echo "lintian: $(grep -c '^W: ' "$out/lintian.log" || true) warnings, no error"

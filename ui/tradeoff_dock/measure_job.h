@@ -17,7 +17,7 @@ namespace whitted::ui {
 
 // The grid Measure runs unless told otherwise: both scales a user is likely to
 // preview at, samples up to 64, every depth to 8, both precisions, each point
-// run once (more while it takes under 50 ms). docs/design-notes.md gives its
+// run once (more while it takes under 50 ms). docs/design/editor.md gives its
 // duration on the seed scene.
 TradeoffGrid editorMeasureGrid();
 // Samples per pixel of the reference: four times the grid's most, so that

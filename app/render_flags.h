@@ -54,7 +54,7 @@ inline std::vector<std::string> renderFlagArguments(const RenderFlags& f) {
     return args;
 }
 
-// The flags that ask for a render to a quality (issue 15) instead of the
+// The flags that ask for a render to a quality instead of the
 // scene's samples: a preset's target or one of the user's own.
 struct QualityFlags {
     std::string quality;  // draft, preview or final; empty: none

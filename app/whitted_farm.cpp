@@ -1,4 +1,4 @@
-// whitted-farm: renders a scene on a Slurm cluster (issue 14). The image's
+// whitted-farm: renders a scene on a Slurm cluster. The image's
 // regions (--tiles N) or a turntable's frames (--turntable N) become an array
 // job of whitted-render commands, and the regions a merge job that depends on
 // it (afterok); --wait follows them to the end. With a quality (--quality,

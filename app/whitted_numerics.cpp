@@ -1,7 +1,7 @@
 // whitted-numerics: renders a scene (the seed by default) scaled and moved over
 // wide ranges in float and in double, measures every image against the double
 // reference, and writes docs/numerics.md, docs/numerics.csv and the pictures of
-// where each precision breaks (issue 4, part 4).
+// where each precision breaks.
 // Exit codes as whitted-render: 0 success; 2 bad input (scene or flags); 1 any
 // other failure.
 #include <cstdio>

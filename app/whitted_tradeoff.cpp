@@ -1,4 +1,4 @@
-// whitted-tradeoff: measures the speed/accuracy trade of one scene (issue 5).
+// whitted-tradeoff: measures the speed/accuracy trade of one scene.
 //   whitted-tradeoff SCENE.json [--out-dir DIR] [grid flags] [--quick]
 // renders a reference, then every point of the grid, and writes into DIR
 // points.csv, table.md, plot.png (error against time, Pareto front marked),

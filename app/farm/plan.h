@@ -1,4 +1,4 @@
-// What a farm render consists of (whitted-farm, issue 14): one task for each
+// What a farm render consists of (whitted-farm): one task for each
 // region or frame, each a whitted-render command line and the file it writes,
 // and for regions a merge. Plain values; the submission is slurm.h's.
 #pragma once

@@ -1,4 +1,4 @@
-// A plan's tasks as Slurm jobs (whitted-farm, issue 14): a job that prepares
+// A plan's tasks as Slurm jobs (whitted-farm): a job that prepares
 // what the tasks share, if the plan has one still to do, an array job of the
 // tasks not yet done that depends on it, and a merge job that depends on the
 // array (each afterok, and cancelled if what it waits for fails), submitted

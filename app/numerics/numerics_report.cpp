@@ -46,7 +46,7 @@ std::string failures(const RangeSummary& r) {
     return side(r.failBelow) + " / " + side(r.failAbove);
 }
 
-// The k range issue 4 asks for: 10^k within [-4, 4] (float) and [-8, 8] (double);
+// The k range each sweep is asked to cover: 10^k within [-4, 4] (float) and [-8, 8] (double);
 // 2^k within [-20, 20]; offsets of 1e2 to 1e5 (float) and up to 1e9 (double).
 struct Ask {
     int low, high;
@@ -132,7 +132,7 @@ void method(std::string& md, const ReportContext& c) {
         "bit for bit.\n"
         "- **time**: the render's wall time (one pass, all samples).\n\n";
     md +=
-        "**Bounds** (issue 4): scale ×10^k keeps at least 99.9% (float) or 99.99% (double) "
+        "**Bounds**: scale ×10^k keeps at least 99.9% (float) or 99.99% (double) "
         "of pixels within 1/255 of the reference; the offset sweep is held to the same "
         "bounds. This report also requires no NaN or Inf pixel, which the share alone would "
         "let through. Scale ×2^k must be bit-identical. A point whose transformed scene is "
@@ -157,7 +157,7 @@ void rangeTable(std::string& md, const std::vector<PointResult>& results,
               metText(r, a) + " |\n";
     }
     md += "\n";
-    // The issue leaves the offset bound open: state the one that holds over its range.
+    // The offsets' range is asked for but not their bound: state the one that holds over it.
     for (Precision p : {Precision::Float, Precision::Double}) {
         const Ask a = issueAsks(SweepKind::Translate, p);
         const PointResult* worst = nullptr;

@@ -1,5 +1,5 @@
-// The bounds of issue 4 and the contiguous range of k around 0 in which each
-// precision meets them.
+// The bounds a precision must meet at each point of the sweep, and the contiguous
+// range of k around 0 in which each precision meets them.
 #pragma once
 
 #include <optional>
@@ -12,8 +12,8 @@
 namespace whitted::numerics {
 
 // Largest share of pixels allowed more than 1/255 from the double reference:
-// 0.1% in float, 0.01% in double (issue 4's bounds for the 10^k scale sweep,
-// applied to the offset sweep too).
+// 0.1% in float, 0.01% in double (the bounds for the 10^k scale sweep, applied
+// to the offset sweep too).
 double allowedFractionOverOne(Precision p);
 
 // Whether a point is right: for 2^k, bit-identical to the same-precision

@@ -1,4 +1,4 @@
-// The points of the numerics sweep (issue 4, part 4): the base scene scaled by
+// The points of the numerics sweep: the base scene scaled by
 // 10^k or 2^k, or moved by (1,1,1)·10^k, each rendered in float and in double.
 #pragma once
 

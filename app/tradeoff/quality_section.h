@@ -1,4 +1,4 @@
-// docs/tradeoff.md's section on rendering to a quality (issue 15): how a
+// docs/tradeoff.md's section on rendering to a quality: how a
 // target becomes settings for the scene at hand, and bench_quality's
 // measurements of target against what was met, beside the fixed presets.
 #pragma once

@@ -1,4 +1,4 @@
-// The editor with a scene of 100,000 spheres (issue 6): how long the file
+// The editor with a scene of 100,000 spheres: how long the file
 // takes to load and to open, how long an edit takes, what undo costs in
 // memory, and when the first frames arrive. Prints its figures; not a test.
 //   build/bin/bench_big_scene [SPHERES]   (default 100000)

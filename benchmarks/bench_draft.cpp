@@ -1,5 +1,5 @@
 // What a render to Draft costs beyond the one-sample preset's render, part by
-// part, on the shipped scenes at 320x240 (issue 15; docs/design/performance.md):
+// part, on the shipped scenes at 320x240 (docs/design/performance.md):
 //   BM_DraftPlan/SCENE      planQuality() for Draft: the probe renders
 //   BM_DraftRender/SCENE    the adaptive render of that plan: the centres, their
 //                           estimate, and the tiles it samples again

@@ -1,6 +1,6 @@
-// The Render tab's predicted time against the editor's own render (issue 15,
-// item 3), in the editor itself: a MainWindow (offscreen unless
-// QT_QPA_PLATFORM says otherwise) on each shipped scene and two generated
+// The Render tab's predicted time against the editor's own render, in the
+// editor itself: a MainWindow (offscreen unless QT_QPA_PLATFORM says
+// otherwise) on each shipped scene and two generated
 // fields, at 640x480, depth 5, float, and 8 and 32 samples a pixel. Each case
 // is one edit, as a user makes it; the view renders it at once, in passes,
 // while ProbePredictor's probes start 0.4 s later at a lower priority. The

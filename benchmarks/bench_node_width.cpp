@@ -1,7 +1,7 @@
-// Node width of the sphere BVH (issue 12, item 1: "node width chosen for the
-// SIMD width (measure 2-, 4- and 8-wide)"): the renderer's binary tree against
-// 4- and 8-wide trees collapsed from it, on the same rays, with the same
-// sphere test. A measurement only: the renderer's tree is not changed.
+// Node width of the sphere BVH, to choose it for the SIMD width by measuring
+// 2-, 4- and 8-wide: the renderer's binary tree against 4- and 8-wide trees
+// collapsed from it, on the same rays, with the same sphere test. A measurement
+// only: the renderer's tree is not changed.
 //
 //   build/bin/bench_node_width [--sizes N,N,...] [--width W] [--height H]
 //                              [--row-step S] [--random M] [--reps R] [--no-counts]

@@ -1,4 +1,4 @@
-// Predictions for scenes never measured (issue 15, item 3): for each shipped
+// Predictions for scenes never measured: for each shipped
 // scene and two generated fields, at four settings, the PSNR, rays and
 // seconds predictRender() expects against what the render then measures
 // (PSNR against a converged render: double, 512 samples, depth 14). The

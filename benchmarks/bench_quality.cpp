@@ -1,4 +1,4 @@
-// Rendering to a quality (issue 15) on every shipped scene and on a generated
+// Rendering to a quality on every shipped scene and on a generated
 // field: for each preset, the depth and mean samples chosen, the PSNR and
 // largest error measured against a converged render (double, 512 samples,
 // kDeepReferenceDepth), against the fixed preset's settings

@@ -1,5 +1,5 @@
 // Rendering to Preview and Final on generated fields that nothing was tuned
-// on (issue 15): other counts, spreads and seeds than test_quality_target's
+// on: other counts, spreads and seeds than test_quality_target's
 // and bench_quality's. For each render: the depth chosen, the largest error
 // the plan's probe showed for it, and what the render measured against a
 // converged reference (double, 512 samples, kDeepReferenceDepth). Where a

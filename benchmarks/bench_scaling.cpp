@@ -1,4 +1,4 @@
-// Scene size against render time (issue 12): a field of N small matte, mirror
+// Scene size against render time: a field of N small matte, mirror
 // and glass spheres on the seed's checker floor (app/field/sphere_field.h),
 // rendered in one run by our tracer in float and double, by brute force, and,
 // when built with Embree 3, by the Embree tracer of embree_tracer.h. Prints

@@ -1,4 +1,4 @@
-// Opening a large scene file (issue 12): writes a scene of N spheres with
+// Opening a large scene file: writes a scene of N spheres with
 // saveScene, then loads it with loadScene in a fresh process, three times, and
 // prints the load time and that process's peak memory. A fresh process per
 // load, because the writing side's memory would otherwise hide the loader's.

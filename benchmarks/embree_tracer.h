@@ -1,4 +1,4 @@
-// A Whitted tracer built on Intel Embree 3 (issue 12): the peer bench_scaling
+// A Whitted tracer built on Intel Embree 3: the peer bench_scaling
 // races, never part of the editor or the renderer. Same camera, shading rules
 // (SPEC §3, core/tracer/scalar_ray_tree.h), 1 sample per pixel, float. Camera rays go through
 // Embree in 16-wide packets (rtcIntersect16); secondary and shadow rays one by

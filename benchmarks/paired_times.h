@@ -1,4 +1,4 @@
-// Timing a render to a target against a fixed render, in pairs (issue 15):
+// Timing a render to a target against a fixed render, in pairs:
 // shared by bench_quality and bench_quality_fields.
 // Times of a few milliseconds say little alone on a shared machine: where ours
 // and the fixed render together take under a second, they are run again in

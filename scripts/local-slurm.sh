@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A single-node Slurm on this machine, for the farm's tests and for trying
-# whitted-farm without a cluster (issue 14): munged with its own key, slurmctld
+# whitted-farm without a cluster: munged with its own key, slurmctld
 # and one slurmd, all from Debian's packages (slurmctld slurmd slurm-client
 # munge), without systemd, as root or as a normal user.
 #
@@ -16,7 +16,7 @@
 # crash starts afresh. Ports: $WHITTED_SLURM_PORT and the one after it
 # (default 16817).
 #
-# Settings measured with Slurm 22.05 (issue 14): proctrack/linuxproc,
+# Settings measured with Slurm 22.05: proctrack/linuxproc,
 # task/none and jobacct_gather/none need no cgroups or systemd; the scheduler
 # runs every second, so an array job and a job depending on it finish about 5
 # s after they are submitted; kill_invalid_depend cancels a job whose

@@ -1,4 +1,4 @@
-// Plans kept for the next asker of the same plan (issue 15). In the editor the
+// Plans kept for the next asker of the same plan. In the editor the
 // view's render to a target, the Render tab's prediction of it and an export
 // at the scene's size each plan the same render, and planning is
 // deterministic: the same scene, target and sample limit give the same plan

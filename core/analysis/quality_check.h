@@ -1,4 +1,4 @@
-// Checking a quality target against a converged render (issue 15): what the
+// Checking a quality target against a converged render: what the
 // tests on generated scenes assert and what bench_quality prints for
 // docs/tradeoff.md, in one place.
 #pragma once

@@ -1,4 +1,4 @@
-// bench_quality's measurements as CSV (issue 15): each render to a quality
+// bench_quality's measurements as CSV: each render to a quality
 // on one scene against the fixed preset of the same name. bench_quality
 // writes them (WHITTED_QUALITY_CSV) and `whitted-tradeoff --report
 // --quality-csv` turns them into docs/tradeoff.md's table of targets

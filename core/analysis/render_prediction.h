@@ -1,6 +1,6 @@
 // What a render with a scene's own settings (samples per pixel, max depth,
 // precision) will cost and how far from converged it will be, predicted for
-// a scene never measured (issue 15, item 3), from small probe renders of it:
+// a scene never measured, from small probe renders of it:
 //
 // - What the depth cuts off and what float changes: planQuality()'s probes,
 //   the depth measured against three levels deeper (quality_target.h).

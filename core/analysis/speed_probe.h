@@ -1,5 +1,5 @@
 // How long a render of a scene will take on this machine, from timed renders
-// of a few of its own tiles (issue 15, item 3: the Render tab's predicted time).
+// of a few of its own tiles (the Render tab's predicted time).
 //
 // A ray's cost depends on the scene (how many spheres a ray passes near),
 // on the sample (a pixel's centre, traced in coherent rows, costs a half to a

@@ -1,5 +1,5 @@
 // What a render to a quality target (quality_target.h) will take, predicted
-// before it runs (issue 15, item 3: the Render tab's figures for Draft,
+// before it runs (the Render tab's figures for Draft,
 // Preview and Final, which choose their own depth and samples per scene).
 //
 // Planning is deterministic, so the prediction makes the very plan the

@@ -1,4 +1,4 @@
-// The speed/accuracy trade (issue 5): renders of one scene over a grid of
+// The speed/accuracy trade: renders of one scene over a grid of
 // samples per pixel, max_depth, precision and resolution scale, each timed and
 // compared with a reference render. Qt-free, shared by whitted-tradeoff and the
 // editor's Measure action.

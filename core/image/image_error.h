@@ -1,6 +1,6 @@
-// Error of a render against a reference image, in the figures issue 5 reports:
-// RMSE and PSNR of the linear image and of the 8-bit sRGB image a user sees,
-// and the largest per-pixel difference (displayDifference, core/image/image_compare.h).
+// Error of a render against a reference image: RMSE and PSNR of the linear image
+// and of the 8-bit sRGB image a user sees, and the largest per-pixel difference
+// (displayDifference, core/image/image_compare.h).
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-// A bounding volume hierarchy over the scene's spheres (issue 12), so that a ray
+// A bounding volume hierarchy over the scene's spheres, so that a ray
 // tests the few spheres near it instead of every one. Built once per render by
 // code compiled with the project's flags, then read by whichever tracing kernel
 // runs (kernel_dispatch.h); the traversal, compiled per instruction set, is in

@@ -1,5 +1,5 @@
 // Whether the editor renders to the scene's samples and depth or to a quality
-// target (issue 15): Draft, Preview or Final, each resolved per scene by
+// target: Draft, Preview or Final, each resolved per scene by
 // planQuality() at every render. Chosen in the Render tab, by the presets
 // (Ctrl+1 to Ctrl+3) and in the Export dialog. An editor setting like the
 // view's camera, not part of the scene file (SPEC §4 has no such field), so

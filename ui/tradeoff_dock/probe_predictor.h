@@ -1,4 +1,4 @@
-// The Render tab's predictions for a scene never measured (issue 15, item 3):
+// The Render tab's predictions for a scene never measured:
 // core's predictRender() (or, when the view renders to a target,
 // predictRenderTo()) on a thread of its own, a moment after the last
 // edit (it renders small probes of the scene, a few tenths of a second on a

@@ -1,4 +1,4 @@
-// Issue 14, items 3 and 4: the single-node Slurm of scripts/local-slurm.sh,
+// The single-node Slurm of scripts/local-slurm.sh,
 // started and stopped around these tests by the CTest fixture local_slurm,
 // runs what whitted-farm submits, and what a farm relies on: the regions of
 // the seed as an array job and a merge job that depends on it give the local

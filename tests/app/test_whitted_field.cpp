@@ -1,4 +1,4 @@
-// End-to-end tests of whitted-field (issue 12): its fields load as scenes, the
+// End-to-end tests of whitted-field: its fields load as scenes, the
 // same flags give the same file, scenes/field.json is its output, and a field
 // renders the same through the sphere BVH as by brute force.
 #include <algorithm>

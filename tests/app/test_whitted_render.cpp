@@ -209,7 +209,7 @@ TEST(WhittedRender, UnknownOutputExtension_ExitsTwoAndWritesNothing) {
     EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
 }
 
-// ---- frames and regions (issue 14) -------------------------------------------------
+// ---- frames and regions ------------------------------------------------------------
 
 // Four regions rendered apart and merged: the whole render, bit for bit.
 TEST(WhittedRender, RegionsMergeIntoTheWholeRenderBitForBit) {
@@ -490,7 +490,7 @@ TEST(WhittedRender, LoadsOpenImageIOOnlyToWriteAnImage) {
     EXPECT_NE(wrote.err.find("libOpenImageIO"), std::string::npos);
 }
 
-// ---- rendering to a quality (issue 15) ---------------------------------------
+// ---- rendering to a quality --------------------------------------------------
 
 TEST(WhittedRender, QualityFinal_MeetsItsTargetAgainstAConvergedRenderAndSaysWhy) {
     TempDir dir;

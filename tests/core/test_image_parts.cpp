@@ -1,4 +1,4 @@
-// Issue 14, items 1 and 2: a region of a render equals that part of the whole
+// A region of a render equals that part of the whole
 // render bit for bit; parts written as OpenEXR keep their place and merge
 // back into the whole; a turntable's frame is a pure function of the scene.
 #include <cmath>

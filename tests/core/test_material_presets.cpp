@@ -1,4 +1,4 @@
-// The material presets (issue 11, item 8): valid scene materials with unique
+// The material presets: valid scene materials with unique
 // names, and the finishes their names promise.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Property test (issue 4): camera rays against random spheres, in float and in
+// Property test: camera rays against random spheres, in float and in
 // double, checked against a quad-precision answer.
 //
 // Spheres of radius 1e-4 to 1e4 (log-uniform), at 1.001 to 1e4 (float) or 1e7

@@ -1,9 +1,9 @@
-// Numerics tests (issue 4): the seed scene must look the same however it is
+// Numerics tests: the seed scene must look the same however it is
 // scaled or moved, and float must agree with double on it.
 //
 // Every comparison uses compareImages() (core/image/image_compare.h): per pixel the
 // largest channel difference after the sRGB curve, so "within 1/255" means one
-// step of an 8-bit display value. Thresholds are the issue's:
+// step of an 8-bit display value. The thresholds:
 //  - scaled by 2^k, k in [-20, 20]: bit-identical (exact scaling; any difference
 //    exposes an absolute epsilon or a scale-dependent branch);
 //  - scaled by 10^k: >= 99.9 % of pixels within 1/255 (float, k in [-4, 4]),

@@ -1,4 +1,4 @@
-// Property test (issue 4), pbrt style: rays spawned from a hit never find their
+// Property test, pbrt style: rays spawned from a hit never find their
 // own surface again, and rays going into the sphere always find its far side.
 //
 // Spheres of radius 1e-4 to 1e4 placed up to 1e6 (float) or 1e12 (double) from the

@@ -1,4 +1,4 @@
-// Numerics tests (issue 4): no NaN or Inf anywhere, no sentinel distance that
+// Numerics tests: no NaN or Inf anywhere, no sentinel distance that
 // overflows float, and hand-computed pixels for the awkward configurations: a
 // camera or a light inside a sphere, camera up nearly parallel to the view, a light
 // between a lit sphere and an occluder behind it, total internal reflection.

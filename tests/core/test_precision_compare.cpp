@@ -216,7 +216,7 @@ TEST(CompareScenes, IorLowered_TirCountIsTheRingBetweenTheCriticalAngles) {
     std::printf("total internal reflection flips in %zu of %zu pixels\n", expected, c.pixels);
 }
 
-// The contract's figure for the seed (issue 4): at most 0.1 % of pixels differ by
+// The contract's figure for the seed: at most 0.1 % of pixels differ by
 // more than 2/255 between float and double.
 TEST(ComparePrecisions, SeedScene_FloatAndDoubleAgreeAlmostEverywhere) {
     const Scene seed = test::seedScene();

@@ -1,4 +1,4 @@
-// Rendering to a quality (core/analysis/quality_target.h, issue 15), checked
+// Rendering to a quality (core/analysis/quality_target.h), checked
 // where the presets were never fitted: random fields of matte, mirror and
 // glass balls (app/field), each against a converged reference (double, 512
 // samples a pixel, depth 14). The targets must be met in at least 95% of the

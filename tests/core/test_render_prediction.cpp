@@ -1,10 +1,10 @@
-// Predictions for scenes never measured (core/analysis/render_prediction.h,
-// issue 15, item 3), checked on random fields of matte, mirror and glass
-// balls that no constant of the prediction was fitted on (those come from the
-// shipped scenes): the predicted PSNR within 2 dB of what the render then
-// measures against a converged one (double, 512 samples, depth 14), the
-// predicted rays within 25% of those it traces. Rays, not seconds: a count
-// does not depend on the machine's load (bench_prediction prints seconds).
+// Predictions for scenes never measured (core/analysis/render_prediction.h),
+// checked on random fields of matte, mirror and glass balls that no constant of
+// the prediction was fitted on (those come from the shipped scenes): the
+// predicted PSNR within 2 dB of what the render then measures against a
+// converged one (double, 512 samples, depth 14), the predicted rays within 25%
+// of those it traces. Rays, not seconds: a count does not depend on the
+// machine's load (bench_prediction prints seconds).
 #include <cmath>
 #include <cstdint>
 #include <cstdio>

@@ -424,7 +424,7 @@ TEST(Renderer, StopBeforeStart_ReturnsIncompleteAtOnce) {
     EXPECT_EQ(r.rays.total(), 0u);
 }
 
-// ---- adaptive renders (RenderOptions::adaptive, issue 15) --------------------
+// ---- adaptive renders (RenderOptions::adaptive) ------------------------------
 
 RenderOptions adaptiveOptions(int threads, bool progressive, double allowedMse, int maxSamples) {
     RenderOptions o = options(threads, 16, progressive);

@@ -1,9 +1,8 @@
-// Predictions of a render to a target (core/analysis/target_prediction.h,
-// issue 15, item 3) on random fields of matte, mirror and glass balls that
-// nothing was fitted on: the plan the render then makes, and its samples,
-// estimate and rays, from a quarter of the picture's tiles. Rays, not
-// seconds: a count does not depend on the machine's load (bench_prediction
-// --targets prints the seconds).
+// Predictions of a render to a target (core/analysis/target_prediction.h) on
+// random fields of matte, mirror and glass balls that nothing was fitted on:
+// the plan the render then makes, and its samples, estimate and rays, from a
+// quarter of the picture's tiles. Rays, not seconds: a count does not depend on
+// the machine's load (bench_prediction --targets prints the seconds).
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -45,7 +44,7 @@ TEST(TargetPrediction, GeneratedFields_SamplesRaysAndEstimateOfTheRenderItPredic
             EXPECT_EQ(p.plan.why, r.plan.why);
             EXPECT_NEAR(p.meanSamples / reached.meanSamples, 1.0, 0.25);
             EXPECT_NEAR(p.psnrDb, rendered, 2.0);
-            // Within the issue's 25%, and closer: scaled by the pixels' ratio the
+            // Within 25%, and closer: scaled by the pixels' ratio the
             // tiles' rays were 0.86 to 1.09 of the render's, by the coarse
             // picture's rays 1.01 to 1.07. Since the render looks past a
             // tile's border (unseenLargest(), estimateNearbyLargest()), the

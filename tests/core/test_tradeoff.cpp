@@ -1,4 +1,4 @@
-// The speed/accuracy trade (issue 5): error figures with hand-computed values,
+// The speed/accuracy trade: error figures with hand-computed values,
 // rows that behave as the trade says (more samples, less error; depth past the
 // longest chain changes nothing), the truncation map, the Pareto front and the
 // progressive curve.

@@ -1,4 +1,4 @@
-// libFuzzer entry point for the scene loader (issue 6): any bytes must end in a
+// libFuzzer entry point for the scene loader: any bytes must end in a
 // loaded scene or a SceneError with a message, never a crash, a hang or an
 // unbounded allocation (the runner caps time and memory, see fuzz/README.md).
 // A loaded scene must also survive the round trip the editor relies on: its

@@ -1,4 +1,4 @@
-// Shared by the numerics property tests (issue 4, tests/core/test_numerics_*.cpp):
+// Shared by the numerics property tests (tests/core/test_numerics_*.cpp):
 // seeds that print and replay, random scenes, a quad-precision reference for
 // ray against sphere, and the tracer's shadow query for one ray.
 //

@@ -1,4 +1,4 @@
-// Crash recovery (issue 6): edits are copied to a recovery file after each
+// Crash recovery: edits are copied to a recovery file after each
 // burst, the copy goes away when the scene is saved or the editor exits
 // normally, and after the editor is killed with SIGKILL the next start offers
 // the copy back.

@@ -1,8 +1,7 @@
-// GUI tests of the editor's commands as a newcomer meets them (issue 11, items
-// 1, 2, 3, 9, 13's preset tick and 14): every shortcut the Keyboard and Mouse
-// help lists, pressed in a shown window; Ctrl+Z from inside a field; Save As
-// without ".json"; the export size locked to the scene's aspect; the Help
-// menu, the About box, the tool bar and the tool tips.
+// GUI tests of the editor's commands as a newcomer meets them: every shortcut
+// the Keyboard and Mouse help lists, pressed in a shown window; Ctrl+Z from
+// inside a field; Save As without ".json"; the export size locked to the
+// scene's aspect; the Help menu, the About box, the tool bar and the tool tips.
 #include <QAbstractButton>
 #include <QApplication>
 #include <QComboBox>
@@ -126,7 +125,7 @@ class EditorCommandsTest : public EditorWindowTest {
     RenderView* view = nullptr;
 };
 
-// Item 1 and 14: the help's table is what the keys do. Every shortcut it
+// The help's table is what the keys do. Every shortcut it
 // lists is pressed, the editor lives on, and Home and F did their job.
 TEST_F(EditorCommandsTest, EveryListedShortcut_PressedInShownWindow_EditorLivesOn) {
     const QList<ControlRow> rows = controlRows(window.get(), RenderView::mouseControls());
@@ -177,7 +176,7 @@ TEST_F(EditorCommandsTest, EveryListedShortcut_PressedInShownWindow_EditorLivesO
     EXPECT_FALSE(window->isVisible()) << "Ctrl+Q closes the unmodified window";
 }
 
-// Item 2: scene undo works while the focus is still in the field just edited.
+// Scene undo works while the focus is still in the field just edited.
 TEST_F(EditorCommandsTest, CtrlZ_WithFocusInEditedField_UndoesTheSceneEdit) {
     window->scenePanel()->select(ItemKind::Sphere, 0);
     auto* radius = window->findChild<QDoubleSpinBox*>(QStringLiteral("sphereRadius"));
@@ -226,7 +225,7 @@ TEST_F(EditorCommandsTest, ShiftA_AddsToTheListShown_InTheFilterItIsTyped) {
     EXPECT_EQ(doc->scene().spheres.size(), spheres + 1);
 }
 
-// Item 3: a name typed without ".json" is saved as name.json.
+// A name typed without ".json" is saved as name.json.
 TEST_F(EditorCommandsTest, SaveAs_NameWithoutExtension_WritesDotJson) {
     const QString typed = QString::fromStdString((dir.path() / "my scene").string());
     const QString folder = QString::fromStdString(dir.path().string());
@@ -253,7 +252,7 @@ TEST_F(EditorCommandsTest, SaveAs_NameWithoutExtension_WritesDotJson) {
     EXPECT_EQ(loadScene((dir.path() / "my scene.json").string()), doc->scene());
 }
 
-// Item 9: the export size keeps the scene's aspect unless unlocked, and says so.
+// The export size keeps the scene's aspect unless unlocked, and says so.
 TEST_F(EditorCommandsTest, ExportSize_LockedToSceneAspect_UnlockedSaysFramingDiffers) {
     Scene scene = doc->scene();
     scene.render.width = 640;
@@ -294,7 +293,7 @@ TEST_F(EditorCommandsTest, ExportSize_LockedToSceneAspect_UnlockedSaysFramingDif
     EXPECT_TRUE(note->isVisible());
 }
 
-// Issue 14, item 1: the export dialog offers a turntable; its frames are
+// The export dialog offers a turntable; its frames are
 // numbered files, frame 1 the still the same dialog exports without one.
 TEST_F(EditorCommandsTest, ExportTurntable_WritesNumberedFramesTheFirstOfThemTheStill) {
     Scene scene = doc->scene();
@@ -322,7 +321,7 @@ TEST_F(EditorCommandsTest, ExportTurntable_WritesNumberedFramesTheFirstOfThemThe
     EXPECT_NE(readImage(dir.path() / "spin.0002.png"), readImage(dir.path() / "still.png"));
 }
 
-// Item 9: the Render tab picks a common size, one undo step, and the view frames it.
+// The Render tab picks a common size, one undo step, and the view frames it.
 TEST_F(EditorCommandsTest, RenderTabCommonSize_SetsSizeInOneStep_ViewTakesItsAspect) {
     auto* common = window->findChild<QComboBox*>(QStringLiteral("renderCommonSize"));
     ASSERT_NE(common, nullptr);
@@ -339,7 +338,7 @@ TEST_F(EditorCommandsTest, RenderTabCommonSize_SetsSizeInOneStep_ViewTakesItsAsp
     EXPECT_EQ(doc->scene().render.width, kWidth);
 }
 
-// Item 13: the Render menu ticks the preset the settings match, and none when custom.
+// The Render menu ticks the preset the settings match, and none when custom.
 TEST_F(EditorCommandsTest, PresetShortcut_TicksThatPreset_CustomTicksNone) {
     QTest::keySequence(window.get(), QKeySequence(QStringLiteral("Ctrl+2")));
     EXPECT_TRUE(action(QStringLiteral("presetPreview"))->isChecked());
@@ -351,7 +350,7 @@ TEST_F(EditorCommandsTest, PresetShortcut_TicksThatPreset_CustomTicksNone) {
     EXPECT_TRUE(action(QStringLiteral("presetPreview"))->isChecked());
 }
 
-// Item 14: F1 opens the table of every control, the camera keys and the mouse among them.
+// F1 opens the table of every control, the camera keys and the mouse among them.
 TEST_F(EditorCommandsTest, KeyboardHelp_ListsEveryShortcutAndTheMouse) {
     QTest::keySequence(window.get(), QKeySequence::HelpContents);
     auto* dialog = window->findChild<QDialog*>(QStringLiteral("keyboardHelp"));
@@ -405,7 +404,7 @@ TEST_F(EditorCommandsTest, About_NamesVersionQtAndOpenImageIO) {
     box->close();
 }
 
-// Item 14: a tool bar with the common commands, icons, and keys in every tool tip.
+// A tool bar with the common commands, icons, and keys in every tool tip.
 TEST_F(EditorCommandsTest, ToolBar_HasTheCommonCommandsWithIconsAndShortcutTips) {
     auto* bar = window->findChild<QToolBar*>(QStringLiteral("mainToolBar"));
     ASSERT_NE(bar, nullptr);
@@ -432,7 +431,7 @@ TEST_F(EditorCommandsTest, ToolBar_HasTheCommonCommandsWithIconsAndShortcutTips)
     }
 }
 
-// Item 14: hovering any field of the panels says what it edits.
+// Hovering any field of the panels says what it edits.
 TEST_F(EditorCommandsTest, EveryFieldOfThePanels_HasAToolTip) {
     int fields = 0;
     for (QWidget* w : window->findChildren<QWidget*>()) {

@@ -374,7 +374,7 @@ TEST_F(MainWindowTest, RadiusStepUp_FromPointTwo_GivesExactlyPointThree) {
     EXPECT_EQ(radius->text(), QStringLiteral("0.3"));
 }
 
-// Export errors (issue 6): a missing directory, a full disk and an unknown
+// Export errors: a missing directory, a full disk and an unknown
 // extension each end the export with a message naming the file; no file is
 // left, the scene is untouched and unmodified.
 TEST_F(MainWindowTest, ExportErrors_MessageNamesTheFileAndNothingIsLeftOrChanged) {
@@ -405,7 +405,7 @@ TEST_F(MainWindowTest, ExportErrors_MessageNamesTheFileAndNothingIsLeftOrChanged
     EXPECT_FALSE(doc->isModified());
 }
 
-// The largest render the format allows (issue 6): the editor starts it, shows
+// The largest render the format allows: the editor starts it, shows
 // its first frame, and the next edit cancels it at once; the small scene's
 // render then arrives whole. Figures printed, bounds generous.
 TEST_F(MainWindowTest, LargestScene_FirstFrameThenAnEditCancelsItAtOnce) {
@@ -443,7 +443,7 @@ TEST_F(MainWindowTest, LargestScene_FirstFrameThenAnEditCancelsItAtOnce) {
     EXPECT_TRUE(sameImage(view->frame(), coreRender(doc->scene())));
 }
 
-// Stress (issue 6): thousands of random edits, undos and redos as fast as the
+// Stress: thousands of random edits, undos and redos as fast as the
 // GUI thread can make them while the worker renders (events processed after
 // each, so renders start and are abandoned all the time). Nothing crashes or
 // hangs, and once the edits stop the view shows exactly a fresh render of the

@@ -112,7 +112,7 @@ TEST_F(PrecisionViewTest, Toggled_ShowsHeatMapAndCountsOfComparePrecisions) {
     ASSERT_TRUE(showDock());
     EXPECT_TRUE(toggle->isChecked());
     expectShowsComparisonOfCurrentScene();
-    // The seed in float and double (issue 4): well under 0.1 % of pixels over 2/255.
+    // The seed in float and double: well under 0.1 % of pixels over 2/255.
     EXPECT_LT(pixelsIn(label("precisionOver2")), kWidth * kHeight / 1000);
     EXPECT_TRUE(label("precisionOver1")->text().contains(QStringLiteral("%")));
     EXPECT_TRUE(label("precisionStatus")->text().contains(QStringLiteral("160 × 120")));
@@ -216,7 +216,7 @@ TEST_F(PrecisionViewTest, FloatRangeWarning_HiddenForTheSeed) {
     EXPECT_FALSE(window->floatRangeWarning()->isVisibleTo(window.get()));
 }
 
-// Needs the real thresholds of core/analysis/float_range.cpp (measured by issue 4's sweep):
+// Needs the real thresholds of core/analysis/float_range.cpp (measured by the numerics sweep):
 // while floatRangeProblem() is a placeholder that finds no problem anywhere, it skips.
 TEST_F(PrecisionViewTest, FloatRangeWarning_SceneScaledBy1e30_ClickSwitchesToDoubleUndoable) {
     const Scene far = scaledScene(doc->scene(), 1e30);

@@ -1,7 +1,7 @@
-// GUI tests of the property panels as a newcomer meets them (issue 11, items 7,
-// 8, 10 and 11): refused edits in the user's words, the sphere's material on
-// the sphere page with Make unique, material presets, and slider and arrow
-// steps that suit a small ball. A shown MainWindow on the seed scene at 160x120.
+// GUI tests of the property panels as a newcomer meets them: refused edits in
+// the user's words, the sphere's material on the sphere page with Make unique,
+// material presets, and slider and arrow steps that suit a small ball. A shown
+// MainWindow on the seed scene at 160x120.
 #include <QAbstractItemView>
 #include <QApplication>
 #include <QComboBox>
@@ -86,7 +86,7 @@ class PropertyPanelsTest : public EditorWindowTest {
     QString lastUndoText() { return doc->undoStack()->text(doc->undoStack()->count() - 1); }
 };
 
-// Item 11: a typed radius of 0 is refused with the field's label and the
+// A typed radius of 0 is refused with the field's label and the
 // sphere's name, and nothing changes.
 TEST_F(PropertyPanelsTest, RadiusTypedZero_RefusedInUsersWords_SceneUnchanged) {
     window->scenePanel()->select(ItemKind::Sphere, kBlueBall);
@@ -105,7 +105,7 @@ TEST_F(PropertyPanelsTest, RadiusTypedZero_RefusedInUsersWords_SceneUnchanged) {
     box->close();
 }
 
-// Item 11: renaming a sphere to a taken name, in the list's own editor.
+// Renaming a sphere to a taken name, in the list's own editor.
 TEST_F(PropertyPanelsTest, RenameToTakenName_RefusedInUsersWords_SceneUnchanged) {
     window->scenePanel()->select(ItemKind::Sphere, kBlueBall);
     const Scene before = doc->scene();
@@ -124,7 +124,7 @@ TEST_F(PropertyPanelsTest, RenameToTakenName_RefusedInUsersWords_SceneUnchanged)
     box->close();
 }
 
-// Issue 12: the scene panel filters its list by name; what the buttons do
+// The scene panel filters its list by name; what the buttons do
 // applies to the item the filtered list shows, and an item picked elsewhere
 // (the picture) that the filter hides is shown again.
 TEST_F(PropertyPanelsTest, SceneFilter_ShowsMatchingNames_DeleteRemovesTheShownOne) {
@@ -154,7 +154,7 @@ TEST_F(PropertyPanelsTest, SceneFilter_ShowsMatchingNames_DeleteRemovesTheShownO
     EXPECT_EQ(list->currentIndex().data().toString(), QStringLiteral("white ball"));
 }
 
-// Item 11: every field an edit can break reads as a sentence about a named item.
+// Every field an edit can break reads as a sentence about a named item.
 TEST(EditMessages, EveryValidationProblem_NamesTheItemAndTheFieldLabel) {
     const Scene seed = test::seedScene();
     const std::pair<std::function<void(Scene&)>, const char*> cases[] = {
@@ -197,7 +197,7 @@ TEST(EditMessages, EveryValidationProblem_NamesTheItemAndTheFieldLabel) {
     }
 }
 
-// Item 7: Make unique's names count on from the original's.
+// Make unique's names count on from the original's.
 TEST(MaterialSharing, CopyNames_CountOn_SharersCounted) {
     Scene s = test::seedScene();
     EXPECT_EQ(numberedMaterialName(s, "blue"), "blue 2");
@@ -217,7 +217,7 @@ TEST(MaterialSharing, CopyNames_CountOn_SharersCounted) {
     EXPECT_EQ(numberedMaterialName(s, "glass\t 5"), "glass\t 5 2");
 }
 
-// Item 7: the sphere page shows its material and who shares it.
+// The sphere page shows its material and who shares it.
 TEST_F(PropertyPanelsTest, SpherePage_ShowsMaterialAndHowManySpheresShareIt) {
     window->scenePanel()->select(ItemKind::Sphere, kPurpleBall);
     auto* material = child<QComboBox>("sphereMaterial");
@@ -239,7 +239,7 @@ TEST_F(PropertyPanelsTest, SpherePage_ShowsMaterialAndHowManySpheresShareIt) {
     EXPECT_TRUE(child<ColorButton>("sphereMaterialDiffuse")->isVisibleTo(window.get()));
 }
 
-// Item 7: the colour on the sphere page is its material's; the ball turns red.
+// The colour on the sphere page is its material's; the ball turns red.
 TEST_F(PropertyPanelsTest, SpherePageColour_EditsItsMaterial_BallPixelsChange) {
     window->scenePanel()->select(ItemKind::Sphere, kBlueBall);
     const QImage before = window->renderView()->frame();
@@ -255,7 +255,7 @@ TEST_F(PropertyPanelsTest, SpherePageColour_EditsItsMaterial_BallPixelsChange) {
     EXPECT_EQ(background.changed, 0) << "the background stays";
 }
 
-// Item 7: Make unique gives this ball a copy; a colour edit then changes it alone.
+// Make unique gives this ball a copy; a colour edit then changes it alone.
 TEST_F(PropertyPanelsTest, MakeUnique_CopyForThisSphereOnly_OneUndoStep) {
     frameAfter([&] {
         ASSERT_TRUE(doc->edit(QStringLiteral("share"),
@@ -292,7 +292,7 @@ TEST_F(PropertyPanelsTest, MakeUnique_CopyForThisSphereOnly_OneUndoStep) {
     EXPECT_EQ(doc->scene().spheres[kBlueBall].material, "blue");
 }
 
-// Item 8: the Preset combo applies each preset as one step, keeping the name.
+// The Preset combo applies each preset as one step, keeping the name.
 TEST_F(PropertyPanelsTest, PresetCombo_EachPresetSetsItsValues_OneStepKeepsName) {
     window->scenePanel()->select(ItemKind::Material, 0);
     auto* combo = child<QComboBox>("materialPreset");
@@ -312,7 +312,7 @@ TEST_F(PropertyPanelsTest, PresetCombo_EachPresetSetsItsValues_OneStepKeepsName)
     EXPECT_EQ(doc->scene().materials[0].ior, 1.33) << "Water is last";
 }
 
-// Item 8: a glass ball shows the floor through it.
+// A glass ball shows the floor through it.
 TEST_F(PropertyPanelsTest, GlassPreset_BallShowsWhatIsBehindIt) {
     window->scenePanel()->select(ItemKind::Material, 0);
     auto* combo = child<QComboBox>("materialPreset");
@@ -339,7 +339,7 @@ TEST_F(PropertyPanelsTest, GlassPreset_BallShowsWhatIsBehindIt) {
     EXPECT_GT(notBlue, lower / 3) << "through the glass the grey floor shows";
 }
 
-// Item 8: Add on the materials tab offers the presets.
+// Add on the materials tab offers the presets.
 TEST_F(PropertyPanelsTest, AddMaterialMenu_Glass_AddsGlassMaterialAndShowsIt) {
     window->scenePanel()->select(ItemKind::Material, 0);
     QMenu* menu = child<QMenu>("addMaterialMenu");
@@ -361,7 +361,7 @@ TEST_F(PropertyPanelsTest, AddMaterialMenu_Glass_AddsGlassMaterialAndShowsIt) {
     EXPECT_EQ(doc->scene().materials.back().name, "glass 2");
 }
 
-// Item 10: a 0.05 ball's radius slider moves a few percent a step, Shift finer;
+// A 0.05 ball's radius slider moves a few percent a step, Shift finer;
 // its centre's arrows move it by 0.01, Shift by 0.001.
 TEST_F(PropertyPanelsTest, SmallBall_SliderAndArrowSteps_SmallAndFinerWithShift) {
     window->scenePanel()->select(ItemKind::Sphere, kBlueBall);

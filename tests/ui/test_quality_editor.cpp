@@ -1,4 +1,4 @@
-// Issue 15 in the editor: the presets render to their quality. A preset's
+// The presets in the editor render to their quality. A preset's
 // shortcut makes its target the one the view renders to; each render chooses
 // its depth for the scene and samples until the estimate is under the target,
 // and the status bar says what it chose and reached. "Render to" in the

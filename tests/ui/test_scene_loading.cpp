@@ -1,4 +1,4 @@
-// Opening a large scene file in the editor (issue 12): MainWindow::openFile,
+// Opening a large scene file in the editor: MainWindow::openFile,
 // the path of File > Open, recent files and the command line, reads the file
 // on a worker thread, reports its progress up to the file's size while the
 // event loop keeps running, and a file refused late leaves the open scene and

@@ -233,7 +233,7 @@ TEST_F(TradeoffViewTest, Predictions_AfterAnEditOfTheScene_TheOldRenderNoLongerM
         << time->text().toStdString();
 }
 
-// Issue 15, item 3: once the edits pause, small probe renders predict the
+// Once the edits pause, small probe renders predict the
 // error, the rays and the time of the settings. The seed's error, checked
 // against a converged render; the time only where no render has measured it.
 TEST_F(TradeoffViewTest, Predictions_FromProbes_WithinTwoDecibelsOfTheRender) {

@@ -1,4 +1,4 @@
-// The render view as a newcomer uses it (issue 11, items 4 to 6): orbit about
+// The render view as a newcomer uses it: orbit about
 // what is under the cursor, keys and mouse turning the same way, a wheel that
 // zooms towards the cursor and never passes it, a run of camera moves as one
 // undo step, the selection outlined, lights drawn and clickable, and the name of
@@ -91,7 +91,7 @@ class ViewCameraTest : public MainWindowTest {
     }
 };
 
-// Item 4: the arrow turns about the surface at the view's centre, which stays put.
+// The arrow turns about the surface at the view's centre, which stays put.
 TEST_F(ViewCameraTest, ArrowKey_Left_OrbitsFiveDegreesAboutWhatIsAtTheCentre) {
     const Camera before = doc->scene().camera;
     const Vec3 pivot = centrePivot();
@@ -113,7 +113,7 @@ TEST_F(ViewCameraTest, ArrowKey_Left_OrbitsFiveDegreesAboutWhatIsAtTheCentre) {
     EXPECT_TRUE(sameImage(view->frame(), coreRender(doc->scene())));
 }
 
-// Item 4: one direction for keys and mouse: up raises the eye, left takes it left.
+// One direction for keys and mouse: up raises the eye, left takes it left.
 TEST_F(ViewCameraTest, UpAndLeft_KeyAndDragTurnTheSameWay) {
     const Scene start = doc->scene();
     const QPoint centre = view->imageRect().center();
@@ -133,7 +133,7 @@ TEST_F(ViewCameraTest, UpAndLeft_KeyAndDragTurnTheSameWay) {
     EXPECT_LT(leftDrag.x, 0.0);
 }
 
-// Item 4: a drag turns about the point grabbed, which stays under the cursor's
+// A drag turns about the point grabbed, which stays under the cursor's
 // start; a mark shows the pivot while dragging; the drag is one undo step.
 TEST_F(ViewCameraTest, Drag_OrbitsAboutTheGrabbedPointWithAMarkAsOneUndoStep) {
     window->scenePanel()->select(ItemKind::Sphere, -1);
@@ -163,7 +163,7 @@ TEST_F(ViewCameraTest, Drag_OrbitsAboutTheGrabbedPointWithAMarkAsOneUndoStep) {
     EXPECT_TRUE(sameImage(view->frame(), image));
 }
 
-// Item 4, the issue's own complaint: after F, orbiting keeps the sphere in the
+// After F, orbiting keeps the sphere in the
 // middle of the picture instead of sweeping it out of the frame.
 TEST_F(ViewCameraTest, FrameThenArrows_TheSphereStaysInTheMiddle) {
     window->scenePanel()->select(ItemKind::Sphere, kBlueBall);
@@ -177,7 +177,7 @@ TEST_F(ViewCameraTest, FrameThenArrows_TheSphereStaysInTheMiddle) {
     EXPECT_NEAR(seen->y, kHeight / 2.0, kPixelTolerance);
 }
 
-// Item 4: the wheel moves towards what is under the cursor, which stays under
+// The wheel moves towards what is under the cursor, which stays under
 // it, and however far it is turned never reaches or passes it.
 TEST_F(ViewCameraTest, Wheel_DolliesTowardsTheCursorAndNeverPassesIt) {
     const Camera before = doc->scene().camera;
@@ -195,7 +195,7 @@ TEST_F(ViewCameraTest, Wheel_DolliesTowardsTheCursorAndNeverPassesIt) {
     EXPECT_EQ(doc->undoStack()->count(), 1);
 }
 
-// Item 5: a run of camera moves is one step; a pause, or an undo, starts another.
+// A run of camera moves is one step; a pause, or an undo, starts another.
 TEST_F(ViewCameraTest, CameraRun_KeysWithinHalfASecondAreOneUndoStep) {
     const Camera start = doc->scene().camera;
     QUndoStack* undo = doc->undoStack();
@@ -230,7 +230,7 @@ TEST_F(ViewCameraTest, CameraRun_KeysWithinHalfASecondAreOneUndoStep) {
     EXPECT_EQ(undo->count(), 2);
 }
 
-// Item 6: the selected sphere is outlined where its silhouette is, and only then.
+// The selected sphere is outlined where its silhouette is, and only then.
 TEST_F(ViewCameraTest, SelectedSphere_IsOutlinedAtItsSilhouette) {
     const Scene& s = doc->scene();
     const Sphere& ball = s.spheres[kPurpleBall];
@@ -255,7 +255,7 @@ TEST_F(ViewCameraTest, SelectedSphere_IsOutlinedAtItsSilhouette) {
     EXPECT_EQ(overlayPixels(middle, around), 0);
 }
 
-// Item 6: a light in view is drawn as a marker; a click on it selects the light,
+// A light in view is drawn as a marker; a click on it selects the light,
 // which is then ringed; hovering names what is under the cursor.
 TEST_F(ViewCameraTest, LightMarker_ShownClickableAndNamedOnHover) {
     ASSERT_TRUE(editAndWait([](Scene& s) {
@@ -284,7 +284,7 @@ TEST_F(ViewCameraTest, LightMarker_ShownClickableAndNamedOnHover) {
     EXPECT_EQ(doc->undoStack()->count(), 1);  // the click picks, it does not edit
 }
 
-// Item 6: the seed's light is behind the camera, up and to the right: its marker
+// The seed's light is behind the camera, up and to the right: its marker
 // waits at the picture's top-right edge, and a click there selects it.
 TEST_F(ViewCameraTest, LightOutsideThePicture_MarkedAtTheEdgeTowardsIt) {
     window->scenePanel()->select(ItemKind::Sphere, -1);

@@ -1,7 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages the project needs (only those missing), then
-# configures (Release, Ninja) and builds into build/ at the repository root;
-# with --packages-only, stops after the packages.
+# configures (Release, Ninja) and builds into build/ at the repository root.
 # Safe to re-run: installed packages are skipped and the build is incremental.
 set -euo pipefail
 
@@ -57,11 +56,6 @@ if ((${#missing[@]} > 0)); then
   fi
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${missing[@]}"
-fi
-
-# scripts/run-tests.sh starts the sanitizer builds as soon as the packages are in.
-if [[ "${1:-}" == "--packages-only" ]]; then
-  exit 0
 fi
 
 # Choose the generator only on first configure; CMake refuses to switch it later.

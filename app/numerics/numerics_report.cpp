@@ -1,42 +1,33 @@
 #include "numerics_report.h"
 
+#include "base/printed.h"
+
 #include <algorithm>
-#include <cstdarg>
 #include <cstdio>
 
 namespace whitted::numerics {
 
 namespace {
 
-std::string format(const char* f, ...) __attribute__((format(printf, 1, 2)));
-std::string format(const char* f, ...) {
-    char buffer[512];
-    va_list args;
-    va_start(args, f);
-    std::vsnprintf(buffer, sizeof buffer, f, args);
-    va_end(args);
-    return buffer;
-}
-
 std::string percent(double fraction) {
-    return fraction == 0.0 ? "0" : format("%.3f%%", 100.0 * fraction);
+    return fraction == 0.0 ? "0" : printed("%.3f%%", 100.0 * fraction);
 }
 
 // In 8-bit display steps: "12.5/255".
 std::string steps(float difference) {
     const double s = double(difference) * 255.0;
     if (s == 0.0) return "0";
-    return s < 0.05 ? "<0.1/255" : format("%.1f/255", s);
+    return s < 0.05 ? "<0.1/255" : printed("%.1f/255", s);
 }
 
 std::string signedK(int k) {
-    return k > 0 ? format("+%d", k) : format("%d", k);
+    return k > 0 ? printed("+%d", k) : printed("%d", k);
 }
 
 std::string kRange(const RangeSummary& r) {
     if (!r.low) return "nowhere (k = 0 fails)";
-    if (*r.low == *r.high) return format("k = %d only", *r.low);
-    return format("k in [%d, %d]", *r.low, *r.high);
+    if (*r.low == *r.high) return printed("k = %d only", *r.low);
+    return printed("k in [%d, %d]", *r.low, *r.high);
 }
 
 std::string failures(const RangeSummary& r) {
@@ -65,8 +56,8 @@ Ask issueAsks(SweepKind kind, Precision p) {
 }
 
 std::string askText(SweepKind kind, Ask a) {
-    if (kind == SweepKind::Translate) return format("k up to %d", a.high);
-    return format("k in [%d, %d]", a.low, a.high);
+    if (kind == SweepKind::Translate) return printed("k up to %d", a.high);
+    return printed("k in [%d, %d]", a.low, a.high);
 }
 
 std::string metText(const RangeSummary& r, Ask a) {
@@ -78,7 +69,7 @@ std::string figures(const PointResult& r) {
     if (r.refused) return "the scene is refused: " + *r.refused;
     std::string s = percent(r.fractionOverOne()) + " of pixels over 1/255, " +
                     percent(r.fractionOverTwo()) + " over 2/255, largest " + steps(r.largest);
-    if (r.nonFinite) s += format(", %zu NaN/Inf pixels", r.nonFinite);
+    if (r.nonFinite) s += printed(", %zu NaN/Inf pixels", r.nonFinite);
     if (r.bitIdentical) s += *r.bitIdentical ? ", bit-identical" : ", not bit-identical";
     return s;
 }
@@ -94,7 +85,7 @@ void header(std::string& md, const ReportContext& c) {
     md += "<!-- Generated file: do not edit. -->\n";
     md += "> **Generated** by `whitted-numerics` (app/numerics/); do not edit by hand.\n";
     md += "> Regenerate with " + c.regenerate + ".\n";
-    md += format("> Settings: `%s` at %d×%d, max depth %d, %s per pixel, %s", c.sceneName.c_str(),
+    md += printed("> Settings: `%s` at %d×%d, max depth %d, %s per pixel, %s", c.sceneName.c_str(),
                  s.width, s.height, s.maxDepth, counted(s.samplesPerPixel, "sample").c_str(),
                  counted(c.threads, "thread").c_str());
     md += c.quick ? "; **quick** (reduced) sweep.\n" : ".\n";
@@ -167,7 +158,7 @@ void rangeTable(std::string& md, const std::vector<PointResult>& results,
                 (!worst || r.fractionOverOne() > worst->fractionOverOne()))
                 worst = &r;
         if (!worst) continue;
-        md += format("Offsets of 1e2 to 1e%d in %s: at worst (k = %d) ", a.high,
+        md += printed("Offsets of 1e2 to 1e%d in %s: at worst (k = %d) ", a.high,
                      std::string(precisionName(p)).c_str(), worst->point.k);
         md += figures(*worst) + ".\n\n";
     }
@@ -203,7 +194,7 @@ void pictureSection(std::string& md, const std::vector<Picture>& pictures) {
         "larger, white from 8/255 on; magenta: NaN or Inf).\n\n";
     for (const Picture& p : pictures) {
         const SweepPoint& pt = p.result.point;
-        md += format("### %s, %s, k = %s (%s)\n\n", std::string(sweepTitle(pt.kind)).c_str(),
+        md += printed("### %s, %s, k = %s (%s)\n\n", std::string(sweepTitle(pt.kind)).c_str(),
                      std::string(precisionName(pt.precision)).c_str(), signedK(pt.k).c_str(),
                      p.side.c_str());
         md += "Transform " + transformLabel(pt) + ": " + figures(p.result) + ".\n\n";
@@ -233,9 +224,9 @@ void pointTables(std::string& md, const std::vector<PointResult>& results,
                 continue;
             }
             md += percent(r.fractionOverOne()) + " | " + percent(r.fractionOverTwo()) + " | " +
-                  steps(r.largest) + " | " + format("%zu", r.nonFinite) + " | ";
+                  steps(r.largest) + " | " + printed("%zu", r.nonFinite) + " | ";
             if (bits) md += std::string(r.bitIdentical.value_or(false) ? "yes" : "**no**") + " | ";
-            md += format("%.1f ms", r.seconds * 1e3) + " | " +
+            md += printed("%.1f ms", r.seconds * 1e3) + " | " +
                   (meetsBound(r) ? "holds" : "**fails**") + " |\n";
         }
         md += "\n";
@@ -280,9 +271,9 @@ std::string csvReport(const std::vector<PointResult>& results) {
             csv += ",,,,,,,,,no," + csvField(*r.refused) + "\n";
             continue;
         }
-        csv += format("%zu,%zu,%zu,%.9g,%.9g,%.9g,%zu,", r.pixels, r.overOne, r.overTwo,
+        csv += printed("%zu,%zu,%zu,%.9g,%.9g,%.9g,%zu,", r.pixels, r.overOne, r.overTwo,
                       r.fractionOverOne(), r.fractionOverTwo(), double(r.largest), r.nonFinite);
-        csv += bits + format(",%.6f,", r.seconds) + (meetsBound(r) ? "yes" : "no") + ",\n";
+        csv += bits + printed(",%.6f,", r.seconds) + (meetsBound(r) ? "yes" : "no") + ",\n";
     }
     return csv;
 }

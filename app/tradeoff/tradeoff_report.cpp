@@ -8,12 +8,6 @@
 
 namespace whitted::tradeoff {
 
-std::string printed(const char* pattern, double a, double b) {
-    char text[96];
-    std::snprintf(text, sizeof text, pattern, a, b);
-    return text;
-}
-
 namespace {
 
 std::string fixed(double v, int decimals) {

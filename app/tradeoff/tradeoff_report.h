@@ -7,11 +7,9 @@
 #include <vector>
 
 #include "analysis/tradeoff.h"
+#include "base/printed.h"
 
 namespace whitted::tradeoff {
-
-// `pattern` (printf's, up to two doubles) filled in: the reports' figures.
-std::string printed(const char* pattern, double a, double b = 0.0);
 
 // Every point as a Markdown table, front rows in bold.
 std::string pointsTable(const std::vector<TradeoffPoint>& points);

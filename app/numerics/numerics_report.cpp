@@ -86,8 +86,8 @@ void header(std::string& md, const ReportContext& c) {
     md += "> **Generated** by `whitted-numerics` (app/numerics/); do not edit by hand.\n";
     md += "> Regenerate with " + c.regenerate + ".\n";
     md += printed("> Settings: `%s` at %d×%d, max depth %d, %s per pixel, %s", c.sceneName.c_str(),
-                 s.width, s.height, s.maxDepth, counted(s.samplesPerPixel, "sample").c_str(),
-                 counted(c.threads, "thread").c_str());
+                  s.width, s.height, s.maxDepth, counted(s.samplesPerPixel, "sample").c_str(),
+                  counted(c.threads, "thread").c_str());
     md += c.quick ? "; **quick** (reduced) sweep.\n" : ".\n";
     md += "> The same figures, machine-readable: [" + c.csvFile + "](" + c.csvFile + ").\n\n";
 }
@@ -159,7 +159,7 @@ void rangeTable(std::string& md, const std::vector<PointResult>& results,
                 worst = &r;
         if (!worst) continue;
         md += printed("Offsets of 1e2 to 1e%d in %s: at worst (k = %d) ", a.high,
-                     std::string(precisionName(p)).c_str(), worst->point.k);
+                      std::string(precisionName(p)).c_str(), worst->point.k);
         md += figures(*worst) + ".\n\n";
     }
 }
@@ -195,8 +195,8 @@ void pictureSection(std::string& md, const std::vector<Picture>& pictures) {
     for (const Picture& p : pictures) {
         const SweepPoint& pt = p.result.point;
         md += printed("### %s, %s, k = %s (%s)\n\n", std::string(sweepTitle(pt.kind)).c_str(),
-                     std::string(precisionName(pt.precision)).c_str(), signedK(pt.k).c_str(),
-                     p.side.c_str());
+                      std::string(precisionName(pt.precision)).c_str(), signedK(pt.k).c_str(),
+                      p.side.c_str());
         md += "Transform " + transformLabel(pt) + ": " + figures(p.result) + ".\n\n";
         if (p.imageFile.empty()) continue;
         md += "| render | difference |\n|---|---|\n";
@@ -272,7 +272,7 @@ std::string csvReport(const std::vector<PointResult>& results) {
             continue;
         }
         csv += printed("%zu,%zu,%zu,%.9g,%.9g,%.9g,%zu,", r.pixels, r.overOne, r.overTwo,
-                      r.fractionOverOne(), r.fractionOverTwo(), double(r.largest), r.nonFinite);
+                       r.fractionOverOne(), r.fractionOverTwo(), double(r.largest), r.nonFinite);
         csv += bits + printed(",%.6f,", r.seconds) + (meetsBound(r) ? "yes" : "no") + ",\n";
     }
     return csv;

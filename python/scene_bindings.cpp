@@ -16,8 +16,9 @@ namespace {
 // left out.
 std::string sceneText(const py::dict& d) {
     py::dict whole(d);
-    if (!whole.contains("format")) whole["format"] = "whitted-scene";
-    if (!whole.contains("version")) whole["version"] = kSceneFormatVersion;
+    const std::string format(scene_field::kFormat.key), version(scene_field::kVersion.key);
+    if (!whole.contains(format)) whole[format.c_str()] = std::string(kSceneFormatName);
+    if (!whole.contains(version)) whole[version.c_str()] = kSceneFormatVersion;
     return py::module_::import("json").attr("dumps")(whole).cast<std::string>();
 }
 

@@ -22,6 +22,7 @@ namespace whitted::detail {
 namespace {
 
 namespace od = simdjson::ondemand;
+using namespace scene_field;
 
 // Up to 19 digits simdjson rounds a number as correctly as strtod, which the
 // full reader's nlohmann uses (and an integer's double is the same exact value
@@ -76,8 +77,7 @@ bool vec3(od::value v, Vec3& out) {
 // Walks an object whose keys must be among `keys`, each at most once, and
 // the first `required` of them present; field(i, value) reads key i's value.
 template <typename Field>
-bool fields(od::value v, std::initializer_list<std::string_view> keys, int required,
-            Field&& field) {
+bool fields(od::value v, std::initializer_list<SceneField> keys, int required, Field&& field) {
     od::object object;
     if (v.get_object().get(object)) return false;
     std::uint32_t seen = 0;
@@ -86,8 +86,8 @@ bool fields(od::value v, std::initializer_list<std::string_view> keys, int requi
         od::value value;
         if (entry.unescaped_key().get(key) || entry.value().get(value)) return false;
         int i = 0;
-        for (const std::string_view k : keys) {
-            if (k == key) break;
+        for (const SceneField& k : keys) {
+            if (k.key == key) break;
             ++i;
         }
         if (i == int(keys.size()) || (seen >> i & 1u)) return false;
@@ -99,7 +99,7 @@ bool fields(od::value v, std::initializer_list<std::string_view> keys, int requi
 }
 
 bool readCamera(od::value v, Camera& c) {
-    return fields(v, {"position", "look_at", "up", "vfov_degrees"}, 2, [&](int i, od::value x) {
+    return fields(v, {kCameraPosition, kLookAt, kUp, kFieldOfView}, 2, [&](int i, od::value x) {
         switch (i) {
             case 0:
                 return vec3(x, c.position);
@@ -122,26 +122,25 @@ bool readPrecision(od::value v, Precision& out) {
 }
 
 bool readRender(od::value v, RenderSettings& r) {
-    return fields(v, {"width", "height", "max_depth", "samples_per_pixel", "precision"}, 0,
-                  [&](int i, od::value x) {
-                      switch (i) {
-                          case 0:
-                              return integer(x, r.width);
-                          case 1:
-                              return integer(x, r.height);
-                          case 2:
-                              return integer(x, r.maxDepth);
-                          case 3:
-                              return integer(x, r.samplesPerPixel);
-                          default:
-                              return readPrecision(x, r.precision);
-                      }
-                  });
+    return fields(v, {kWidth, kHeight, kDepth, kSamples, kPrecision}, 0, [&](int i, od::value x) {
+        switch (i) {
+            case 0:
+                return integer(x, r.width);
+            case 1:
+                return integer(x, r.height);
+            case 2:
+                return integer(x, r.maxDepth);
+            case 3:
+                return integer(x, r.samplesPerPixel);
+            default:
+                return readPrecision(x, r.precision);
+        }
+    });
 }
 
 bool readChecker(od::value v, std::optional<Checker>& out) {
     Checker c;
-    if (!fields(v, {"color", "size"}, 2,
+    if (!fields(v, {kCheckerColour, kCheckerSize}, 2,
                 [&](int i, od::value x) { return i == 0 ? vec3(x, c.color) : number(x, c.size); }))
         return false;
     out = c;
@@ -149,33 +148,32 @@ bool readChecker(od::value v, std::optional<Checker>& out) {
 }
 
 bool readMaterial(od::value v, Material& m) {
-    return fields(v,
-                  {"name", "diffuse", "specular", "shininess", "reflectivity", "transparency",
-                   "ior", "checker"},
-                  1, [&](int i, od::value x) {
-                      switch (i) {
-                          case 0:
-                              return text(x, m.name);
-                          case 1:
-                              return vec3(x, m.diffuse);
-                          case 2:
-                              return number(x, m.specular);
-                          case 3:
-                              return number(x, m.shininess);
-                          case 4:
-                              return number(x, m.reflectivity);
-                          case 5:
-                              return number(x, m.transparency);
-                          case 6:
-                              return number(x, m.ior);
-                          default:
-                              return readChecker(x, m.checker);
-                      }
-                  });
+    return fields(
+        v, {kName, kDiffuse, kSpecular, kShininess, kReflectivity, kTransparency, kIor, kChecker},
+        1, [&](int i, od::value x) {
+            switch (i) {
+                case 0:
+                    return text(x, m.name);
+                case 1:
+                    return vec3(x, m.diffuse);
+                case 2:
+                    return number(x, m.specular);
+                case 3:
+                    return number(x, m.shininess);
+                case 4:
+                    return number(x, m.reflectivity);
+                case 5:
+                    return number(x, m.transparency);
+                case 6:
+                    return number(x, m.ior);
+                default:
+                    return readChecker(x, m.checker);
+            }
+        });
 }
 
 bool readLight(od::value v, Light& l) {
-    return fields(v, {"name", "position", "color", "intensity"}, 2, [&](int i, od::value x) {
+    return fields(v, {kName, kLightPosition, kLightColour, kIntensity}, 2, [&](int i, od::value x) {
         switch (i) {
             case 0:
                 return text(x, l.name);
@@ -190,7 +188,7 @@ bool readLight(od::value v, Light& l) {
 }
 
 bool readSphere(od::value v, Sphere& s) {
-    return fields(v, {"name", "center", "radius", "material"}, 4, [&](int i, od::value x) {
+    return fields(v, {kName, kCentre, kRadius, kSphereMaterial}, 4, [&](int i, od::value x) {
         switch (i) {
             case 0:
                 return text(x, s.name);
@@ -219,7 +217,7 @@ bool readList(od::value v, std::vector<T>& out, bool (*readOne)(od::value, T&)) 
 
 bool readFormat(od::value v) {
     std::string_view format;
-    return !v.get_string().get(format) && format == "whitted-scene";
+    return !v.get_string().get(format) && format == kSceneFormatName;
 }
 
 bool readVersion(od::value v) {
@@ -228,31 +226,31 @@ bool readVersion(od::value v) {
 }
 
 bool readRoot(od::value root, Scene& scene) {
-    return fields(root,
-                  {"format", "version", "camera", "render", "background", "ambient", "materials",
-                   "lights", "spheres"},
-                  3, [&](int i, od::value x) {
-                      switch (i) {
-                          case 0:
-                              return readFormat(x);
-                          case 1:
-                              return readVersion(x);
-                          case 2:
-                              return readCamera(x, scene.camera);
-                          case 3:
-                              return readRender(x, scene.render);
-                          case 4:
-                              return vec3(x, scene.background);
-                          case 5:
-                              return vec3(x, scene.ambient);
-                          case 6:
-                              return readList(x, scene.materials, readMaterial);
-                          case 7:
-                              return readList(x, scene.lights, readLight);
-                          default:
-                              return readList(x, scene.spheres, readSphere);
-                      }
-                  });
+    return fields(
+        root,
+        {kFormat, kVersion, kCamera, kRender, kBackground, kAmbient, kMaterials, kLights, kSpheres},
+        3, [&](int i, od::value x) {
+            switch (i) {
+                case 0:
+                    return readFormat(x);
+                case 1:
+                    return readVersion(x);
+                case 2:
+                    return readCamera(x, scene.camera);
+                case 3:
+                    return readRender(x, scene.render);
+                case 4:
+                    return vec3(x, scene.background);
+                case 5:
+                    return vec3(x, scene.ambient);
+                case 6:
+                    return readList(x, scene.materials, readMaterial);
+                case 7:
+                    return readList(x, scene.lights, readLight);
+                default:
+                    return readList(x, scene.spheres, readSphere);
+            }
+        });
 }
 
 }  // namespace

@@ -44,29 +44,30 @@ std::vector<Material> materialsUsedBy(const Scene& scene, const std::vector<Sphe
 
 // ---- reading ------------------------------------------------------------------
 
-bool hasFormat(const json& root, const char* format) {
-    const auto it = root.find("format");
+bool hasFormat(const json& root, std::string_view format) {
+    const auto it = root.find(scene_field::kFormat.key);
     return it != root.end() && it->is_string() && it->get_ref<const std::string&>() == format;
 }
 
 // Whether `root` is a whole scene file rather than a fragment; refuses other JSON.
 bool isWholeSceneFile(const detail::Reader& reader, const json& root) {
     reader.expectObject(root, "");
-    if (hasFormat(root, "whitted-scene")) return true;
+    if (hasFormat(root, kSceneFormatName)) return true;
     if (hasFormat(root, kFragmentFormatName)) return false;
-    const auto it = root.find("format");
+    const auto it = root.find(scene_field::kFormat.key);
     reader.fail("format", "expected \"" + std::string(kFragmentFormatName) +
                               "\" or \"whitted-scene\", found " +
                               (it == root.end() ? std::string("no format") : it->dump()));
 }
 
 Scene readFragmentLists(const detail::Reader& reader, const json& root, detail::Lists& lists) {
-    reader.checkKeys(root, "", {"format", "version", "materials", "spheres", "lights"});
+    using namespace scene_field;
+    reader.checkKeys(root, "", {kFormat, kVersion, kMaterials, kSpheres, kLights});
     reader.readVersion(root, kFragmentFormatVersion);
     Scene items;
-    reader.take(root, "materials", lists.materials, items.materials);
-    reader.take(root, "lights", lists.lights, items.lights);
-    reader.take(root, "spheres", lists.spheres, items.spheres);
+    reader.take(root, kMaterials, lists.materials, items.materials);
+    reader.take(root, kLights, lists.lights, items.lights);
+    reader.take(root, kSpheres, lists.spheres, items.spheres);
     return items;
 }
 
@@ -173,12 +174,13 @@ std::vector<std::size_t> appendRenamed(const std::vector<T>& existing, const std
 std::string fragmentToJson(const Scene& scene, const std::vector<std::size_t>& spheres,
                            const std::vector<std::size_t>& lights) {
     const std::vector<Sphere> picked = pickInListOrder(scene.spheres, spheres);
+    using namespace scene_field;
     return detail::jsonDocument({
-        {"format", detail::quoted(kFragmentFormatName)},
-        {"version", std::to_string(kFragmentFormatVersion)},
-        {"materials", detail::jsonList(materialsUsedBy(scene, picked))},
-        {"spheres", detail::jsonList(picked)},
-        {"lights", detail::jsonList(pickInListOrder(scene.lights, lights))},
+        {kFormat.key, detail::quoted(kFragmentFormatName)},
+        {kVersion.key, std::to_string(kFragmentFormatVersion)},
+        {kMaterials.key, detail::jsonList(materialsUsedBy(scene, picked))},
+        {kSpheres.key, detail::jsonList(picked)},
+        {kLights.key, detail::jsonList(pickInListOrder(scene.lights, lights))},
     });
 }
 

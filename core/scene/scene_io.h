@@ -11,9 +11,11 @@
 #include <string>
 
 #include "scene/scene.h"
+#include "scene/scene_fields.h"
 
 namespace whitted {
 
+inline constexpr std::string_view kSceneFormatName = "whitted-scene";
 inline constexpr int kSceneFormatVersion = 1;
 
 // A refused scene. what() is the whole user-facing message:
@@ -55,11 +57,31 @@ using LoadProgress = std::function<void(std::uintmax_t done, std::uintmax_t tota
 Scene loadScene(const std::filesystem::path& file, const LoadProgress& progress = {},
                 const SceneFileLimit& limit = sceneFileLimit());
 
-// The semantic rules of SPEC §6 for a scene built in memory (the editor's), as
-// "<json path>: <reason>", or nothing when the scene is valid.
+// What broke a rule of SPEC §6, for a program to tell apart without reading
+// the reason's words.
+enum class ProblemKind {
+    BreaksRule,        // the field's value breaks its FieldRule
+    NotFinite,         // a number that is not finite (any rule)
+    EmptyName,         // an item without a name
+    RepeatedName,      // a name an earlier item of the list has
+    UnknownMaterial,   // a sphere's material that no material is named
+    LookAtIsPosition,  // the camera looks at where it stands
+    UpIsZero,          // the camera's up vector is zero
+    UpAlongView,       // the camera's up vector is parallel to its view
+};
+
+// The list an item is in, for a problem with one of its fields.
+enum class SceneList { None, Materials, Lights, Spheres };
+
+// The semantic rules of SPEC §6 for a scene built in memory (the editor's):
+// "<json path>: <reason>" as the loader says them, and the same typed.
 struct SceneProblem {
     std::string jsonPath;
     std::string reason;
+    ProblemKind kind = ProblemKind::BreaksRule;
+    const SceneField* field = nullptr;  // the field (scene_fields.h), when it is one's
+    SceneList list = SceneList::None;   // the item whose field it is, if any
+    std::size_t index = 0;
 };
 std::optional<SceneProblem> validateScene(const Scene& scene);
 

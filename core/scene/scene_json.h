@@ -34,7 +34,7 @@ std::string jsonList(const std::vector<T>& items) {
 }
 
 // A top-level object of the given keys and values (already JSON), one a line.
-using JsonFields = std::vector<std::pair<const char*, std::string>>;
+using JsonFields = std::vector<std::pair<std::string_view, std::string>>;
 std::string jsonDocument(const JsonFields& top);
 
 // The fewest bytes a sphere takes in a file, for an upper bound on the

@@ -1,8 +1,6 @@
 // One element of a scene file's list (a sphere, a light, a material) as the
-// SAX events that spelled it. A sphere in the shape every saved file has is
-// read straight from them, without a DOM and without building JSON paths: a
-// file of a million spheres spent most of its loading time there. Anything
-// else is replayed into a DOM for the reader, whose messages stay the rule.
+// SAX events that spelled it, replayed into a DOM of that element alone for
+// the reader (scene_json_reader.h): a file's lists are never held as one DOM.
 #pragma once
 
 #include <cstdint>
@@ -45,11 +43,6 @@ class ElementEvents {
     // The element as json::parse would have built it.
     json toJson() const;
 
-    // {"name": string, "center": [3 numbers], "radius": number, "material":
-    // string} in any order, each key once: what Reader::readSphere accepts
-    // without a word. False, and `out` unspecified, for anything else.
-    bool readCanonicalSphere(Sphere& out) const;
-
   private:
     enum class Kind : std::uint8_t {
         Null,
@@ -79,8 +72,6 @@ class ElementEvents {
         e.kind = kind;
         return e;
     }
-    bool isNumber(std::size_t i) const;
-    double numberAt(std::size_t i) const;
 
     std::vector<Event> events_;
     std::size_t size_ = 0;

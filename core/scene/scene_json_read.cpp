@@ -29,13 +29,11 @@ using detail::Reader;
 using detail::Streamed;
 using nlohmann::json;
 
-enum class ListKind { None, Materials, Lights, Spheres };
-
-ListKind listNamed(std::string_view key) {
-    if (key == "materials") return ListKind::Materials;
-    if (key == "lights") return ListKind::Lights;
-    if (key == "spheres") return ListKind::Spheres;
-    return ListKind::None;
+SceneList listNamed(std::string_view key) {
+    if (key == scene_field::kMaterials.key) return SceneList::Materials;
+    if (key == scene_field::kLights.key) return SceneList::Lights;
+    if (key == scene_field::kSpheres.key) return SceneList::Spheres;
+    return SceneList::None;
 }
 
 // Builds the DOM like json::parse, except for the lists' elements (see the
@@ -84,12 +82,12 @@ class StreamingSax {
     }
     bool start_array(std::size_t n) {
         if (frames_.size() == 1 && !frames_.back().isArray) {
-            const ListKind kind = listNamed(frames_.back().key);
-            if (kind != ListKind::None) {
+            const SceneList kind = listNamed(frames_.back().key);
+            if (kind != SceneList::None) {
                 value();
                 frames_.push_back({true, {}, -1});
                 list_ = kind;
-                if (kind == ListKind::Spheres) reserveSpheres();
+                if (kind == SceneList::Spheres) reserveSpheres();
                 return dom_.start_array(n);  // stays empty: the elements go to lists_
             }
         }
@@ -98,8 +96,8 @@ class StreamingSax {
     }
     bool end_array() {
         frames_.pop_back();
-        if (list_ != ListKind::None && !inElement_ && frames_.size() == 1) {
-            list_ = ListKind::None;
+        if (list_ != SceneList::None && !inElement_ && frames_.size() == 1) {
+            list_ = SceneList::None;
             return dom_.end_array();
         }
         return close([](auto& d) { return d.end_array(); });
@@ -124,7 +122,7 @@ class StreamingSax {
 
     // A value directly inside a streamed list starts an element of its own.
     bool startsElement() const {
-        return list_ != ListKind::None && !inElement_ && frames_.size() == 2;
+        return list_ != SceneList::None && !inElement_ && frames_.size() == 2;
     }
 
     template <typename F>
@@ -162,22 +160,18 @@ class StreamingSax {
         lists_.spheres.items.reserve(std::size_t(lists_.textBytes / detail::kShortestSavedSphere));
     }
 
-    void reset(ListKind kind) {
-        if (kind == ListKind::Materials) lists_.materials = {};
-        if (kind == ListKind::Lights) lists_.lights = {};
-        if (kind == ListKind::Spheres) lists_.spheres = {};
+    void reset(SceneList kind) {
+        if (kind == SceneList::Materials) lists_.materials = {};
+        if (kind == SceneList::Lights) lists_.lights = {};
+        if (kind == SceneList::Spheres) lists_.spheres = {};
     }
 
     void finishElement() {
-        if (list_ == ListKind::Spheres && !lists_.spheres.error) {
-            Sphere sphere;
-            if (element_.readCanonicalSphere(sphere))
-                lists_.spheres.items.push_back(std::move(sphere));
-            else
-                readElement(lists_.spheres, &Reader::readSphere);
-        }
-        if (list_ == ListKind::Materials) readElement(lists_.materials, &Reader::readMaterial);
-        if (list_ == ListKind::Lights) readElement(lists_.lights, &Reader::readLight);
+        // Only files the fast reader (scene_fast_read.h) handed back come
+        // here, to be refused with the path of what is wrong: no shortcut.
+        if (list_ == SceneList::Spheres) readElement(lists_.spheres, &Reader::readSphere);
+        if (list_ == SceneList::Materials) readElement(lists_.materials, &Reader::readMaterial);
+        if (list_ == SceneList::Lights) readElement(lists_.lights, &Reader::readLight);
         element_.clear();
         inElement_ = false;
     }
@@ -215,7 +209,7 @@ class StreamingSax {
     nlohmann::detail::json_sax_dom_parser<json> dom_;
     detail::ElementEvents element_;  // an element of a streamed list, while inside one
     bool inElement_ = false;
-    ListKind list_ = ListKind::None;
+    SceneList list_ = SceneList::None;
     Lists& lists_;
     const Reader& reader_;
     const std::string& file_;

@@ -30,8 +30,8 @@ inline std::string typeName(const json& j) {
     return "null";
 }
 
-inline std::string joinKey(const std::string& parent, const std::string& key) {
-    return parent.empty() ? key : parent + "." + key;
+inline std::string joinKey(const std::string& parent, std::string_view key) {
+    return parent.empty() ? std::string(key) : parent + "." + std::string(key);
 }
 
 // A top-level list read element by element: the elements read so far and
@@ -68,19 +68,19 @@ class Reader {
     }
 
     void checkKeys(const json& obj, const std::string& path,
-                   std::initializer_list<std::string_view> allowed) const {
+                   std::initializer_list<SceneField> allowed) const {
         for (auto it = obj.begin(); it != obj.end(); ++it) {
             bool known = false;
-            for (auto a : allowed) known = known || it.key() == a;
+            for (const SceneField& a : allowed) known = known || it.key() == a.key;
             if (!known) fail(joinKey(path, it.key()), "unknown key");
         }
     }
 
-    const json* find(const json& obj, const std::string& path, const char* key,
+    const json* find(const json& obj, const std::string& path, const SceneField& f,
                      bool required) const {
-        auto it = obj.find(key);
+        auto it = obj.find(f.key);
         if (it == obj.end()) {
-            if (required) fail(joinKey(path, key), "missing");
+            if (required) fail(joinKey(path, f.key), "missing");
             return nullptr;
         }
         return &*it;
@@ -115,49 +115,51 @@ class Reader {
     }
 
     // Optional fields keep `out` as it is (the default) when absent.
-    void opt(const json& obj, const std::string& path, const char* key, double& out) const {
-        if (auto* j = find(obj, path, key, false)) out = number(*j, joinKey(path, key));
+    void opt(const json& obj, const std::string& path, const SceneField& f, double& out) const {
+        if (auto* j = find(obj, path, f, false)) out = number(*j, joinKey(path, f.key));
     }
-    void opt(const json& obj, const std::string& path, const char* key, int& out) const {
-        if (auto* j = find(obj, path, key, false)) out = integer(*j, joinKey(path, key));
+    void opt(const json& obj, const std::string& path, const SceneField& f, int& out) const {
+        if (auto* j = find(obj, path, f, false)) out = integer(*j, joinKey(path, f.key));
     }
-    void opt(const json& obj, const std::string& path, const char* key, Vec3& out) const {
-        if (auto* j = find(obj, path, key, false)) out = vec3(*j, joinKey(path, key));
+    void opt(const json& obj, const std::string& path, const SceneField& f, Vec3& out) const {
+        if (auto* j = find(obj, path, f, false)) out = vec3(*j, joinKey(path, f.key));
     }
     template <typename T>
-    void req(const json& obj, const std::string& path, const char* key, T& out) const {
-        find(obj, path, key, true);
-        opt(obj, path, key, out);
+    void req(const json& obj, const std::string& path, const SceneField& f, T& out) const {
+        find(obj, path, f, true);
+        opt(obj, path, f, out);
     }
     void reqName(const json& obj, const std::string& path, std::string& out) const {
-        out = string(*find(obj, path, "name", true), joinKey(path, "name"));
+        out = string(*find(obj, path, scene_field::kName, true),
+                     joinKey(path, scene_field::kName.key));
     }
 
     // `root` holds an empty array in place of each list that was streamed into `lists`.
     Scene read(const json& root, Lists& lists) const {
+        using namespace scene_field;
         expectObject(root, "");
         checkKeys(root, "",
-                  {"format", "version", "camera", "render", "background", "ambient", "materials",
-                   "lights", "spheres"});
-        const json* format = find(root, "", "format", true);
-        if (!format->is_string() || format->get<std::string>() != "whitted-scene")
+                  {kFormat, kVersion, kCamera, kRender, kBackground, kAmbient, kMaterials, kLights,
+                   kSpheres});
+        const json* format = find(root, "", kFormat, true);
+        if (!format->is_string() || format->get<std::string>() != kSceneFormatName)
             fail("format", "expected \"whitted-scene\", found " + format->dump());
         readVersion(root, kSceneFormatVersion);
 
         Scene scene;
-        readCamera(*find(root, "", "camera", true), scene.camera);
-        if (auto* r = find(root, "", "render", false)) readRender(*r, scene.render);
-        opt(root, "", "background", scene.background);
-        opt(root, "", "ambient", scene.ambient);
-        take(root, "materials", lists.materials, scene.materials);
-        take(root, "lights", lists.lights, scene.lights);
-        take(root, "spheres", lists.spheres, scene.spheres);
+        readCamera(*find(root, "", kCamera, true), scene.camera);
+        if (auto* r = find(root, "", kRender, false)) readRender(*r, scene.render);
+        opt(root, "", kBackground, scene.background);
+        opt(root, "", kAmbient, scene.ambient);
+        take(root, kMaterials, lists.materials, scene.materials);
+        take(root, kLights, lists.lights, scene.lights);
+        take(root, kSpheres, lists.spheres, scene.spheres);
         return scene;
     }
 
     // A document's "version", no newer than `newest`.
     void readVersion(const json& root, int newest) const {
-        const int version = integer(*find(root, "", "version", true), "version");
+        const int version = integer(*find(root, "", scene_field::kVersion, true), "version");
         if (version > newest)
             fail("version", std::to_string(version) + " is newer than this program reads (" +
                                 std::to_string(newest) + ")");
@@ -171,80 +173,86 @@ class Reader {
     // The list's elements were read as they streamed past; its first bad
     // element is reported here, where reading the whole DOM reported it.
     template <typename T>
-    void take(const json& root, const char* key, Streamed<T>& list, std::vector<T>& out) const {
-        const json* j = find(root, "", key, false);
+    void take(const json& root, const SceneField& list, Streamed<T>& streamed,
+              std::vector<T>& out) const {
+        const json* j = find(root, "", list, false);
         if (!j) return;
-        expectArray(*j, key);
-        if (list.error) throw *list.error;
-        out = std::move(list.items);
+        expectArray(*j, std::string(list.key));
+        if (streamed.error) throw *streamed.error;
+        out = std::move(streamed.items);
     }
 
     void readCamera(const json& j, Camera& c) const {
-        const std::string p = "camera";
+        using namespace scene_field;
+        const std::string p(kCamera.key);
         expectObject(j, p);
-        checkKeys(j, p, {"position", "look_at", "up", "vfov_degrees"});
-        req(j, p, "position", c.position);
-        req(j, p, "look_at", c.lookAt);
-        opt(j, p, "up", c.up);
-        opt(j, p, "vfov_degrees", c.vfovDegrees);
+        checkKeys(j, p, {kCameraPosition, kLookAt, kUp, kFieldOfView});
+        req(j, p, kCameraPosition, c.position);
+        req(j, p, kLookAt, c.lookAt);
+        opt(j, p, kUp, c.up);
+        opt(j, p, kFieldOfView, c.vfovDegrees);
     }
 
     void readRender(const json& j, RenderSettings& r) const {
-        const std::string p = "render";
+        using namespace scene_field;
+        const std::string p(kRender.key);
         expectObject(j, p);
-        checkKeys(j, p, {"width", "height", "max_depth", "samples_per_pixel", "precision"});
-        opt(j, p, "width", r.width);
-        opt(j, p, "height", r.height);
-        opt(j, p, "max_depth", r.maxDepth);
-        opt(j, p, "samples_per_pixel", r.samplesPerPixel);
-        if (auto* pr = find(j, p, "precision", false)) {
-            const std::string name = string(*pr, "render.precision");
+        checkKeys(j, p, {kWidth, kHeight, kDepth, kSamples, kPrecision});
+        opt(j, p, kWidth, r.width);
+        opt(j, p, kHeight, r.height);
+        opt(j, p, kDepth, r.maxDepth);
+        opt(j, p, kSamples, r.samplesPerPixel);
+        if (auto* pr = find(j, p, kPrecision, false)) {
+            const std::string path = joinKey(p, kPrecision.key);
+            const std::string name = string(*pr, path);
             auto parsed = parsePrecision(name);
-            if (!parsed)
-                fail("render.precision", "expected \"float\" or \"double\", found " + quoted(name));
+            if (!parsed) fail(path, "expected \"float\" or \"double\", found " + quoted(name));
             r.precision = *parsed;
         }
     }
 
     void readMaterial(const json& j, const std::string& p, Material& m) const {
+        using namespace scene_field;
         expectObject(j, p);
-        checkKeys(j, p,
-                  {"name", "diffuse", "specular", "shininess", "reflectivity", "transparency",
-                   "ior", "checker"});
+        checkKeys(
+            j, p,
+            {kName, kDiffuse, kSpecular, kShininess, kReflectivity, kTransparency, kIor, kChecker});
         reqName(j, p, m.name);
-        opt(j, p, "diffuse", m.diffuse);
-        opt(j, p, "specular", m.specular);
-        opt(j, p, "shininess", m.shininess);
-        opt(j, p, "reflectivity", m.reflectivity);
-        opt(j, p, "transparency", m.transparency);
-        opt(j, p, "ior", m.ior);
-        if (auto* c = find(j, p, "checker", false)) {
-            const std::string cp = p + ".checker";
+        opt(j, p, kDiffuse, m.diffuse);
+        opt(j, p, kSpecular, m.specular);
+        opt(j, p, kShininess, m.shininess);
+        opt(j, p, kReflectivity, m.reflectivity);
+        opt(j, p, kTransparency, m.transparency);
+        opt(j, p, kIor, m.ior);
+        if (auto* c = find(j, p, kChecker, false)) {
+            const std::string cp = joinKey(p, kChecker.key);
             expectObject(*c, cp);
-            checkKeys(*c, cp, {"color", "size"});
+            checkKeys(*c, cp, {kCheckerColour, kCheckerSize});
             Checker checker;
-            req(*c, cp, "color", checker.color);
-            req(*c, cp, "size", checker.size);
+            req(*c, cp, kCheckerColour, checker.color);
+            req(*c, cp, kCheckerSize, checker.size);
             m.checker = checker;
         }
     }
 
     void readLight(const json& j, const std::string& p, Light& l) const {
+        using namespace scene_field;
         expectObject(j, p);
-        checkKeys(j, p, {"name", "position", "color", "intensity"});
+        checkKeys(j, p, {kName, kLightPosition, kLightColour, kIntensity});
         reqName(j, p, l.name);
-        req(j, p, "position", l.position);
-        opt(j, p, "color", l.color);
-        opt(j, p, "intensity", l.intensity);
+        req(j, p, kLightPosition, l.position);
+        opt(j, p, kLightColour, l.color);
+        opt(j, p, kIntensity, l.intensity);
     }
 
     void readSphere(const json& j, const std::string& p, Sphere& s) const {
+        using namespace scene_field;
         expectObject(j, p);
-        checkKeys(j, p, {"name", "center", "radius", "material"});
+        checkKeys(j, p, {kName, kCentre, kRadius, kSphereMaterial});
         reqName(j, p, s.name);
-        req(j, p, "center", s.center);
-        req(j, p, "radius", s.radius);
-        s.material = string(*find(j, p, "material", true), p + ".material");
+        req(j, p, kCentre, s.center);
+        req(j, p, kRadius, s.radius);
+        s.material = string(*find(j, p, kSphereMaterial, true), joinKey(p, kSphereMaterial.key));
     }
 
   private:

@@ -55,8 +55,12 @@ std::vector<Change> changes() {
     };
 }
 
+// The problem as the loader says it and as the editor reads it (typed).
 std::string describe(const std::optional<SceneProblem>& p) {
-    return p ? p->jsonPath + ": " + p->reason : "valid";
+    if (!p) return "valid";
+    return p->jsonPath + ": " + p->reason + " [kind " + std::to_string(int(p->kind)) + ", field " +
+           (p->field ? std::string(p->field->key) : "none") + ", list " +
+           std::to_string(int(p->list)) + ", item " + std::to_string(p->index) + "]";
 }
 
 TEST(ValidateEdit, SameVerdictAndMessageAsTheWholeSceneCheck) {
@@ -81,6 +85,60 @@ TEST(ValidateEdit, SameVerdictAndMessageAsTheWholeSceneCheck) {
 TEST(ValidateEdit, AnUnchangedSceneIsValid) {
     const Scene s = sceneWithBalls(10);
     EXPECT_FALSE(validateEdit(s, s));
+}
+
+// A program tells problems apart by their type, never by the reason's words:
+// each kind of problem with its field (scene_fields.h) and item.
+TEST(ValidateScene, ProblemsAreTyped_KindFieldAndItem) {
+    struct Case {
+        std::function<void(Scene&)> change;
+        ProblemKind kind;
+        const SceneField* field;
+        SceneList list;
+        std::size_t index;
+        std::string jsonPath;
+    };
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const std::vector<Case> cases = {
+        {[](Scene& s) { s.spheres[2].radius = 0; }, ProblemKind::BreaksRule, &scene_field::kRadius,
+         SceneList::Spheres, 2, "spheres[2].radius"},
+        {[=](Scene& s) { s.spheres[1].center.z = nan; }, ProblemKind::NotFinite,
+         &scene_field::kCentre, SceneList::Spheres, 1, "spheres[1].center"},
+        {[](Scene& s) { s.spheres[0].material = "gone"; }, ProblemKind::UnknownMaterial,
+         &scene_field::kSphereMaterial, SceneList::Spheres, 0, "spheres[0].material"},
+        {[](Scene& s) { s.spheres[3].name = s.spheres[1].name; }, ProblemKind::RepeatedName,
+         &scene_field::kName, SceneList::Spheres, 3, "spheres[3].name"},
+        {[](Scene& s) { s.lights[0].name.clear(); }, ProblemKind::EmptyName, &scene_field::kName,
+         SceneList::Lights, 0, "lights[0].name"},
+        {[](Scene& s) { s.lights[0].color.y = -1; }, ProblemKind::BreaksRule,
+         &scene_field::kLightColour, SceneList::Lights, 0, "lights[0].color"},
+        {[](Scene& s) {
+             s.materials[1].checker = Checker{{1, 1, 1}, -2};
+         },
+         ProblemKind::BreaksRule, &scene_field::kCheckerSize, SceneList::Materials, 1,
+         "materials[1].checker.size"},
+        {[](Scene& s) { s.camera.lookAt = s.camera.position; }, ProblemKind::LookAtIsPosition,
+         &scene_field::kLookAt, SceneList::None, 0, "camera.look_at"},
+        {[](Scene& s) { s.camera.up = Vec3(0.0); }, ProblemKind::UpIsZero, &scene_field::kUp,
+         SceneList::None, 0, "camera.up"},
+        {[](Scene& s) { s.camera.up = s.camera.lookAt - s.camera.position; },
+         ProblemKind::UpAlongView, &scene_field::kUp, SceneList::None, 0, "camera.up"},
+        {[](Scene& s) { s.render.samplesPerPixel = 0; }, ProblemKind::BreaksRule,
+         &scene_field::kSamples, SceneList::None, 0, "render.samples_per_pixel"},
+        {[](Scene& s) { s.background.x = -0.1; }, ProblemKind::BreaksRule,
+         &scene_field::kBackground, SceneList::None, 0, "background"},
+    };
+    for (const Case& c : cases) {
+        Scene s = sceneWithBalls(4);
+        c.change(s);
+        const std::optional<SceneProblem> p = validateScene(s);
+        ASSERT_TRUE(p) << c.jsonPath;
+        EXPECT_EQ(p->jsonPath, c.jsonPath);
+        EXPECT_EQ(p->kind, c.kind) << c.jsonPath;
+        EXPECT_EQ(p->field, c.field) << c.jsonPath;
+        EXPECT_EQ(p->list, c.list) << c.jsonPath;
+        EXPECT_EQ(p->index, c.index) << c.jsonPath;
+    }
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Rendering to a quality instead of to settings (issue 15). A target names
+// Rendering to a quality instead of to settings. A target names
 // what the user will see against a converged render: a PSNR of the 8-bit
 // picture and, optionally, the largest error of any pixel in 8-bit codes.
 // planQuality() resolves it for one scene into a max_depth and the limits of

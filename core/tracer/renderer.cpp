@@ -23,122 +23,7 @@
 
 namespace whitted {
 
-// Centre-out order: the middle of the image, where people look, arrives first.
-std::vector<Tile> spiralTiles(int width, int height, int size) {
-    std::vector<Tile> tiles;
-    for (int y = 0; y < height; y += size)
-        for (int x = 0; x < width; x += size)
-            tiles.push_back({x, y, std::min(size, width - x), std::min(size, height - y)});
-    auto distance = [&](const Tile& t) {
-        const double dx = t.x + t.w * 0.5 - width * 0.5, dy = t.y + t.h * 0.5 - height * 0.5;
-        return dx * dx + dy * dy;
-    };
-    std::stable_sort(tiles.begin(), tiles.end(),
-                     [&](const Tile& a, const Tile& b) { return distance(a) < distance(b); });
-    return tiles;
-}
-
 namespace {
-
-struct Pass {
-    PassKind kind;
-    int firstSample, lastSample;  // samples [first, last) of every pixel
-    double work;                  // relative cost, for the progress fraction
-    bool centres = false;         // one sample at each pixel's centre (kPixelCentre)
-};
-
-// The tile edge: an adaptive render's own (adaptive_sampling.h), else as asked.
-int tileEdgeOf(const RenderOptions& o) {
-    return std::max(1, o.adaptive ? kAdaptiveTileEdge : o.tileSize);
-}
-
-// The preview's block edge: a divisor of the tile edge, so that tiles hold
-// whole blocks and no block is traced twice.
-int previewBlockOf(const RenderOptions& o) {
-    const int tile = tileEdgeOf(o);
-    int block = std::clamp(o.previewBlock, 1, tile);
-    while (tile % block != 0) --block;
-    return block;
-}
-
-// The tiles of the regions, clipped to each: the same tiles as the whole
-// image's where they lie inside one.
-std::vector<Tile> regionTiles(const std::vector<Tile>& tiles,
-                              const std::vector<PixelRect>& regions) {
-    std::vector<Tile> clipped;
-    for (const Tile& t : tiles)
-        for (const PixelRect& r : regions) {
-            const int x0 = std::max(t.x, r.x), x1 = std::min(t.x + t.w, r.x + r.width);
-            const int y0 = std::max(t.y, r.y), y1 = std::min(t.y + t.h, r.y + r.height);
-            if (x0 < x1 && y0 < y1) clipped.push_back({x0, y0, x1 - x0, y1 - y0});
-        }
-    return clipped;
-}
-
-double pixelsRendered(const RenderSettings& r, const RenderOptions& o) {
-    if (o.regions.empty()) return double(r.width) * r.height;
-    double pixels = 0.0;
-    for (const PixelRect& g : o.regions) pixels += double(g.width) * g.height;
-    return pixels;
-}
-
-// RenderOptions::alsoAtDepths that the render cannot give, in words.
-std::optional<std::string> alsoAtDepthsProblem(const RenderSettings& r, const RenderOptions& o) {
-    const std::vector<int>& d = o.alsoAtDepths;
-    if (d.empty()) return std::nullopt;
-    if (o.adaptive || o.progressive) return "alsoAtDepths: only for a one-shot render";
-    if (d.front() < 0 || d.back() >= r.maxDepth || !std::is_sorted(d.begin(), d.end()))
-        return "alsoAtDepths: depths ascending, from 0 to below max_depth " +
-               std::to_string(r.maxDepth);
-    return std::nullopt;
-}
-
-// Why the regions cannot be rendered, if they cannot: one outside the
-// picture, or two that overlap (their tiles would be rendered twice, by two
-// threads at once).
-std::optional<std::string> regionsProblem(const std::vector<PixelRect>& regions, int width,
-                                          int height) {
-    for (std::size_t i = 0; i < regions.size(); ++i) {
-        if (!insidePicture(regions[i], width, height))
-            return "the region " + cornersText(regions[i]) + " is not a part of the " +
-                   std::to_string(width) + "x" + std::to_string(height) + " image";
-        for (std::size_t j = 0; j < i; ++j)
-            if (overlap(regions[i], regions[j]))
-                return "the regions " + cornersText(regions[j]) + " and " +
-                       cornersText(regions[i]) + " overlap";
-    }
-    return std::nullopt;
-}
-
-// The tiles a render works through, in the order it takes them.
-std::vector<Tile> renderTiles(const RenderSettings& r, const RenderOptions& o) {
-    std::vector<Tile> tiles = spiralTiles(r.width, r.height, tileEdgeOf(o));
-    return o.regions.empty() ? tiles : regionTiles(tiles, o.regions);
-}
-
-// The threads a render of `tiles` tiles runs on: as asked, no more than its tiles.
-int threadsForTiles(const RenderOptions& o, std::size_t tiles) {
-    return std::max(1, std::min<int>(resolveThreadCount(o.threads), tiles));
-}
-
-std::vector<Pass> planPasses(const RenderSettings& r, const RenderOptions& o) {
-    const double pixels = pixelsRendered(r, o);
-    std::vector<Pass> passes;
-    const int spp = r.samplesPerPixel;
-    if (!o.progressive || !o.regions.empty()) {
-        passes.push_back({PassKind::Samples, 0, spp, pixels * spp});
-        return passes;
-    }
-    const int block = previewBlockOf(o);
-    if (block > 1 && (r.width > block || r.height > block))
-        passes.push_back({PassKind::Preview, 0, 0, pixels / (double(block) * block)});
-    for (int done = 0; done < spp;) {
-        const int next = done == 0 ? 1 : std::min(spp, done * 2);
-        passes.push_back({PassKind::Samples, done, next, pixels * (next - done)});
-        done = next;
-    }
-    return passes;
-}
 
 template <typename T>
 class TileRenderer {
@@ -178,14 +63,14 @@ class TileRenderer {
     }
 
     RenderResult runFixed() {
-        const std::vector<Pass> passes = planPasses(settings_, options_);
+        const std::vector<RenderPass> passes = planPasses(settings_, options_);
         // Sums survive between passes only when a pixel gets its samples in
         // several passes. 24 bytes a pixel (6 GB at 16384x16384): taken from
         // zero pages, so nothing is written, and no time spent, before the
         // first tile; a page costs memory only once a tile of it is rendered.
         if (passes.back().firstSample > 0) sums_ = Sums(size_t(s_.width) * s_.height);
         double totalWork = 0.0;
-        for (const Pass& p : passes) totalWork += p.work;
+        for (const RenderPass& p : passes) totalWork += p.work;
         progress_.expect(0.0, totalWork);
         std::vector<int> all(tiles_.size());
         std::iota(all.begin(), all.end(), 0);
@@ -219,7 +104,7 @@ class TileRenderer {
         tileStates_.resize(tiles_.size());
         for (size_t t = 0; t < tiles_.size(); ++t)
             tileStates_[t].pixels = tiles_[t].w * tiles_[t].h;
-        std::vector<Pass> passes = planPasses(settings_, options_);  // the preview, if any
+        std::vector<RenderPass> passes = planPasses(settings_, options_);  // the preview, if any
         passes.resize(passes.front().kind == PassKind::Preview ? 1 : 0);
         if (limitsLargest(limits)) {
             pixelLargest_.width = s_.width, pixelLargest_.height = s_.height;
@@ -241,7 +126,7 @@ class TileRenderer {
         int samplesPasses = 0;
         if (limits.centresFirst) {
             const double pixels = pixelsRendered(settings_, options_);
-            const Pass centres{PassKind::Samples, 0, 1, pixels, true};
+            const RenderPass centres{PassKind::Samples, 0, 1, pixels, true};
             progress_.expect(workDone_,
                              workDone_ + centres.work * (1.0 + remainingPassesGuess(limits)));
             startImage(PassKind::Samples);
@@ -262,7 +147,7 @@ class TileRenderer {
                 const int next = std::min(limits.maxSamples, done <= 1 ? 2 : 2 * done);
                 double pixels = 0.0;
                 for (int t : ids) pixels += tileStates_[t].pixels;
-                const Pass pass{PassKind::Samples, first, next, pixels * (next - first)};
+                const RenderPass pass{PassKind::Samples, first, next, pixels * (next - first)};
                 progress_.expect(workDone_, workDone_ + pass.work * remainingPassesGuess(limits));
                 startImage(PassKind::Samples);
                 // Not before: a render whose centres do needs no sums.
@@ -322,7 +207,7 @@ class TileRenderer {
     }
 
     // Renders the tiles `ids` (indices into tiles_) through one pass.
-    void runPass(const Pass& pass, int index, int count, const std::vector<int>& ids) {
+    void runPass(const RenderPass& pass, int index, int count, const std::vector<int>& ids) {
         std::atomic<size_t> next{0};
         const double workPerPixel = pass.kind == PassKind::Preview
                                         ? 1.0 / (double(block_) * block_)
@@ -405,7 +290,7 @@ class TileRenderer {
 
     // False when stopped part-way: the tile is then incomplete and not reported.
     // Out of line: the profiles of docs/design/performance.md collect from it.
-    __attribute__((noinline)) bool renderTile(const Pass& pass, const Tile& tile, Row& row,
+    __attribute__((noinline)) bool renderTile(const RenderPass& pass, const Tile& tile, Row& row,
                                               RayCounts& counts, TileErrorEstimate* estimate) {
         if (pass.kind == PassKind::Preview) return renderPreviewTile(tile, counts);
         row.radiance.resize(tile.w);
@@ -433,7 +318,8 @@ class TileRenderer {
     // alsoAtDepths, summed in sample order as renderRow() sums them: the
     // pictures are those of renders at those depths but for rounding. A row
     // of pixels at a time: traceCameraBlock() has no depths to give.
-    void renderRowAtDepths(const Pass& pass, const Tile& tile, int y, Row& row, RayCounts& counts) {
+    void renderRowAtDepths(const RenderPass& pass, const Tile& tile, int y, Row& row,
+                           RayCounts& counts) {
         const std::vector<int>& depths = options_.alsoAtDepths;
         const int n = int(depths.size());
         const std::size_t w = std::size_t(tile.w);
@@ -460,7 +346,7 @@ class TileRenderer {
     // 32 pixels then holds 96 KB of float radiance.
     static constexpr int kBlockSamples = 256;
 
-    void renderRow(const Pass& pass, const Tile& tile, int y, Row& row, RayCounts& counts,
+    void renderRow(const RenderPass& pass, const Tile& tile, int y, Row& row, RayCounts& counts,
                    TileErrorEstimate* estimate) {
         const size_t at = size_t(y) * s_.width + tile.x;
         // In place where they survive the pass, not copied in and out.
@@ -545,19 +431,6 @@ RenderResult renderWith(const Scene& scene, const RenderOptions& options,
     return renderWhitted1980(s, settings, options, onTile, shouldStop);
 }
 
-std::optional<std::string> whitted1980Problem(const RenderOptions& o) {
-    if (!o.whitted1980) return std::nullopt;
-    if (o.adaptive || !o.regions.empty() || !o.alsoAtDepths.empty())
-        return "Whitted's 1980 sampling renders the whole picture, with no target and no "
-               "regions or other depths";
-    if (o.whitted1980->maxLevels < 0 || o.whitted1980->maxLevels > kMaxWhitted1980Levels)
-        return "Whitted's 1980 sampling cuts a pixel 0 to " +
-               std::to_string(kMaxWhitted1980Levels) + " times";
-    if (!(o.whitted1980->threshold >= 0))
-        return "Whitted's 1980 sampling needs a threshold of 0 or more";
-    return std::nullopt;
-}
-
 }  // namespace
 
 int renderThreads(const RenderSettings& settings, const RenderOptions& options) {
@@ -590,17 +463,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options, const Tile
                     const StopPredicate& shouldStop) {
     if (auto problem = options.sceneValidated ? std::nullopt : validateScene(scene))
         throw std::invalid_argument(problem->jsonPath + ": " + problem->reason);
-    if (auto problem = regionsProblem(options.regions, scene.render.width, scene.render.height))
-        throw std::invalid_argument(*problem);
-    if (auto problem = alsoAtDepthsProblem(scene.render, options))
-        throw std::invalid_argument(*problem);
-    if (auto problem = whitted1980Problem(options)) throw std::invalid_argument(*problem);
-    if (const AroundRegions* around = options.aroundRegions;
-        around &&
-        (around->image.width != scene.render.width || around->image.height != scene.render.height ||
-         around->largest.width != scene.render.width ||
-         around->largest.height != scene.render.height))
-        throw std::invalid_argument("the picture around the regions is not the render's size");
+    if (auto problem = optionsProblem(scene, options)) throw std::invalid_argument(*problem);
     // Here, not in a worker: a WHITTED_KERNEL this CPU cannot run throws to the caller.
     activeKernel();
     const auto start = std::chrono::steady_clock::now();

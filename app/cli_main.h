@@ -10,12 +10,9 @@
 
 #include <CLI/CLI.hpp>
 
-namespace whitted {
+#include "exit_codes.h"
 
-inline constexpr int kExitOk = 0;
-inline constexpr int kExitFailure = 1;        // anything but the input
-inline constexpr int kExitBadInput = 2;       // a flag, a scene or a file the user named
-inline constexpr int kExitInterrupted = 130;  // Ctrl+C, as a shell reports it
+namespace whitted {
 
 // Reads the flags. Nothing when the program should go on; else the exit code,
 // having printed the help (0) or what is wrong (kExitBadInput). `check` may

@@ -1,6 +1,6 @@
 // whitted-render: renders a scene file to an image (SPEC §7), or the frames
 // of a turntable, or one region of the image for a farm; `whitted-render
-// merge` puts regions back together (issue 14).
+// merge` puts regions back together.
 // Exit codes: 0 success; 2 bad input (scene or flags); 1 any other failure.
 // On failure no output file is left behind (frames already finished stay).
 #include <algorithm>
@@ -32,6 +32,8 @@
 #include "image/image_parts.h"
 #include "plan_file.h"
 #include "ray_tree_json.h"
+#include "render/merge.h"
+#include "render/progress_bar.h"
 #include "render_flags.h"
 #include "render_quality.h"
 #include "render_stats.h"
@@ -63,12 +65,6 @@ struct Options {
     std::string subdivisionMap;       // how deep each pixel was cut, as a picture; empty: none
 };
 
-struct MergeOptions {
-    std::vector<std::string> parts;
-    std::string output;
-    bool quiet = false;
-};
-
 // A flag's value is refused: the message, and exit 2.
 struct BadInput : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -98,48 +94,6 @@ void checkSamplerFlags(const Options& o) {
             "--spp, --region and the quality flags do not go with it");
 }
 
-// A one-line bar on stderr, shown only once a render has run for a second, so
-// quick renders print nothing but their summary.
-class ProgressBar {
-  public:
-    explicit ProgressBar(bool enabled) : enabled_(enabled) {}
-
-    void update(double fraction) {
-        if (!enabled_) return;
-        std::unique_lock lock(mutex_, std::try_to_lock);
-        if (!lock) return;  // another worker is drawing; skipping a frame is fine
-        const double elapsed = seconds();
-        if (elapsed < 1.0 || elapsed - lastDraw_ < 0.1) return;
-        lastDraw_ = elapsed;
-        draw(fraction, elapsed);
-    }
-
-    void finish() {
-        std::lock_guard lock(mutex_);
-        if (lastDraw_ < 0) return;
-        draw(1.0, seconds());
-        std::fputc('\n', stderr);
-    }
-
-  private:
-    double seconds() const { return secondsSince(start_); }
-
-    void draw(double fraction, double elapsed) {
-        constexpr int kWidth = 40;
-        const int filled = static_cast<int>(fraction * kWidth);
-        std::string bar(filled, '#');
-        bar.resize(kWidth, '.');
-        std::fprintf(stderr, "\r[%s] %3d%%  %.1f s", bar.c_str(), static_cast<int>(fraction * 100),
-                     elapsed);
-        std::fflush(stderr);
-    }
-
-    bool enabled_;
-    std::mutex mutex_;
-    double lastDraw_ = -1.0;
-    const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
-
 // The region flag as pixels of the image, checked against its size.
 std::optional<PixelRect> regionOf(const Options& o, const RenderSettings& r) {
     if (o.region.empty()) return std::nullopt;
@@ -167,6 +121,36 @@ std::pair<int, int> framesOf(const Options& o) {
         throw BadInput("--frames " + o.frames +
                        ": not A-B with 1 <= A <= B <= " + std::to_string(o.turntable));
     return {first, last};
+}
+
+// What was written, on stderr: the picture, its samples, depth and precision, the time.
+void sayWritten(const fs::path& output, const RenderSettings& r,
+                const std::optional<PixelRect>& region, const RenderResult& result,
+                const RenderOptions& options, const std::optional<QualityPlan>& plan) {
+    if (plan && result.adaptive) sayQualityReached(*plan, *result.adaptive);
+    // "640x480", or "region 0,0,320,240 of 640x480".
+    const std::string picture =
+        (region ? "region " + cornersText(*region) + " of " : std::string()) +
+        std::to_string(r.width) + "x" + std::to_string(r.height);
+    if (options.whitted1980) {
+        std::fprintf(stderr,
+                     "wrote %s: %s, Whitted 1980 sampling (threshold %g codes, at most %d "
+                     "subdivisions): %.2f camera rays a pixel, depth %d, %s, %.3f s\n",
+                     output.c_str(), picture.c_str(), options.whitted1980->threshold,
+                     options.whitted1980->maxLevels, cameraRaysPerPixel(r, result), r.maxDepth,
+                     std::string(precisionName(r.precision)).c_str(), result.seconds);
+    } else if (!plan) {
+        std::fprintf(stderr,
+                     "wrote %s: %s, %d spp, depth %d, %s, %.3f s, %.1f Mrays/s, %s kernel\n",
+                     output.c_str(), picture.c_str(), r.samplesPerPixel, r.maxDepth,
+                     std::string(precisionName(r.precision)).c_str(), result.seconds,
+                     result.seconds > 0 ? result.rays.total() / result.seconds / 1e6 : 0.0,
+                     activeKernelName().c_str());
+    } else {
+        std::fprintf(stderr, "wrote %s: %s, %.1f spp on average, depth %d, %s, %.3f s\n",
+                     output.c_str(), picture.c_str(), result.adaptive->meanSamples, r.maxDepth,
+                     std::string(precisionName(r.precision)).c_str(), result.seconds);
+    }
 }
 
 // One image: the scene as given (at the plan's depth, if there is a plan),
@@ -222,32 +206,7 @@ int renderFrame(Scene& scene, const Options& o, const std::optional<PixelRect>& 
             return kExitFailure;
         }
     }
-    if (!o.quiet && plan && result.adaptive) sayQualityReached(*plan, *result.adaptive);
-    // "640x480", or "region 0,0,320,240 of 640x480".
-    const std::string picture =
-        (region ? "region " + cornersText(*region) + " of " : std::string()) +
-        std::to_string(scene.render.width) + "x" + std::to_string(scene.render.height);
-    if (!o.quiet && options.whitted1980) {
-        std::fprintf(stderr,
-                     "wrote %s: %s, Whitted 1980 sampling (threshold %g codes, at most %d "
-                     "subdivisions): %.2f camera rays a pixel, depth %d, %s, %.3f s\n",
-                     output.c_str(), picture.c_str(), options.whitted1980->threshold,
-                     options.whitted1980->maxLevels, cameraRaysPerPixel(scene.render, result),
-                     scene.render.maxDepth,
-                     std::string(precisionName(scene.render.precision)).c_str(), result.seconds);
-    } else if (!o.quiet && !plan) {
-        std::fprintf(
-            stderr, "wrote %s: %s, %d spp, depth %d, %s, %.3f s, %.1f Mrays/s, %s kernel\n",
-            output.c_str(), picture.c_str(), scene.render.samplesPerPixel, scene.render.maxDepth,
-            std::string(precisionName(scene.render.precision)).c_str(), result.seconds,
-            result.seconds > 0 ? result.rays.total() / result.seconds / 1e6 : 0.0,
-            activeKernelName().c_str());
-    } else if (!o.quiet) {
-        std::fprintf(stderr, "wrote %s: %s, %.1f spp on average, depth %d, %s, %.3f s\n",
-                     output.c_str(), picture.c_str(), result.adaptive->meanSamples,
-                     scene.render.maxDepth,
-                     std::string(precisionName(scene.render.precision)).c_str(), result.seconds);
-    }
+    if (!o.quiet) sayWritten(output, scene.render, region, result, options, plan);
     return kExitOk;
 }
 
@@ -393,68 +352,23 @@ int run(const Options& o) {
     return kExitOk;
 }
 
-// What the merged picture of a render to a quality reached: what each part
-// reached ("4 regions, each rendered to it: depth 6, ...; depth 6, ..."),
-// under the target they share; empty for fixed samples. Parts of other
-// targets, or some of fixed samples, are another render's: refused.
-std::string mergedReached(const std::vector<ImagePart>& parts,
-                          const std::vector<std::string>& names) {
-    const std::string& target = parts[0].metadata.qualityTarget;
-    const auto what = [](const std::string& t) {
-        return t.empty() ? std::string("fixed samples") : "a quality (" + t + ")";
-    };
-    std::string reached;
-    for (std::size_t i = 0; i < parts.size(); ++i) {
-        const ImageMetadata& m = parts[i].metadata;
-        if (m.qualityTarget != target)
-            throw std::invalid_argument(names[i] + " was rendered to " + what(m.qualityTarget) +
-                                        ", " + names[0] + " to " + what(target) +
-                                        ": parts of different renders");
-        if (!m.qualityReached.empty()) reached += "; " + m.qualityReached;
-    }
-    if (target.empty()) return {};
-    return std::to_string(parts.size()) + " regions, each rendered to it" +
-           (reached.empty() ? "" : ":" + reached.substr(1));
-}
-
-// `whitted-render merge`: the parts read, checked to tile one picture, and
-// written as one image.
-int runMerge(const MergeOptions& o) {
-    if (!outputFormatOrSay("whitted-render", o.output)) return kExitBadInput;
-    std::vector<ImagePart> parts;
-    Image whole;
-    std::string reached;
-    try {
-        for (const std::string& file : o.parts) parts.push_back(readImagePart(file));
-        whole = mergeParts(parts, o.parts);
-        reached = mergedReached(parts, o.parts);
-    } catch (const std::exception& e) {
-        std::cerr << "whitted-render: merge: " << e.what() << "\n";
-        return kExitBadInput;
-    }
-    // The settings the parts record (rendered to a quality, each part's
-    // depth and most samples its own: the largest of them); the time, all of
-    // theirs together.
-    RenderSettings settings = parts[0].metadata.settings;
-    double seconds = 0.0;
-    for (const ImagePart& p : parts) {
-        seconds += p.metadata.renderSeconds;
-        settings.samplesPerPixel =
-            std::max(settings.samplesPerPixel, p.metadata.settings.samplesPerPixel);
-        settings.maxDepth = std::max(settings.maxDepth, p.metadata.settings.maxDepth);
-    }
-    try {
-        writeImage(whole, o.output,
-                   makeImageMetadata(settings, seconds, "whitted-render",
-                                     parts[0].metadata.qualityTarget, reached));
-    } catch (const std::exception& e) {
-        std::cerr << "whitted-render: " << e.what() << "\n";
-        return kExitFailure;
-    }
-    if (!o.quiet)
-        std::fprintf(stderr, "wrote %s: %dx%d from %zu parts\n", o.output.c_str(), whole.width,
-                     whole.height, parts.size());
-    return kExitOk;
+// --sampler and the flags of Whitted's 1980 sampling.
+void addSamplerFlags(CLI::App& app, Options& o) {
+    app.add_option("--sampler", o.sampler,
+                   "How a pixel is sampled: fixed (the scene's samples per pixel, or a quality's "
+                   "own) or whitted1980 (Whitted's adaptive antialiasing: rays at the pixels' "
+                   "corners, a pixel cut in four where they differ)")
+        ->check(CLI::IsMember({"fixed", "whitted1980"}));
+    app.add_option("--threshold", o.threshold,
+                   "whitted1980: cut a pixel where its corners differ by more than this many "
+                   "8-bit codes in a channel (default 8)")
+        ->check(CLI::Range(0.0, 255.0));
+    app.add_option("--subdivisions", o.subdivisions,
+                   "whitted1980: cut a pixel at most this many times (default 2)")
+        ->check(CLI::Range(0, kMaxWhitted1980Levels));
+    app.add_option("--subdivision-map", o.subdivisionMap,
+                   "whitted1980: also write how deep each pixel was cut, black none to pale "
+                   "yellow the most, as an image");
 }
 
 }  // namespace
@@ -488,21 +402,7 @@ int main(int argc, char** argv) {
                    "if there is none, so that the regions of one picture share one plan "
                    "(whitted-farm makes it once for all its tasks); without --output, only plan");
 
-    app.add_option("--sampler", o.sampler,
-                   "How a pixel is sampled: fixed (the scene's samples per pixel, or a quality's "
-                   "own) or whitted1980 (Whitted's adaptive antialiasing: rays at the pixels' "
-                   "corners, a pixel cut in four where they differ)")
-        ->check(CLI::IsMember({"fixed", "whitted1980"}));
-    app.add_option("--threshold", o.threshold,
-                   "whitted1980: cut a pixel where its corners differ by more than this many "
-                   "8-bit codes in a channel (default 8)")
-        ->check(CLI::Range(0.0, 255.0));
-    app.add_option("--subdivisions", o.subdivisions,
-                   "whitted1980: cut a pixel at most this many times (default 2)")
-        ->check(CLI::Range(0, kMaxWhitted1980Levels));
-    app.add_option("--subdivision-map", o.subdivisionMap,
-                   "whitted1980: also write how deep each pixel was cut, black none to pale "
-                   "yellow the most, as an image");
+    addSamplerFlags(app, o);
 
     app.add_option("--inspect", o.inspect,
                    "Print the ray tree of pixel X,Y (0,0 top left) of a one-sample render as "
@@ -511,14 +411,7 @@ int main(int argc, char** argv) {
         ->expected(2);
 
     MergeOptions m;
-    CLI::App* merge = app.add_subcommand(
-        "merge", "Put the regions of one picture (--region parts) together into one image");
-    merge->add_option("parts", m.parts, "The parts: OpenEXR files from --region")
-        ->required()
-        ->check(CLI::ExistingFile);
-    merge->add_option("-o,--output", m.output, "The whole image: .png .jpg .tif .exr or .hdr")
-        ->required();
-    merge->add_flag("--quiet", m.quiet, "Print nothing but errors");
+    CLI::App* merge = addMergeCommand(app, m);
 
     if (const auto code = parseFlags(app, "whitted-render", argc, argv, [&] {
             if (!*merge && o.scene.empty()) throw CLI::RequiredError("scene");

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Log-log plot of render and build time against sphere count, from the CSV
-that `bench_scaling --csv FILE` writes (issue 12), as an SVG.
+that `bench_scaling --csv FILE` writes, as an SVG.
 
 Needs only python3 (standard library); no plotting package.
 

@@ -1,8 +1,8 @@
 // The preset table. Whitted's plain sum (SPEC §3) has no Fresnel term and no
 // energy normalisation, so each preset keeps diffuse + reflectivity +
 // transparency near or below 1: a mirror or glass that also kept a bright
-// diffuse colour would look milky (issue 11, item 8: a transparent material
-// with the default diffuse 0.8 looks white).
+// diffuse colour would look milky (a transparent material with the default
+// diffuse 0.8 looks white).
 #include "scene/material_presets.h"
 
 #include <array>

@@ -8,7 +8,9 @@
 # Without `fields`: the scenes of bench_quality. With it: the twenty untuned
 # fields of `bench_quality_fields presets 1 20` (untunedField() there).
 # Rows where the preset misses its target are left out: the comparison is
-# with a fixed preset that meets it.
+# with a fixed preset that meets it. With WHOLE_RUN_CSV=FILE each row is also
+# added to FILE (benchmarks/whole_run_presets.csv keeps them, a build's rows
+# after another's), with the commit it measured.
 set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -30,7 +32,8 @@ time_row() {
     "$common -o $work/ours.png --quality $3" \
     "$common -o $work/preset.png ${preset[$3]}" >/dev/null 2>"$work/warnings" ||
     { cat "$work/warnings" >&2; exit 1; }
-  python3 - "$work/t.json" "$2" "$3" <<'PY'
+  python3 - "$work/t.json" "$2" "$3" "$width" "$height" "$runs" "${WHOLE_RUN_CSV:-}" \
+    "$(git rev-parse --short HEAD 2>/dev/null || echo unknown)" <<'PY'
 import json, sys
 ours, preset = json.load(open(sys.argv[1]))["results"]
 ratio = ours["mean"] / preset["mean"]
@@ -38,6 +41,11 @@ ratio = ours["mean"] / preset["mean"]
 spread = ratio * ((ours["stddev"] / ours["mean"]) ** 2 + (preset["stddev"] / preset["mean"]) ** 2) ** 0.5
 print(f"| {sys.argv[2]} | {sys.argv[3]} | {ours['mean']:.3f} | {preset['mean']:.3f} | "
       f"{ratio:.2f} ± {spread:.2f} |")
+scene, target, width, height, runs, csv, build = sys.argv[2:9]
+if csv:
+    with open(csv, "a") as out:
+        out.write(f"{scene},{target.capitalize()},{width},{height},{runs},{build},"
+                  f"{ratio:.2f},{spread:.2f}\n")
 PY
 }
 

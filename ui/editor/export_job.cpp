@@ -29,12 +29,38 @@ QString firstExtension(const ImageFormatInfo& f) {
 
 }  // namespace
 
+namespace {
+
+QSpinBox* spinBox(const char* name, int lo, int hi, int value) {
+    auto* s = new QSpinBox;
+    s->setObjectName(name);
+    s->setRange(lo, hi);
+    s->setValue(value);
+    return s;
+}
+
+}  // namespace
+
 ExportDialog::ExportDialog(const Scene& scene, const std::optional<QualityTarget>& quality,
                            const QString& directory, const QString& baseName, QWidget* parent)
     : QDialog(parent) {
     setWindowTitle(tr("Export Image"));
     auto* form = new QFormLayout(this);
+    addFileRows(form, directory, baseName);
+    addRenderRows(form, scene.render, quality);
+    addTurntableRow(form);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
+    buttons->button(QDialogButtonBox::Ok)->setText(tr("Export"));
+    form->addRow(buttons);
+    connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    emit path_->textChanged(path_->text());
+}
 
+// The file and its format; the format follows the name's extension, and the
+// extension the format chosen.
+void ExportDialog::addFileRows(QFormLayout* form, const QString& directory,
+                               const QString& baseName) {
     path_ = new QLineEdit(QDir(directory).filePath(baseName + ".png"));
     path_->setObjectName("exportPath");
     path_->setMinimumWidth(360);
@@ -43,25 +69,27 @@ ExportDialog::ExportDialog(const Scene& scene, const std::optional<QualityTarget
     pathRow->addWidget(path_);
     pathRow->addWidget(browse);
     form->addRow(tr("File"), pathRow);
-
     format_ = new QComboBox;
     format_->setObjectName("exportFormat");
     for (const ImageFormatInfo& f : imageFormats())
         format_->addItem(QString::fromLatin1(f.name.data(), int(f.name.size())) + " (" +
                          firstExtension(f) + ")");
     form->addRow(tr("Format"), format_);
+    connect(browse, &QPushButton::clicked, this, &ExportDialog::browse);
+    connect(format_, &QComboBox::activated, this, &ExportDialog::formatChosen);
+    connect(path_, &QLineEdit::textChanged, this, [this](const QString& text) {
+        const auto f = imageFormatFor(text.toStdString());
+        if (!f) return;
+        for (size_t i = 0; i < imageFormats().size(); ++i)
+            if (imageFormats()[i].format == f->format) format_->setCurrentIndex(int(i));
+    });
+}
 
-    auto spin = [&](const char* name, int lo, int hi, int value) {
-        auto* s = new QSpinBox;
-        s->setObjectName(name);
-        s->setRange(lo, hi);
-        s->setValue(value);
-        return s;
-    };
-    const RenderSettings& r = scene.render;
+void ExportDialog::addRenderRows(QFormLayout* form, const RenderSettings& r,
+                                 const std::optional<QualityTarget>& quality) {
     size_ = new ImageSizeFields(r.width, r.height, QStringLiteral("export"));
-    samples_ = spin("exportSamples", 1, kMaxSamplesPerPixel, r.samplesPerPixel);
-    depth_ = spin("exportDepth", 0, kMaxDepth, r.maxDepth);
+    samples_ = spinBox("exportSamples", 1, kMaxSamplesPerPixel, r.samplesPerPixel);
+    depth_ = spinBox("exportDepth", 0, kMaxDepth, r.maxDepth);
     form->addRow(tr("Size"), size_);
     form->addRow(tr("Samples per pixel"), samples_);
     form->addRow(tr("Max depth"), depth_);
@@ -84,29 +112,16 @@ ExportDialog::ExportDialog(const Scene& scene, const std::optional<QualityTarget
     };
     connect(quality_, &QComboBox::currentIndexChanged, this, followTarget);
     followTarget();
-    turntable_ = spin("exportTurntable", 0, 9999, 0);
+}
+
+void ExportDialog::addTurntableRow(QFormLayout* form) {
+    turntable_ = spinBox("exportTurntable", 0, 9999, 0);
     turntable_->setSpecialValueText(tr("None: one image"));
     turntable_->setSuffix(tr(" frames"));
     turntable_->setToolTip(
         tr("Frames of a turntable: the eye turns once about the point it looks at, and each "
            "frame is written with its number before the extension (name.0001.png, …)."));
     form->addRow(tr("Turntable"), turntable_);
-
-    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
-    buttons->button(QDialogButtonBox::Ok)->setText(tr("Export"));
-    form->addRow(buttons);
-    connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
-    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
-    connect(browse, &QPushButton::clicked, this, &ExportDialog::browse);
-    connect(format_, &QComboBox::activated, this, &ExportDialog::formatChosen);
-    connect(path_, &QLineEdit::textChanged, this, [this](const QString& text) {
-        // The format follows the file name's extension when it names one.
-        const auto f = imageFormatFor(text.toStdString());
-        if (!f) return;
-        for (size_t i = 0; i < imageFormats().size(); ++i)
-            if (imageFormats()[i].format == f->format) format_->setCurrentIndex(int(i));
-    });
-    emit path_->textChanged(path_->text());
 }
 
 void ExportDialog::formatChosen(int index) {

@@ -16,6 +16,7 @@
 #include "scene/scene.h"
 
 class QComboBox;
+class QFormLayout;
 class QLineEdit;
 class QSpinBox;
 
@@ -44,6 +45,10 @@ class ExportDialog : public QDialog {
     ExportSettings settings() const;
 
   private:
+    void addFileRows(QFormLayout* form, const QString& directory, const QString& baseName);
+    void addRenderRows(QFormLayout* form, const RenderSettings& r,
+                       const std::optional<QualityTarget>& quality);
+    void addTurntableRow(QFormLayout* form);
     void browse();
     void formatChosen(int index);
 

@@ -168,6 +168,23 @@ RenderSettingsPanel::RenderSettingsPanel(SceneDocument* doc, TradeoffRecord* rec
                                          QualityChoice* quality, QWidget* parent)
     : QWidget(parent), doc_(doc) {
     QFormLayout* form = makeForm(this);
+    addIntRows(form);
+    addPrecisionRow(form);
+    background_ = addColourRow(form, tr("Background:"), QStringLiteral("sceneBackground"),
+                               &Scene::background, tr("background colour"));
+    ambient_ = addColourRow(form, tr("Ambient:"), QStringLiteral("sceneAmbient"), &Scene::ambient,
+                            tr("ambient colour"));
+    if (record && quality) {
+        new PresetControls(doc_, record, quality, form);
+        connect(quality, &QualityChoice::changed, this, [this, quality] { followTarget(quality); });
+        followTarget(quality);
+        addSamplerRows(form, quality);
+    }
+    connect(doc_, &SceneDocument::sceneChanged, this, &RenderSettingsPanel::refresh);
+    refresh();
+}
+
+void RenderSettingsPanel::addIntRows(QFormLayout* form) {
     auto addInt = [&](const QString& label, const QString& name, int min, int max, auto member,
                       const QString& what, const QString& suffix) {
         auto* field = new IntField(
@@ -187,7 +204,9 @@ RenderSettingsPanel::RenderSettingsPanel(SceneDocument* doc, TradeoffRecord* rec
            &RenderSettings::maxDepth, tr("maximum depth"), QString());
     addInt(tr("Samples per pixel:"), QStringLiteral("renderSamples"), 1, kMaxSamplesPerPixel,
            &RenderSettings::samplesPerPixel, tr("samples per pixel"), QString());
+}
 
+void RenderSettingsPanel::addPrecisionRow(QFormLayout* form) {
     precision_ = new QComboBox;
     precision_->setObjectName(QStringLiteral("renderPrecision"));
     for (const auto& [precision, name] : kPrecisionNames)
@@ -205,66 +224,53 @@ RenderSettingsPanel::RenderSettingsPanel(SceneDocument* doc, TradeoffRecord* rec
         }
     });
     form->addRow(tr("Precision:"), precision_);
+}
 
-    auto addColor = [&](const QString& label, const QString& name, Vec3 Scene::*member,
-                        const QString& what) {
-        auto* button = new ColorButton;
-        button->setObjectName(name);
-        connect(button, &ColorButton::colorEdited, this, [this, member, what](const Vec3& c) {
-            QString error;
-            if (!doc_->edit(
-                    tr("Change %1").arg(what), [&](Scene& s) { s.*member = c; }, &error)) {
-                showRefusal(this, error);
-                refresh();
-            }
-        });
-        form->addRow(label, button);
-        return button;
-    };
-    background_ = addColor(tr("Background:"), QStringLiteral("sceneBackground"), &Scene::background,
-                           tr("background colour"));
-    ambient_ = addColor(tr("Ambient:"), QStringLiteral("sceneAmbient"), &Scene::ambient,
-                        tr("ambient colour"));
+ColorButton* RenderSettingsPanel::addColourRow(QFormLayout* form, const QString& label,
+                                               const QString& name, Vec3 Scene::*member,
+                                               const QString& what) {
+    auto* button = new ColorButton;
+    button->setObjectName(name);
+    connect(button, &ColorButton::colorEdited, this, [this, member, what](const Vec3& c) {
+        QString error;
+        if (!doc_->edit(
+                tr("Change %1").arg(what), [&](Scene& s) { s.*member = c; }, &error)) {
+            showRefusal(this, error);
+            refresh();
+        }
+    });
+    form->addRow(label, button);
+    return button;
+}
 
-    if (record && quality) {
-        new PresetControls(doc_, record, quality, form);
-        // A target chooses depth and samples at each render: the fields would
-        // change nothing the user sees, so they rest until the settings rule
-        // again, and say so beside their numbers, which are the settings' and
-        // not what the render uses (greyed "8" under Final, rendered at 6, read
-        // as the depth of the picture).
-        const auto followTarget = [this, quality] {
-            const QString target =
-                quality->target() ? QString::fromStdString(quality->target()->name) : QString();
-            for (const char* name : {"renderMaxDepth", "renderSamples"}) {
-                const bool samples = std::string_view(name) == "renderSamples";
-                QString unused;
-                if (!target.isEmpty())
-                    unused = tr("  (not used while rendering to %1)").arg(target);
-                else if (samples && quality->whitted1980())
-                    unused = tr("  (not used by Whitted 1980 sampling)");
-                const bool settings = unused.isEmpty();
-                auto* field = findChild<IntField*>(QLatin1String(name));
-                field->setSuffix(unused);
-                if (field->isEnabled() == settings) continue;
-                field->setEnabled(settings);
-                // The field's own tooltip comes back with the settings.
-                if (!settings) field->setProperty("settingsToolTip", field->toolTip());
-                field->setToolTip(settings ? field->property("settingsToolTip").toString()
-                                  : !target.isEmpty()
-                                      ? tr("Chosen for the scene at each render while "
-                                           "rendering to a quality (Render to)")
-                                      : tr("Whitted 1980 sampling chooses its own rays "
-                                           "(Antialiasing)"));
-            }
-        };
-        connect(quality, &QualityChoice::changed, this, followTarget);
-        followTarget();
-        addSamplerRows(form, quality);
+// A target chooses depth and samples at each render: the fields would change
+// nothing the user sees, so they rest until the settings rule again, and say
+// so beside their numbers, which are the settings' and not what the render
+// uses (greyed "8" under Final, rendered at 6, read as the depth of the
+// picture).
+void RenderSettingsPanel::followTarget(const QualityChoice* quality) {
+    const QString target =
+        quality->target() ? QString::fromStdString(quality->target()->name) : QString();
+    for (const char* name : {"renderMaxDepth", "renderSamples"}) {
+        const bool samples = std::string_view(name) == "renderSamples";
+        QString unused;
+        if (!target.isEmpty())
+            unused = tr("  (not used while rendering to %1)").arg(target);
+        else if (samples && quality->whitted1980())
+            unused = tr("  (not used by Whitted 1980 sampling)");
+        const bool settings = unused.isEmpty();
+        auto* field = findChild<IntField*>(QLatin1String(name));
+        field->setSuffix(unused);
+        if (field->isEnabled() == settings) continue;
+        field->setEnabled(settings);
+        // The field's own tooltip comes back with the settings.
+        if (!settings) field->setProperty("settingsToolTip", field->toolTip());
+        field->setToolTip(settings            ? field->property("settingsToolTip").toString()
+                          : !target.isEmpty() ? tr("Chosen for the scene at each render while "
+                                                   "rendering to a quality (Render to)")
+                                              : tr("Whitted 1980 sampling chooses its own rays "
+                                                   "(Antialiasing)"));
     }
-
-    connect(doc_, &SceneDocument::sceneChanged, this, &RenderSettingsPanel::refresh);
-    refresh();
 }
 
 void RenderSettingsPanel::refresh() {

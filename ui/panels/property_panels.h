@@ -11,6 +11,7 @@
 #include "document/scene_document.h"
 
 class QComboBox;
+class QFormLayout;
 class QLabel;
 class QStackedWidget;
 
@@ -79,6 +80,12 @@ class RenderSettingsPanel : public QWidget {
                                  QualityChoice* quality = nullptr, QWidget* parent = nullptr);
 
   private:
+    void addIntRows(QFormLayout* form);
+    void addPrecisionRow(QFormLayout* form);
+    ColorButton* addColourRow(QFormLayout* form, const QString& label, const QString& name,
+                              Vec3 Scene::*member, const QString& what);
+    // Depth and samples rest while a target or Whitted 1980 sampling chooses them.
+    void followTarget(const QualityChoice* quality);
     void refresh();
 
     SceneDocument* doc_;

@@ -59,6 +59,30 @@ Scene MainWindow::newSceneTemplate() {
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setAcceptDrops(true);
+    connectRendersAndPredictions();
+    view_ = new RenderView(&doc_, this);
+    setCentralWidget(view_);
+    buildDocks();
+    buildMenus();
+    addFieldToolTips(this);
+    buildStatusBar();
+    connect(&doc_, &SceneDocument::modifiedChanged, this, &MainWindow::updateTitle);
+    connect(&doc_, &SceneDocument::filePathChanged, this, &MainWindow::updateTitle);
+    connect(&worker_, &RenderWorker::frameReady, this, &MainWindow::onFrame);
+    connect(view_, &RenderView::moveMessage, this, [this](const QString& text) {
+        if (text.isEmpty())
+            statusBar()->clearMessage();
+        else
+            statusBar()->showMessage(text);
+    });
+    restorePlacement();
+    rebuildRecentMenu();
+    doc_.reset(newSceneTemplate(), QString());
+    view_->setHomeCamera(doc_.scene().camera);
+    updateTitle();
+}
+
+void MainWindow::connectRendersAndPredictions() {
     // The first to hear of a change, so that the render starts while the
     // panels and the rest refresh (a few ms on a scene of 100,000 spheres).
     connect(&doc_, &SceneDocument::sceneChanged, this, &MainWindow::requestRender);
@@ -80,12 +104,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
             record_.contentChanged();
     });
     connect(&predictor_, &ProbePredictor::predicted, &record_, &TradeoffRecord::setProbePrediction);
-    view_ = new RenderView(&doc_, this);
-    setCentralWidget(view_);
-    buildDocks();
-    buildMenus();
-    addFieldToolTips(this);
+}
 
+// The render's figures, the recovery copy's failures and the float range
+// warning.
+void MainWindow::buildStatusBar() {
     passLabel_ = new QLabel;
     samplesLabel_ = new QLabel;
     timeLabel_ = new QLabel;
@@ -99,17 +122,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     });
     floatRangeWarning_ = new FloatRangeWarning(&doc_, {}, statusBar());
     statusBar()->addWidget(floatRangeWarning_);
+}
 
-    connect(&doc_, &SceneDocument::modifiedChanged, this, &MainWindow::updateTitle);
-    connect(&doc_, &SceneDocument::filePathChanged, this, &MainWindow::updateTitle);
-    connect(&worker_, &RenderWorker::frameReady, this, &MainWindow::onFrame);
-    connect(view_, &RenderView::moveMessage, this, [this](const QString& text) {
-        if (text.isEmpty())
-            statusBar()->clearMessage();
-        else
-            statusBar()->showMessage(text);
-    });
-
+// Where the window and its docks were; on a first start, or where no screen
+// shows that place any more, a size that leaves room for the view.
+void MainWindow::restorePlacement() {
     QSettings settings;
     if (!restoreGeometry(settings.value("window/geometry").toByteArray()) ||
         !someScreenShows(geometry())) {
@@ -125,11 +142,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         });
     }
     restoreState(settings.value("window/state").toByteArray());
-    rebuildRecentMenu();
-
-    doc_.reset(newSceneTemplate(), QString());
-    view_->setHomeCamera(doc_.scene().camera);
-    updateTitle();
 }
 
 MainWindow::~MainWindow() = default;

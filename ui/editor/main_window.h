@@ -93,6 +93,10 @@ class MainWindow : public QMainWindow {
     void dropEvent(QDropEvent* e) override;
 
   private:
+    void connectRendersAndPredictions();
+    void buildStatusBar();
+    void restorePlacement();
+
     // main_window_menus.cpp
     void buildMenus();
     void buildFileMenu();

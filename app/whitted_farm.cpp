@@ -154,6 +154,75 @@ std::string readLog(const fs::path& file) {
     return text.empty() ? "(empty: the task never ran)\n" : text;
 }
 
+using JobStates = std::map<std::string, std::string>;
+
+// The plan job, while it is in the queue: its failure said and the jobs
+// cancelled (exit 1), else once it is done what it chose (sayPlan), once.
+std::optional<int> followPlanJob(const Jobs& jobs, const JobStates& states, const fs::path& work,
+                                 bool quiet, const std::function<void()>& sayPlan, bool& planSaid) {
+    const auto p = states.find(jobs.prepare);
+    if (p == states.end()) return std::nullopt;
+    if (failedState(p->second)) {
+        std::cerr << "\nwhitted-farm: the plan job (" << jobs.prepare << ") " << p->second
+                  << "; its log, " << (work / "prepare.log").string() << ":\n"
+                  << readLog(work / "prepare.log");
+        cancelJobs(jobs);
+        return kExitFailure;
+    }
+    if (p->second == "COMPLETED" && !planSaid) {
+        if (!quiet) {
+            std::fputc('\n', stderr);
+            sayPlan();
+        }
+        planSaid = true;
+    }
+    return std::nullopt;
+}
+
+// The tasks done so far; a failed one said and the jobs cancelled (nothing).
+std::optional<int> tasksDone(const Jobs& jobs, const Plan& plan, const JobStates& states,
+                             const fs::path& work) {
+    int done = 0;
+    for (const auto& [id, state] : states) {
+        const std::size_t underscore = id.find('_');
+        if (underscore == std::string::npos || id.find('[') != std::string::npos) continue;
+        if (state == "COMPLETED") ++done;
+        if (!failedState(state)) continue;
+        reportFailedTask(jobs, plan, states, work);
+        cancelJobs(jobs);
+        return std::nullopt;
+    }
+    return done;
+}
+
+// Once every job has ended: whether every file is there, said; the exit code.
+int finished(const Jobs& jobs, const Plan& plan, const JobStates& states, const fs::path& work,
+             const fs::path& output, bool quiet) {
+    if (!quiet) std::fputc('\n', stderr);
+    const auto merge = states.find(jobs.merge);
+    if (!jobs.merge.empty() && merge->second != "COMPLETED") {
+        if (filesWritten(plan, jobs.indices))
+            std::cerr << "whitted-farm: the merge " << merge->second << "; its log:\n"
+                      << readLog(work / "merge.log");
+        else
+            reportFailedTask(jobs, plan, states, work);
+        return kExitFailure;
+    }
+    std::vector<int> all(plan.tasks.size());
+    std::iota(all.begin(), all.end(), 0);
+    if (!filesWritten(plan, all) || (plan.merge && !fs::exists(output))) {
+        std::cerr << "whitted-farm: the jobs ended, but not every file is there\n";
+        return kExitFailure;
+    }
+    if (!quiet)
+        std::cerr << "whitted-farm: wrote "
+                  << (plan.merge ? output.string()
+                                 : plan.tasks.front().output.string() + " to " +
+                                       plan.tasks.back().output.string())
+                  << "\n";
+    return kExitOk;
+}
+
 // Follows the jobs until the render is done (0) or a task fails (1), or the
 // user interrupts (130: the jobs are cancelled).
 int follow(const Jobs& jobs, const Plan& plan, const fs::path& work, const fs::path& output,
@@ -167,67 +236,50 @@ int follow(const Jobs& jobs, const Plan& plan, const fs::path& work, const fs::p
             std::cerr << "\nwhitted-farm: interrupted; jobs cancelled\n";
             return kExitInterrupted;
         }
-        const auto states = jobStates(jobs);
-        if (const auto p = states.find(jobs.prepare); p != states.end()) {
-            if (failedState(p->second)) {
-                std::cerr << "\nwhitted-farm: the plan job (" << jobs.prepare << ") " << p->second
-                          << "; its log, " << (work / "prepare.log").string() << ":\n"
-                          << readLog(work / "prepare.log");
-                cancelJobs(jobs);
-                return kExitFailure;
-            }
-            if (p->second == "COMPLETED" && !planSaid) {
-                if (!quiet) {
-                    std::fputc('\n', stderr);
-                    sayPlan();
-                }
-                planSaid = true;
-            }
-        }
-        int done = 0;
-        for (const auto& [id, state] : states) {
-            const std::size_t underscore = id.find('_');
-            if (underscore == std::string::npos || id.find('[') != std::string::npos) continue;
-            if (state == "COMPLETED") ++done;
-            if (!failedState(state)) continue;
-            reportFailedTask(jobs, plan, states, work);
-            cancelJobs(jobs);
-            return kExitFailure;
-        }
-        if (!quiet && done != shown) {
-            std::fprintf(stderr, "\rwhitted-farm: tasks done %d/%d", done, total);
+        const JobStates states = jobStates(jobs);
+        if (const auto code = followPlanJob(jobs, states, work, quiet, sayPlan, planSaid))
+            return *code;
+        const std::optional<int> done = tasksDone(jobs, plan, states, work);
+        if (!done) return kExitFailure;
+        if (!quiet && *done != shown) {
+            std::fprintf(stderr, "\rwhitted-farm: tasks done %d/%d", *done, total);
             std::fflush(stderr);
-            shown = done;
+            shown = *done;
         }
         const auto merge = states.find(jobs.merge);
         const bool tasksGone = !jobs.tasks.empty() && states.empty();
-        if (jobs.merge.empty() ? done == total || tasksGone
-                               : merge != states.end() && finishedState(merge->second)) {
-            if (!quiet) std::fputc('\n', stderr);
-            if (!jobs.merge.empty() && merge->second != "COMPLETED") {
-                if (filesWritten(plan, jobs.indices))
-                    std::cerr << "whitted-farm: the merge " << merge->second << "; its log:\n"
-                              << readLog(work / "merge.log");
-                else
-                    reportFailedTask(jobs, plan, states, work);
-                return kExitFailure;
-            }
-            std::vector<int> all(plan.tasks.size());
-            std::iota(all.begin(), all.end(), 0);
-            if (!filesWritten(plan, all) || (plan.merge && !fs::exists(output))) {
-                std::cerr << "whitted-farm: the jobs ended, but not every file is there\n";
-                return kExitFailure;
-            }
-            if (!quiet)
-                std::cerr << "whitted-farm: wrote "
-                          << (plan.merge ? output.string()
-                                         : plan.tasks.front().output.string() + " to " +
-                                               plan.tasks.back().output.string())
-                          << "\n";
-            return kExitOk;
-        }
+        if (jobs.merge.empty() ? *done == total || tasksGone
+                               : merge != states.end() && finishedState(merge->second))
+            return finished(jobs, plan, states, work, output, quiet);
         std::this_thread::sleep_for(std::chrono::milliseconds(500));
     }
+}
+
+// What went to the queue, on stderr.
+void sayQueued(const Jobs& jobs, const Plan& plan, bool turntable) {
+    std::cerr << "whitted-farm: "
+              << (jobs.prepare.empty() ? "" : "the plan, job " + jobs.prepare + "; ")
+              << jobs.indices.size() << " of " << plan.tasks.size()
+              << (turntable ? " frames" : " regions") << " to render"
+              << (jobs.tasks.empty() ? "" : ", job " + jobs.tasks)
+              << (jobs.merge.empty() ? "" : "; merge, job " + jobs.merge) << "\n";
+}
+
+// Flags that contradict each other or the picture: said, and exit 2. Refused
+// here, not by every task. `target`: the quality the flags ask for, if any.
+std::optional<int> checkFlags(const Options& o, int width, int height,
+                              std::optional<QualityTarget>& target) {
+    try {
+        target = qualityTargetOf(o.quality);
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "whitted-farm: " << e.what() << "\n";
+        return kExitBadInput;
+    }
+    if (o.tiles > width * height) {
+        std::cerr << "whitted-farm: --tiles " << o.tiles << ": more than the image's pixels\n";
+        return kExitBadInput;
+    }
+    return std::nullopt;
 }
 
 int run(const Options& o) {
@@ -238,17 +290,7 @@ int run(const Options& o) {
     applyRenderFlags(o.render, scene.render);
     const int width = scene.render.width, height = scene.render.height;
     std::optional<QualityTarget> target;
-    try {
-        // Contradicting flags: refused here, not by every task.
-        target = qualityTargetOf(o.quality);
-    } catch (const std::invalid_argument& e) {
-        std::cerr << "whitted-farm: " << e.what() << "\n";
-        return kExitBadInput;
-    }
-    if (o.tiles > width * height) {
-        std::cerr << "whitted-farm: --tiles " << o.tiles << ": more than the image's pixels\n";
-        return kExitBadInput;
-    }
+    if (const auto code = checkFlags(o, width, height, target)) return *code;
     const fs::path output = fs::absolute(o.output);
     const fs::path work =
         o.workDir.empty() ? fs::path(output.string() + ".farm") : fs::absolute(o.workDir);
@@ -279,13 +321,7 @@ int run(const Options& o) {
         if (!o.quiet) std::cerr << "whitted-farm: every frame is already done\n";
         return kExitOk;
     }
-    if (!o.quiet)
-        std::cerr << "whitted-farm: "
-                  << (jobs.prepare.empty() ? "" : "the plan, job " + jobs.prepare + "; ")
-                  << jobs.indices.size() << " of " << plan.tasks.size()
-                  << (o.turntable > 0 ? " frames" : " regions") << " to render"
-                  << (jobs.tasks.empty() ? "" : ", job " + jobs.tasks)
-                  << (jobs.merge.empty() ? "" : "; merge, job " + jobs.merge) << "\n";
+    if (!o.quiet) sayQueued(jobs, plan, o.turntable > 0);
     if (!o.wait) return kExitOk;
     // What the plan job chose, once it has (from the file, in the user's words).
     const auto sayPlan = [&] {

@@ -101,15 +101,9 @@ class TileRenderer {
     // picks none.
     RenderResult runAdaptive() {
         const AdaptiveSampling& limits = *options_.adaptive;
-        tileStates_.resize(tiles_.size());
-        for (size_t t = 0; t < tiles_.size(); ++t)
-            tileStates_[t].pixels = tiles_[t].w * tiles_[t].h;
+        startTileStates(limits);
         std::vector<RenderPass> passes = planPasses(settings_, options_);  // the preview, if any
         passes.resize(passes.front().kind == PassKind::Preview ? 1 : 0);
-        if (limitsLargest(limits)) {
-            pixelLargest_.width = s_.width, pixelLargest_.height = s_.height;
-            pixelLargest_.codes.resize(std::size_t(s_.width) * s_.height);
-        }
         std::vector<int> refine(tiles_.size());
         std::iota(refine.begin(), refine.end(), 0);
         int index = 0;
@@ -161,6 +155,18 @@ class TileRenderer {
         result.pixelLargest = std::move(pixelLargest_);
         result.samples = stopped_ ? 0 : result.adaptive->fewestSamples;
         return result;
+    }
+
+    // Each tile's sampling state, and each pixel's largest error where the
+    // limits hold it to one.
+    void startTileStates(const AdaptiveSampling& limits) {
+        tileStates_.resize(tiles_.size());
+        for (size_t t = 0; t < tiles_.size(); ++t)
+            tileStates_[t].pixels = tiles_[t].w * tiles_[t].h;
+        if (limitsLargest(limits)) {
+            pixelLargest_.width = s_.width, pixelLargest_.height = s_.height;
+            pixelLargest_.codes.resize(std::size_t(s_.width) * s_.height);
+        }
     }
 
     // `rendered`: the tiles the last pass rendered.

@@ -179,6 +179,14 @@ bool PresetControls::apply(SceneDocument* doc, QualityChoice* quality, const Ren
 void PresetControls::refresh() {
     const Scene& scene = doc_->scene();
     const std::optional<QualityTarget>& target = quality_->target();
+    refreshChoices(scene, target);
+    const Prediction now = record_->predict(scene);
+    refreshPrediction(scene, target, now);
+    refreshTooltips(scene, now);
+}
+
+void PresetControls::refreshChoices(const Scene& scene,
+                                    const std::optional<QualityTarget>& target) {
     {
         // While a target rules, the presets are targets: the scene's
         // samples and depth are not what the view renders ("Final (128 spp,
@@ -197,7 +205,11 @@ void PresetControls::refresh() {
         const QSignalBlocker block(target_);
         target_->setCurrentIndex(QualityChoice::indexOf(target));
     }
-    const Prediction now = record_->predict(scene);
+}
+
+void PresetControls::refreshPrediction(const Scene& scene,
+                                       const std::optional<QualityTarget>& target,
+                                       const Prediction& now) {
     if (target) {
         const TargetPrediction* ahead = record_->targetPrediction(scene, *target);
         const QString reached = quality_->lastReached(target->name);
@@ -206,14 +218,18 @@ void PresetControls::refresh() {
     } else if (quality_->whitted1980()) {
         // Its rays follow the picture's edges: no probe or past render of the
         // settings speaks for them.
-        const QString none = tr("none for Whitted 1980 sampling: the status bar says what each "
-                                "render took");
+        const QString none =
+            tr("none for Whitted 1980 sampling: the status bar says what each "
+               "render took");
         time_->setText(none);
         error_->setText(none);
     } else {
         time_->setText(timeText(now));
         error_->setText(errorText(now));
     }
+}
+
+void PresetControls::refreshTooltips(const Scene& scene, const Prediction& now) {
     // Where the user hovers before choosing: the target the view will render
     // to, the probes' prediction of a render to it, what the last one here
     // took, and the prediction for the preset's own settings (what "Render

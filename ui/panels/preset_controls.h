@@ -66,6 +66,10 @@ class PresetControls : public QObject {
     void choose(int index);
     void chooseTarget(int index);
     void refresh();
+    void refreshChoices(const Scene& scene, const std::optional<QualityTarget>& target);
+    void refreshPrediction(const Scene& scene, const std::optional<QualityTarget>& target,
+                           const Prediction& now);
+    void refreshTooltips(const Scene& scene, const Prediction& now);
     // A preset's or "Render to"'s tooltip for `target`: what it is, the
     // probes' prediction of a render to it, and what the last one here took.
     QString targetTip(const Scene& scene, const QualityTarget& target) const;

@@ -27,12 +27,9 @@ int markerOf(Precision p) {
     return p == Precision::Float ? 0 : 1;
 }
 
-}  // namespace
-
-DockPlot dockPlot(const std::vector<PinnedPoint>& pinned,
-                  const std::vector<TradeoffPoint>& measure) {
-    DockPlot plot;
-    PlotSpec& spec = plot.spec;
+// The axes, markers and legend, without points.
+PlotSpec emptyDockPlot() {
+    PlotSpec spec;
     spec.xLabel = QObject::tr("Render time (s)");
     spec.yLabel = QObject::tr("RMSE, 8-bit sRGB");
     spec.logX = spec.logY = true;
@@ -42,13 +39,36 @@ DockPlot dockPlot(const std::vector<PinnedPoint>& pinned,
     spec.showLabels = true;
     // Beside the plot: inside, it would hide the fast, noisy corner of the data.
     spec.legend = LegendPlacement::Right;
+    return spec;
+}
 
-    // One series per scale Measure used, largest first.
+// The resolution scales Measure used, largest first: a series each.
+std::vector<double> scalesOf(const std::vector<TradeoffPoint>& measure) {
     std::vector<double> scales;
     for (const TradeoffPoint& p : measure)
         if (std::find(scales.begin(), scales.end(), p.settings.resolutionScale) == scales.end())
             scales.push_back(p.settings.resolutionScale);
     std::sort(scales.rbegin(), scales.rend());
+    return scales;
+}
+
+// Measure's Pareto front, joined in order of time.
+PlotLine frontLine(std::vector<const TradeoffPoint*> front) {
+    std::sort(front.begin(), front.end(), [](auto* a, auto* b) { return a->seconds < b->seconds; });
+    PlotLine line;
+    line.colour = QColor(60, 60, 60);
+    line.width = 1.0;
+    for (const TradeoffPoint* p : front) line.points.emplace_back(p->seconds, p->error.rmseSrgb8);
+    return line;
+}
+
+}  // namespace
+
+DockPlot dockPlot(const std::vector<PinnedPoint>& pinned,
+                  const std::vector<TradeoffPoint>& measure) {
+    DockPlot plot;
+    PlotSpec& spec = plot.spec = emptyDockPlot();
+    const std::vector<double> scales = scalesOf(measure);
     for (std::size_t i = 0; i < scales.size(); ++i)
         spec.series.push_back(
             {QObject::tr("Measure, %1 % size").arg(scales[i] * 100), measureColour(scales[i])});
@@ -77,15 +97,7 @@ DockPlot dockPlot(const std::vector<PinnedPoint>& pinned,
             pointTooltip(p));
         if (p.pareto && p.error.rmseSrgb8 > 0) front.push_back(&p);
     }
-    std::sort(front.begin(), front.end(), [](auto* a, auto* b) { return a->seconds < b->seconds; });
-    if (front.size() > 1) {
-        PlotLine line;
-        line.colour = QColor(60, 60, 60);
-        line.width = 1.0;
-        for (const TradeoffPoint* p : front)
-            line.points.emplace_back(p->seconds, p->error.rmseSrgb8);
-        spec.lines.push_back(std::move(line));
-    }
+    if (front.size() > 1) spec.lines.push_back(frontLine(front));
     // The pinned comparisons joined in order of time: a handful of points
     // among Measure's hundreds would otherwise be hard to find.
     PlotLine pinnedLine;

@@ -11,11 +11,13 @@
 # up, and takes the picture during the move. With --ray-tree X Y it Ctrl+clicks
 # the window's point X,Y, which opens the Ray Tree dock on that pixel, then
 # clicks the window's point RAY_TREE_ROW ("X Y", if set): a row of the dock,
-# whose ray the view then draws highlighted. Safe to re-run.
+# whose ray the view then draws highlighted. With --quality-final it renders to
+# Final (Ctrl+3), shows the Render tab and waits QUALITY_FINAL_SECONDS (25
+# unless set) for the render. Safe to re-run.
 # Needs xvfb, x11-utils (xwininfo) and imagemagick (import), and xdotool for
 # --precision-view, --tradeoff-view, --moving and --ray-tree. Build first (scripts/setup.sh).
 # Usage: scripts/screenshot.sh [--scene SCENE.json] [--precision-view | --tradeoff-view |
-#                               --moving | --ray-tree X Y] [OUT.png]
+#                               --moving | --ray-tree X Y | --quality-final] [OUT.png]
 set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -25,6 +27,7 @@ precision_view=
 tradeoff_view=
 moving=
 ray_tree=
+quality_final=
 while [[ $# -gt 0 ]]; do
   case $1 in
     --scene) scene=$2; shift 2 ;;
@@ -32,6 +35,7 @@ while [[ $# -gt 0 ]]; do
     --tradeoff-view) tradeoff_view=1; shift ;;
     --moving) moving=1; shift ;;
     --ray-tree) ray_tree="$2 $3"; shift 3 ;;
+    --quality-final) quality_final=1; shift ;;
     *) out=$1; shift ;;
   esac
 done
@@ -44,7 +48,7 @@ fail() {
 }
 
 [[ -x build/bin/whitted ]] || fail "build/bin/whitted is not built (run scripts/setup.sh)"
-tools="Xvfb xwininfo import${precision_view:+ xdotool}${tradeoff_view:+ xdotool}${moving:+ xdotool}${ray_tree:+ xdotool}"
+tools="Xvfb xwininfo import${precision_view:+ xdotool}${tradeoff_view:+ xdotool}${moving:+ xdotool}${ray_tree:+ xdotool}${quality_final:+ xdotool}"
 for tool in $tools; do
   command -v "$tool" >/dev/null 2>&1 || fail "$tool not found (apt-get install xvfb x11-utils imagemagick xdotool)"
 done
@@ -194,6 +198,18 @@ if [[ -n "$ray_tree" ]]; then
     DISPLAY=$display xdotool mousemove --sync $RAY_TREE_ROW click 1 ||
       fail "could not click the row at $RAY_TREE_ROW"
   fi
+fi
+
+if [[ -n "$quality_final" ]]; then
+  sleep 2
+  id=$(DISPLAY=$display xdotool search --name "$title" | head -n 1)
+  DISPLAY=$display xdotool windowfocus --sync "$id" key --clearmodifiers ctrl+3 ||
+    fail "could not send Ctrl+3 to the editor"
+  sleep 1
+  # The Render tab of the 1600x1000 window at 0,0.
+  DISPLAY=$display xdotool mousemove --sync 1314 90 click 1 ||
+    fail "could not click the Render tab"
+  sleep "${QUALITY_FINAL_SECONDS:-25}"
 fi
 
 # The example scenes at 640x480 render in well under a second, and compare in

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <exception>
 #include <mutex>
@@ -186,9 +187,15 @@ py::object render(const Scene& given, const RenderArgs& args, bool returnStats,
     const Image& image = traced.result.image;
     py::array_t<float> array = arrayOf(region ? cropImage(image, *region) : image);
     if (!returnStats) return array;
-    return py::make_tuple(
-        array,
-        fromJsonText(renderStats(scene.render, traced.result, traced.plan, std::nullopt).dump()));
+    py::object stats =
+        fromJsonText(renderStats(scene.render, traced.result, traced.plan, std::nullopt).dump());
+    // JSON has no infinity, so the file says null for an estimate of no error
+    // at all; Python has one, and a script compares the figure as a number.
+    if (traced.plan && traced.result.adaptive) {
+        const double db = estimatedPsnr(*traced.plan, *traced.result.adaptive);
+        if (std::isinf(db)) stats["quality"]["estimated_psnr_db"] = db;
+    }
+    return py::make_tuple(array, stats);
 }
 
 }  // namespace

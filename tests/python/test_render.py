@@ -69,3 +69,13 @@ def test_the_scenes_own_settings_are_left_as_they_were(seed_path):
 def test_bad_settings_raise_value_error(seed_path, settings, message):
     with pytest.raises(ValueError, match=message):
         whitted.render(whitted.load(seed_path), **settings)
+
+
+def test_an_estimate_of_no_error_at_all_is_infinity_not_none():
+    # Nothing but the background: every sample agrees, so the estimate has no
+    # error; the stats file says null (JSON has no infinity), Python says inf.
+    empty = whitted.load_dict({"camera": {"position": [0, 1, -5], "look_at": [0, 1, 0]},
+                               "render": {"width": 32, "height": 24},
+                               "materials": [], "lights": [], "spheres": []})
+    _, stats = whitted.render(empty, quality="final", return_stats=True)
+    assert stats["quality"]["estimated_psnr_db"] == float("inf")

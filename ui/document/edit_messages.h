@@ -1,7 +1,8 @@
 // Turns core's validation problem for an edit ("spheres[0].radius: must be > 0,
 // found 0") into the user's words ("Radius of sphere “ball” must be greater
-// than 0"): the item by its name, the field by its form label. Files and the
-// CLI keep core's JSON paths; only the editor's refused edits speak this way.
+// than 0"): the item by its name, the field by its label (scene_fields.h),
+// the problem by its kind, never by the reason's words. Files and the CLI keep
+// core's JSON paths; only the editor's refused edits speak this way.
 #pragma once
 
 #include <QString>

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <vector>
 
+#include "base/printed.h"
 #include "image/image_compare.h"
 #include "image/srgb.h"
 
@@ -19,9 +19,7 @@ double psnrFromMse(double mse, double peak) {
 
 std::string psnrText(double db) {
     if (std::isinf(db)) return "\u221e dB";
-    char text[32];
-    std::snprintf(text, sizeof text, "%.1f dB", db);
-    return text;
+    return printed("%.1f dB", db);
 }
 
 ErrorStats measureError(const Image& image, const Image& reference) {

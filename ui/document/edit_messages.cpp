@@ -2,7 +2,8 @@
 
 #include <QObject>
 
-#include "document/scene_document.h"  // ItemKind, kindNoun
+#include "document/scene_document.h"   // ItemKind, kindNoun, itemCount
+#include "document/scene_selection.h"  // itemNameOf
 
 namespace whitted::ui {
 
@@ -50,20 +51,11 @@ ItemKind kindOf(SceneList list) {
 
 // The name of the item a problem is in; null when it is in none.
 const std::string* itemName(const SceneProblem& problem, const Scene& scene) {
-    const auto name = [&](const auto& items) -> const std::string* {
-        return problem.index < items.size() ? &items[problem.index].name : nullptr;
-    };
-    switch (problem.list) {
-        case SceneList::Materials:
-            return name(scene.materials);
-        case SceneList::Lights:
-            return name(scene.lights);
-        case SceneList::Spheres:
-            return name(scene.spheres);
-        case SceneList::None:
-            break;
-    }
-    return nullptr;
+    if (problem.list == SceneList::None) return nullptr;
+    const ItemKind kind = kindOf(problem.list);
+    const int index = static_cast<int>(problem.index);
+    if (index >= itemCount(scene, kind)) return nullptr;
+    return &itemNameOf(scene, kind, index);
 }
 
 // A value against its field's rule: "Radius of sphere “ball” must be greater than 0".

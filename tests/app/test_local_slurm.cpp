@@ -184,12 +184,14 @@ TEST(WhittedFarm, TilesToAQualityOnSlurm_MeetTheTarget) {
                   fs::last_write_time(planFile))
             << task;
     }
-    renderLocally(test::appended({test::kSeedScenePath, "-o", ref.string(), "--spp", "1024",
-                                  "--depth", "12", "--precision", "double"},
-                                 size));
-    const ErrorStats e = measureError(readImage(out), readImage(ref));
-    EXPECT_GE(e.psnrSrgb8, 35.0);
-    EXPECT_LE(e.largest, 64.0);
+    if (!test::kSanitized) {  // the numbers, which the Release stage checks
+        renderLocally(test::appended({test::kSeedScenePath, "-o", ref.string(), "--spp", "1024",
+                                      "--depth", "12", "--precision", "double"},
+                                     size));
+        const ErrorStats e = measureError(readImage(out), readImage(ref));
+        EXPECT_GE(e.psnrSrgb8, 35.0);
+        EXPECT_LE(e.largest, 64.0);
+    }
     const ImageMetadata merged = readImagePart(out).metadata;
     EXPECT_EQ(merged.qualityTarget, "Preview: 35 dB, no pixel off by more than 64 codes");
     EXPECT_EQ(merged.qualityReached.rfind("4 regions, each rendered to it: depth ", 0), 0u)

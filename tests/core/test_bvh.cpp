@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "field_layouts.h"
+#include "support/test_support.h"
 #include "tracer/bvh.h"
 #include "tracer/bvh_traverse.h"
 #include "tracer/kernel_dispatch.h"
@@ -183,17 +184,28 @@ void expectSameRenders(int count, Layout layout, bool floor, std::uint32_t scene
     expectSameSamples<double>(scene, what + ", double", rowStep);
 }
 
+// Under the sanitizers one sample of every pixel of every second row of a
+// large field (500 spheres and more) walks the same deep trees from edge to
+// edge of the picture (what they check is memory, not the other samples'
+// jitter, which Release compares): the six fields of 5000 took 80 s of the
+// ASan stage's CPU with every sample, 34 s with one a pixel.
+constexpr int kLargeSamplesPerPixel = test::kSanitized ? 1 : kSamplesPerPixel;
+constexpr int kLargeRowStep = test::kSanitized ? 2 : 1;
+
 class BvhRendersLikeBruteForce : public ::testing::TestWithParam<int> {};
 
 TEST_P(BvhRendersLikeBruteForce, EveryPixelEqualInFloatAndDouble) {
     const int count = GetParam();
     const std::uint32_t seed = testSeed(1000 + count);
     std::printf("seed %u (WHITTED_TEST_SEED replays it)\n", seed);
+    const bool large = count >= 500;
     int variant = 0;
     for (Layout layout :
          {Layout::Field, Layout::Overlapping, Layout::Nested, Layout::Far, Layout::Tiny})
         for (bool floor : {true, false})
-            expectSameRenders(count, layout, floor, seed * 31 + variant++);
+            expectSameRenders(count, layout, floor, seed * 31 + variant++,
+                              large ? kLargeSamplesPerPixel : kSamplesPerPixel,
+                              large ? kLargeRowStep : 1);
 }
 
 INSTANTIATE_TEST_SUITE_P(Counts, BvhRendersLikeBruteForce, ::testing::Values(1, 2, 7, 50, 500));
@@ -202,18 +214,6 @@ INSTANTIATE_TEST_SUITE_P(Counts, BvhRendersLikeBruteForce, ::testing::Values(1, 
 // Release, which the sanitizer builds (3 to 6 times slower) would take past
 // CTest's 120 s limit. Without a floor only the field: the others add nothing
 // the 500-sphere case does not test, at a brute-force cost of minutes.
-// Under the sanitizers one sample of every pixel of every second row walks
-// the same deep trees from edge to edge of the picture (what they check is
-// memory, not the other samples' jitter, which Release compares): the six took
-// 80 s of the ASan stage's CPU with every sample, 34 s with one a pixel.
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-constexpr int kLargeSamplesPerPixel = 1;
-constexpr int kLargeRowStep = 2;
-#else
-constexpr int kLargeSamplesPerPixel = kSamplesPerPixel;
-constexpr int kLargeRowStep = 1;
-#endif
-
 class BvhRendersLikeBruteForceLarge : public ::testing::TestWithParam<std::tuple<Layout, bool>> {};
 
 TEST_P(BvhRendersLikeBruteForceLarge, EveryPixelEqualInFloatAndDouble) {

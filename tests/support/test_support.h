@@ -20,6 +20,17 @@
 
 namespace whitted::test {
 
+// Whether this is a sanitizer build (the ASan and TSan stages). They check
+// what a test's code touches, not the numbers it computes, which the Release
+// stage checks: a test whose cost is numerical size alone (a converged
+// reference, every sample of a large field) does less under them
+// (docs/design/testing.md).
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+inline constexpr bool kSanitized = true;
+#else
+inline constexpr bool kSanitized = false;
+#endif
+
 // Names of the entries in `dir`, sorted.
 inline std::vector<std::string> directoryEntries(const std::filesystem::path& dir) {
     std::vector<std::string> names;

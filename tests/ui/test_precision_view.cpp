@@ -193,11 +193,13 @@ TEST_F(PrecisionViewTest, EditWhileShown_ComparesAtPreviewSizeOnlyAfterTheMainRe
     QObject::connect(view, &PrecisionView::comparisonStarted, &listening,
                      [&] { events << QStringLiteral("comparison started"); });
     QSignalSpy shown(view, &PrecisionView::comparisonShown);
-    // Slower than the debounce delay, so that a comparison not waiting for it would overlap.
+    // Slower than the debounce delay, so that a comparison not waiting for it
+    // would overlap; the sanitizers render about ten times slower.
+    constexpr int kSamples = test::kSanitized ? 4 : 32;
     ASSERT_TRUE(doc->edit(QStringLiteral("bigger"), [](Scene& s) {
         s.render.width = 480;
         s.render.height = 360;
-        s.render.samplesPerPixel = 32;
+        s.render.samplesPerPixel = kSamples;
     }));
     ASSERT_TRUE(shown.wait(2 * kTimeoutMs));  // both renders, one after the other, sanitizers
     EXPECT_EQ(events.join(QStringLiteral(", ")).toStdString(),
@@ -206,8 +208,10 @@ TEST_F(PrecisionViewTest, EditWhileShown_ComparesAtPreviewSizeOnlyAfterTheMainRe
     const PrecisionComparison& c = view->shownResult().comparison;
     EXPECT_EQ(QSize(c.width, c.height), QSize(320, 240));
     const QString status = label("precisionStatus")->text();
-    EXPECT_TRUE(status.startsWith(QStringLiteral(
-        "Measured at 320 × 240 (preview size; the scene renders at 480 × 360), 32 samples")))
+    EXPECT_TRUE(status.startsWith(
+        QStringLiteral(
+            "Measured at 320 × 240 (preview size; the scene renders at 480 × 360), %1 samples")
+            .arg(kSamples)))
         << status.toStdString();
 }
 

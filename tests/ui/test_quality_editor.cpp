@@ -73,9 +73,11 @@ TEST_F(QualityEditorTest, FinalShortcut_RendersToFinalsTarget_MeasuredAgainstACo
     const RenderFrame& frame = log->lastComplete;
     ASSERT_TRUE(frame.qualityPlan && frame.qualityReached && frame.linear);
 
-    const ErrorStats error = measureError(*frame.linear, convergedReference(doc->scene()));
-    EXPECT_GE(error.psnrSrgb8, 50.0);
-    EXPECT_LE(error.largest, 16.0);
+    if (!test::kSanitized) {  // the numbers, which the Release stage checks
+        const ErrorStats error = measureError(*frame.linear, convergedReference(doc->scene()));
+        EXPECT_GE(error.psnrSrgb8, 50.0);
+        EXPECT_LE(error.largest, 16.0);
+    }
     // Sampled where the picture needs it, not everywhere alike.
     EXPECT_LT(frame.qualityReached->fewestSamples, frame.qualityReached->mostSamples);
     EXPECT_EQ(frame.settings.maxDepth, frame.qualityPlan->maxDepth);
@@ -319,6 +321,7 @@ TEST_F(QualityEditorTest, ExportToPreview_WritesAFileThatMeetsIt_AndSaysWhatItRe
         << message.toStdString();
 
     const Image written = readImage(dir.path() / "preview.png");
+    if (test::kSanitized) return;  // the numbers, which the Release stage checks
     const ErrorStats error = measureError(written, convergedReference(doc->scene()));
     EXPECT_GE(error.psnrSrgb8, 35.0);
     EXPECT_LE(error.largest, 64.0);

@@ -276,6 +276,7 @@ TEST_F(TradeoffViewTest, Predictions_FromProbes_WithinTwoDecibelsOfTheRender) {
             << fromProbe.timeSource.toStdString();
     }
 
+    if (test::kSanitized) return;  // the numbers, which the Release stage checks
     const FixedCheck rendered = checkFixed(doc->scene(), convergedReference(doc->scene()));
     EXPECT_NEAR(p.psnrDb, rendered.error.psnrSrgb8, 2.0);
     EXPECT_NEAR(p.rays / double(rendered.rays), 1.0, 0.25);

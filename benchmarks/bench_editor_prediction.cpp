@@ -27,8 +27,8 @@
 #include "bench_scenes.h"
 #include "document/scene_document.h"
 #include "editor/main_window.h"
-#include "tradeoff_dock/probe_predictor.h"
-#include "tradeoff_dock/tradeoff_record.h"
+#include "prediction/probe_predictor.h"
+#include "prediction/tradeoff_record.h"
 
 using namespace whitted;
 using namespace whitted::ui;

@@ -21,11 +21,11 @@
 #include "image/image_error.h"
 #include "image/image_io.h"
 #include "panels/preset_controls.h"
+#include "prediction/tradeoff_record.h"
 #include "support/export_support.h"
 #include "support/main_window_fixture.h"
 #include "support/test_support.h"
 #include "tradeoff_dock/tradeoff_points.h"
-#include "tradeoff_dock/tradeoff_record.h"
 
 namespace whitted::ui {
 namespace {

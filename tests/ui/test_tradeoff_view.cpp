@@ -34,11 +34,11 @@
 #include "editor/main_window.h"
 #include "image/image_error.h"
 #include "plot/plot_widget.h"
+#include "prediction/settings_prediction.h"
+#include "prediction/tradeoff_record.h"
 #include "scene/scene_io.h"
 #include "support/main_window_fixture.h"
 #include "support/test_support.h"
-#include "tradeoff_dock/settings_prediction.h"
-#include "tradeoff_dock/tradeoff_record.h"
 #include "tradeoff_dock/tradeoff_view.h"
 
 namespace whitted::ui {

@@ -18,8 +18,8 @@
 #include "document/quality_choice.h"
 #include "document/scene_document.h"
 #include "editor/help_dialogs.h"
-#include "tradeoff_dock/probe_predictor.h"
-#include "tradeoff_dock/tradeoff_record.h"
+#include "prediction/probe_predictor.h"
+#include "prediction/tradeoff_record.h"
 #include "viewport/render_worker.h"
 
 class QAction;

@@ -12,8 +12,8 @@
 #include "document/quality_choice.h"
 #include "document/scene_document.h"
 #include "panels/number_field.h"
+#include "prediction/tradeoff_record.h"
 #include "tradeoff_dock/tradeoff_points.h"
-#include "tradeoff_dock/tradeoff_record.h"
 
 namespace whitted::ui {
 

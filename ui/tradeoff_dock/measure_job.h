@@ -11,7 +11,7 @@
 #include <thread>
 
 #include "analysis/tradeoff.h"
-#include "tradeoff_dock/settings_prediction.h"
+#include "prediction/settings_prediction.h"
 
 namespace whitted::ui {
 

@@ -20,9 +20,9 @@
 
 #include "document/scene_document.h"
 #include "plot/plot_widget.h"
-#include "tradeoff_dock/settings_prediction.h"
+#include "prediction/settings_prediction.h"
+#include "prediction/tradeoff_record.h"
 #include "tradeoff_dock/tradeoff_plot_spec.h"
-#include "tradeoff_dock/tradeoff_record.h"
 #include "tradeoff_dock/tradeoff_tables.h"
 
 namespace whitted::ui {

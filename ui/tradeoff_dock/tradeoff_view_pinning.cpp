@@ -10,7 +10,7 @@
 #include <cstdlib>
 
 #include "document/scene_document.h"
-#include "tradeoff_dock/settings_prediction.h"
+#include "prediction/settings_prediction.h"
 #include "tradeoff_dock/tradeoff_tables.h"
 
 namespace whitted::ui {

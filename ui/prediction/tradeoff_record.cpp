@@ -1,4 +1,4 @@
-#include "tradeoff_dock/tradeoff_record.h"
+#include "prediction/tradeoff_record.h"
 
 #include <algorithm>
 #include <utility>

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "analysis/tradeoff.h"
+#include "prediction/probe_predictor.h"
 #include "scene/scene.h"
-#include "tradeoff_dock/probe_predictor.h"
 
 namespace whitted::ui {
 

@@ -10,7 +10,7 @@
 #include <optional>
 #include <vector>
 
-#include "tradeoff_dock/settings_prediction.h"
+#include "prediction/settings_prediction.h"
 
 namespace whitted::ui {
 

@@ -1,4 +1,4 @@
-#include "tradeoff_dock/settings_prediction.h"
+#include "prediction/settings_prediction.h"
 
 #include <QObject>
 

@@ -1,4 +1,4 @@
-#include "tradeoff_dock/probe_predictor.h"
+#include "prediction/probe_predictor.h"
 
 #include <utility>
 

@@ -31,12 +31,16 @@ std::vector<std::string> lines(const fs::path& file) {
     return out;
 }
 
+// A --quick run on a 64x48 seed saved in `dir`, into `dir`/out.
+ProgramRun quickRun(const TempDir& dir) {
+    saveScene(test::seedScene(64, 48), dir / "small.json");
+    return tradeoff({(dir / "small.json").string(), "--out-dir", (dir / "out").string(), "--quick"});
+}
+
 TEST(WhittedTradeoff, QuickRun_WritesEveryFileWithOneRowPerPoint) {
     TempDir dir;
-    saveScene(test::seedScene(64, 48), dir / "small.json");
     const fs::path out = dir / "out";
-    const ProgramRun r =
-        tradeoff({(dir / "small.json").string(), "--out-dir", out.string(), "--quick"});
+    const ProgramRun r = quickRun(dir);
     ASSERT_EQ(r.exitCode, 0) << r.out;
     for (const char* name :
          {"points.csv", "table.md", "plot.png", "progressive.csv", "progressive.png",
@@ -78,11 +82,8 @@ TEST(WhittedTradeoff, QuickRun_WritesEveryFileWithOneRowPerPoint) {
 // input: the file and line named, and the report left as it was.
 TEST(WhittedTradeoff, ReportWithQualityCsv_TargetsAgainstWhatWasMeasured) {
     TempDir dir;
-    saveScene(test::seedScene(64, 48), dir / "small.json");
     const fs::path out = dir / "out";
-    ASSERT_EQ(
-        tradeoff({(dir / "small.json").string(), "--out-dir", out.string(), "--quick"}).exitCode,
-        0);
+    ASSERT_EQ(quickRun(dir).exitCode, 0);
     // clang-format off
     const QualityRow draft{"2026-12-05", "glass", 640, 480, "Draft", 20.0, std::nullopt, 2,
                            false, 1.0, 21.34, 163.0, true, 21.3, 163.0, true, 1.02,
@@ -138,11 +139,8 @@ TEST(WhittedTradeoff, ReportWithQualityCsv_TargetsAgainstWhatWasMeasured) {
 
 TEST(WhittedTradeoff, ReportWithSamplerCsv_ComparesWhitted1980WithTheFastestOfOursAsGood) {
     TempDir dir;
-    saveScene(test::seedScene(64, 48), dir / "small.json");
     const fs::path out = dir / "out";
-    ASSERT_EQ(
-        tradeoff({(dir / "small.json").string(), "--out-dir", out.string(), "--quick"}).exitCode,
-        0);
+    ASSERT_EQ(quickRun(dir).exitCode, 0);
     const fs::path csv = dir / "whitted1980.csv";
     std::ofstream(csv) << "scene,sampler,setting,width,height,camera_rays_per_pixel,"
                           "rays_per_pixel,seconds,psnr_db,largest_codes\n"

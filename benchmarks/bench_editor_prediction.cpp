@@ -6,7 +6,7 @@
 // while ProbePredictor's probes start 0.4 s later at a lower priority. The
 // bench waits for both and prints the view's seconds (the status bar's)
 // over the seconds the Render tab showed: the probes' for one pass, and
-// the view's passes at its pace (TradeoffRecord::viewPace()) as it stood
+// the view's passes at its pace (RenderRecord::viewPace()) as it stood
 // before this case, learnt on the cases before it (none before the first: the editor's
 // start scene is its first render, which sets no pace). Then, with the
 // editor idle, it renders the same scene in one pass (the faster of two):
@@ -28,7 +28,7 @@
 #include "document/scene_document.h"
 #include "editor/main_window.h"
 #include "prediction/probe_predictor.h"
-#include "prediction/tradeoff_record.h"
+#include "prediction/render_record.h"
 
 using namespace whitted;
 using namespace whitted::ui;
@@ -70,9 +70,9 @@ std::optional<Case> measure(MainWindow& window, Scene scene, int samples) {
     const bool edited =
         window.document()->edit(QStringLiteral("bench"), [&](Scene& s) { s = scene; });
     // Before this render and prediction pair up: the pace of the ones before.
-    const ViewPace pace = window.tradeoffRecord()->viewPace();
+    const ViewPace pace = window.renderRecord()->viewPace();
     const auto predicted = [&]() -> const ProbePrediction* {
-        const ProbePrediction* p = window.tradeoffRecord()->probePrediction();
+        const ProbePrediction* p = window.renderRecord()->probePrediction();
         return p && p->scene.render == scene.render ? p : nullptr;
     };
     const bool done = edited && waitFor([&] { return rendered && predicted(); });
@@ -104,7 +104,7 @@ int main(int argc, char** argv) {
     const QMetaObject::Connection start = QObject::connect(
         &window, &MainWindow::frameShown, &window,
         [&](const RenderFrame& f) { startRendered = startRendered || f.renderComplete; });
-    waitFor([&] { return startRendered && window.tradeoffRecord()->probePrediction(); });
+    waitFor([&] { return startRendered && window.renderRecord()->probePrediction(); });
     QObject::disconnect(start);
     std::printf(
         "%dx%d, depth 5, float; the view's render (in passes, as the status bar times "

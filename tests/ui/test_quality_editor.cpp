@@ -21,7 +21,7 @@
 #include "image/image_error.h"
 #include "image/image_io.h"
 #include "panels/preset_controls.h"
-#include "prediction/tradeoff_record.h"
+#include "prediction/render_record.h"
 #include "support/export_support.h"
 #include "support/main_window_fixture.h"
 #include "support/test_support.h"
@@ -135,7 +135,7 @@ TEST_F(QualityEditorTest, FinalShortcut_RendersToFinalsTarget_MeasuredAgainstACo
 // A picture of the fixture's 160x120 is rendered as fast as it is predicted.
 TEST_F(QualityEditorTest, RenderTab_PredictsARenderToTheTarget_TheDepthAndSamplesItThenTakes) {
     const auto predictedFor = [&](const QualityTarget& target) {
-        return window->tradeoffRecord()->targetPrediction(doc->scene(), target);
+        return window->renderRecord()->targetPrediction(doc->scene(), target);
     };
     ASSERT_TRUE(pressAndWait("Ctrl+2"));
     ASSERT_TRUE(QTest::qWaitFor([&] { return predictedFor(previewQuality()); }, 30000));
@@ -186,7 +186,7 @@ TEST_F(QualityEditorTest, PresetTooltip_PredictsATargetNotChosen_ChoosingItKeeps
         s.render.height = 144;
     }));
     const auto finalPredicted = [&] {
-        return window->tradeoffRecord()->targetPrediction(doc->scene(), finalQuality());
+        return window->renderRecord()->targetPrediction(doc->scene(), finalQuality());
     };
     ASSERT_TRUE(QTest::qWaitFor(
         [&] {
@@ -231,15 +231,14 @@ TEST_F(QualityEditorTest, RenderToTooltip_WithATargetChosen_PredictsTheScenesOwn
     const Scene scene = doc->scene();
     ASSERT_TRUE(QTest::qWaitFor(
         [&] {
-            const ProbePrediction* p = window->tradeoffRecord()->probePrediction();
+            const ProbePrediction* p = window->renderRecord()->probePrediction();
             return p && p->scene == scene;
         },
         60000));
-    const RenderPrediction& p = window->tradeoffRecord()->probePrediction()->prediction;
+    const RenderPrediction& p = window->renderRecord()->probePrediction()->prediction;
     ASSERT_TRUE(p.predicted) << p.cannot;
-    const QString time =
-        QStringLiteral("\nTime: %1")
-            .arg(PresetControls::timeText(window->tradeoffRecord()->predict(scene)));
+    const QString time = QStringLiteral("\nTime: %1")
+                             .arg(PresetControls::timeText(window->renderRecord()->predict(scene)));
     EXPECT_TRUE(time.contains(QStringLiteral("predicted from small timed probe renders: %1 Mrays")
                                   .arg(p.rays / 1e6, 0, 'f', 1)))
         << time.toStdString();

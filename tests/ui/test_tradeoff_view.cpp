@@ -34,8 +34,8 @@
 #include "editor/main_window.h"
 #include "image/image_error.h"
 #include "plot/plot_widget.h"
+#include "prediction/render_record.h"
 #include "prediction/settings_prediction.h"
-#include "prediction/tradeoff_record.h"
 #include "scene/scene_io.h"
 #include "support/main_window_fixture.h"
 #include "support/test_support.h"
@@ -242,11 +242,11 @@ TEST_F(TradeoffViewTest, Predictions_FromProbes_WithinTwoDecibelsOfTheRender) {
     ASSERT_TRUE(doc->edit(QStringLiteral("spp"), [](Scene& s) { s.render.samplesPerPixel = 8; }));
     const RenderSettings want = doc->scene().render;
     const auto predictedNow = [&] {
-        const ProbePrediction* p = window->tradeoffRecord()->probePrediction();
+        const ProbePrediction* p = window->renderRecord()->probePrediction();
         return p && p->scene.render == want;
     };
     ASSERT_TRUE(QTest::qWaitFor(predictedNow, kTimeoutMs));
-    const RenderPrediction& p = window->tradeoffRecord()->probePrediction()->prediction;
+    const RenderPrediction& p = window->renderRecord()->probePrediction()->prediction;
     ASSERT_TRUE(p.predicted) << p.cannot;
     EXPECT_TRUE(error->text().startsWith(QStringLiteral("RMSE %1 of 255, PSNR %2 dB")
                                              .arg(std::sqrt(p.mseCodes2), 0, 'f', 2)
@@ -265,9 +265,9 @@ TEST_F(TradeoffViewTest, Predictions_FromProbes_WithinTwoDecibelsOfTheRender) {
     for (const std::vector<EditorRender>& renders :
          {std::vector<EditorRender>{{before, 0.1, 1'500'000}}, std::vector<EditorRender>{}}) {
         const Prediction fromProbe = predictSettings(doc->scene(), renders, nullptr, nullptr,
-                                                     window->tradeoffRecord()->probePrediction());
+                                                     window->renderRecord()->probePrediction());
         ASSERT_TRUE(fromProbe.seconds.has_value());
-        // No view's pace given: the bench scenes' (TradeoffRecord learns its own).
+        // No view's pace given: the bench scenes' (RenderRecord learns its own).
         EXPECT_DOUBLE_EQ(*fromProbe.seconds,
                          p.seconds + viewExtraSeconds(doc->scene().render, ViewPace{}));
         EXPECT_TRUE(fromProbe.timeSource.contains(
@@ -508,11 +508,11 @@ TEST_F(TradeoffViewTest, Unpin_ClearsPointsPlotAndTable_LaterRendersAddNothing) 
 
 TEST_F(TradeoffViewTest, OpeningAScene_UnpinsAndForgetsTheRecord) {
     pin();
-    ASSERT_FALSE(window->tradeoffRecord()->renders().empty());
+    ASSERT_FALSE(window->renderRecord()->renders().empty());
     open(kWidth, kHeight);
     EXPECT_FALSE(view->isPinned());
     // Only the new scene's first render is remembered.
-    EXPECT_EQ(window->tradeoffRecord()->renders().size(), 1u);
+    EXPECT_EQ(window->renderRecord()->renders().size(), 1u);
 }
 
 // Every column of `table` as wide as its title and its widest cell need, with
@@ -599,7 +599,7 @@ TEST_F(TradeoffViewTest, Measure_TinyScene_FillsPlotAndTableWithEveryPointAndAFr
     const auto front = std::count_if(points.begin(), points.end(),
                                      [](const TradeoffPoint& p) { return p.pareto; });
     EXPECT_GT(front, 0);
-    const MeasureResults* m = window->tradeoffRecord()->measure();
+    const MeasureResults* m = window->renderRecord()->measure();
     ASSERT_NE(m, nullptr);
     EXPECT_FALSE(m->cancelled);
     EXPECT_EQ(m->total, gridPointCount(grid));
@@ -632,7 +632,7 @@ TEST_F(TradeoffViewTest, Measure_Cancel_StopsWithinAShortTimeAndKeepsPartialResu
     // A point at 160 x 120 takes milliseconds; the stop is asked every tile row.
     EXPECT_LT(clock.elapsed(), 2000);
     EXPECT_TRUE(finished.at(0).at(0).toBool());
-    const MeasureResults* m = window->tradeoffRecord()->measure();
+    const MeasureResults* m = window->renderRecord()->measure();
     ASSERT_NE(m, nullptr);
     EXPECT_TRUE(m->cancelled);
     EXPECT_GE(m->points.size(), 3u);
@@ -654,14 +654,14 @@ TEST_F(TradeoffViewTest, Measure_OpeningASceneMeanwhile_StopsItAndKeepsNothing) 
     QTest::qWait(100);  // anything the stopped run had posted arrives, and is dropped
     EXPECT_EQ(finished.count(), 0);
     EXPECT_TRUE(view->measurePoints().empty());
-    EXPECT_EQ(window->tradeoffRecord()->measure(), nullptr);
+    EXPECT_EQ(window->renderRecord()->measure(), nullptr);
     EXPECT_TRUE(view->measureAction()->isEnabled());
 }
 
 TEST_F(TradeoffViewTest, Measure_ThenPredictions_ShowMeasuredAndInterpolatedValues) {
     open(64, 48);
     ASSERT_TRUE(measure(tinyGrid(), 16));
-    const MeasureResults* m = window->tradeoffRecord()->measure();
+    const MeasureResults* m = window->renderRecord()->measure();
     ASSERT_NE(m, nullptr);
     auto pointAt = [&](int spp) -> const TradeoffPoint& {
         const RenderSettings& r = doc->scene().render;
@@ -738,8 +738,8 @@ TEST(SettingsPrediction, ErrorInterpolatedLogLogBetweenSampleCounts) {
 // The view's pace: what its renders took beyond the probes' one-pass
 // prediction of the very same scene, a pixel and a pass, learnt in the
 // editor; its median prices the passes of the Render tab's probe time.
-TEST(TradeoffRecord, ViewPace_IsTheMedianOfWhatItsRendersTookBeyondTheProbes) {
-    TradeoffRecord record;
+TEST(RenderRecord, ViewPace_IsTheMedianOfWhatItsRendersTookBeyondTheProbes) {
+    RenderRecord record;
     Scene scene = test::seedScene(640, 480);
     scene.render.samplesPerPixel = 8;
     // The preview, then 1, 1, 2 and 4 samples.

@@ -103,7 +103,7 @@ void MainWindow::connectRendersAndPredictions() {
         if (std::exchange(renderedRevision_, doc_.contentRevision()) != doc_.contentRevision())
             record_.contentChanged();
     });
-    connect(&predictor_, &ProbePredictor::predicted, &record_, &TradeoffRecord::setProbePrediction);
+    connect(&predictor_, &ProbePredictor::predicted, &record_, &RenderRecord::setProbePrediction);
 }
 
 // The render's figures, the recovery copy's failures and the float range

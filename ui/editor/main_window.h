@@ -19,7 +19,7 @@
 #include "document/scene_document.h"
 #include "editor/help_dialogs.h"
 #include "prediction/probe_predictor.h"
-#include "prediction/tradeoff_record.h"
+#include "prediction/render_record.h"
 #include "viewport/render_worker.h"
 
 class QAction;
@@ -65,7 +65,7 @@ class MainWindow : public QMainWindow {
     PrecisionView* precisionView() { return precisionView_; }
     TradeoffView* tradeoffView() { return tradeoffView_; }
     RayTreeView* rayTreeView() { return rayTreeView_; }
-    TradeoffRecord* tradeoffRecord() { return &record_; }
+    RenderRecord* renderRecord() { return &record_; }
     QualityChoice* qualityChoice() { return &quality_; }
     FloatRangeWarning* floatRangeWarning() { return floatRangeWarning_; }
     QString lastError() const { return lastError_; }  // the last message shown to the user
@@ -163,7 +163,7 @@ class MainWindow : public QMainWindow {
     void predictWhenShown();
 
     SceneDocument doc_;
-    TradeoffRecord record_;
+    RenderRecord record_;
     std::uint64_t renderedRevision_ = 0;  // the document's content the record's renders are of
     QualityChoice quality_;
     PlanMemo plans_;  // made once for the view, its prediction and an export alike

@@ -12,7 +12,7 @@
 #include "document/quality_choice.h"
 #include "document/scene_document.h"
 #include "panels/number_field.h"
-#include "prediction/tradeoff_record.h"
+#include "prediction/render_record.h"
 #include "tradeoff_dock/tradeoff_points.h"
 
 namespace whitted::ui {
@@ -50,7 +50,7 @@ QLabel* makePredictionLabel(const QString& name) {
 
 }  // namespace
 
-PresetControls::PresetControls(SceneDocument* doc, TradeoffRecord* record, QualityChoice* quality,
+PresetControls::PresetControls(SceneDocument* doc, RenderRecord* record, QualityChoice* quality,
                                QFormLayout* form)
     : QObject(form->parentWidget()), doc_(doc), record_(record), quality_(quality) {
     combo_ = new QComboBox;
@@ -85,7 +85,7 @@ PresetControls::PresetControls(SceneDocument* doc, TradeoffRecord* record, Quali
     connect(doc_, &SceneDocument::sceneChanged, this, &PresetControls::refresh);
     connect(quality_, &QualityChoice::changed, this, &PresetControls::refresh);
     connect(quality_, &QualityChoice::reachedNoted, this, &PresetControls::refresh);
-    connect(record_, &TradeoffRecord::changed, this, &PresetControls::refresh);
+    connect(record_, &RenderRecord::changed, this, &PresetControls::refresh);
     refresh();
 }
 

@@ -32,14 +32,14 @@ namespace whitted::ui {
 
 class QualityChoice;
 class SceneDocument;
-class TradeoffRecord;
+class RenderRecord;
 struct Prediction;
 
 class PresetControls : public QObject {
     Q_OBJECT
   public:
     // Inserts its rows at the top of `form`; lives as long as the form's widget.
-    PresetControls(SceneDocument* doc, TradeoffRecord* record, QualityChoice* quality,
+    PresetControls(SceneDocument* doc, RenderRecord* record, QualityChoice* quality,
                    QFormLayout* form);
 
     // Sets the preset's samples, depth and precision as one undoable edit and
@@ -75,7 +75,7 @@ class PresetControls : public QObject {
     QString targetTip(const Scene& scene, const QualityTarget& target) const;
 
     SceneDocument* doc_;
-    TradeoffRecord* record_;
+    RenderRecord* record_;
     QualityChoice* quality_;
     QComboBox* combo_;
     QComboBox* target_;

@@ -164,7 +164,7 @@ void CameraPanel::refresh() {
 // ---------------------------------------------------------------------------
 // RenderSettingsPanel
 
-RenderSettingsPanel::RenderSettingsPanel(SceneDocument* doc, TradeoffRecord* record,
+RenderSettingsPanel::RenderSettingsPanel(SceneDocument* doc, RenderRecord* record,
                                          QualityChoice* quality, QWidget* parent)
     : QWidget(parent), doc_(doc) {
     QFormLayout* form = makeForm(this);

@@ -66,7 +66,7 @@ class CameraPanel : public QWidget {
     std::vector<DoubleField*> fields_;
 };
 
-class TradeoffRecord;
+class RenderRecord;
 
 // Render settings (image size, depth, samples, precision) and the scene's
 // background and ambient colours; given a record, the presets and the
@@ -76,7 +76,7 @@ class RenderSettingsPanel : public QWidget {
   public:
     // With a record and a quality choice: the presets, the quality target and
     // the predictions (preset_controls.h) above the settings.
-    explicit RenderSettingsPanel(SceneDocument* doc, TradeoffRecord* record = nullptr,
+    explicit RenderSettingsPanel(SceneDocument* doc, RenderRecord* record = nullptr,
                                  QualityChoice* quality = nullptr, QWidget* parent = nullptr);
 
   private:

@@ -22,7 +22,7 @@ struct EditorRender {
     double seconds = 0.0;
     std::uint64_t rays = 0;
     // Of the scene before an edit: its time estimates, but does not measure,
-    // a render of the scene now (TradeoffRecord::contentChanged()).
+    // a render of the scene now (RenderRecord::contentChanged()).
     bool earlierContent = false;
 };
 
@@ -53,7 +53,7 @@ struct Prediction {
 // factor would not do: it was 1.1 to 1.5 on renders of a tenth of a second
 // and 1.01 on one of nine. Measured in the editor, on its own renders: the
 // median of the last few whose scene the probes predicted
-// (TradeoffRecord::addViewRender()). Until one is, the median of the
+// (RenderRecord::addViewRender()). Until one is, the median of the
 // shipped and generated scenes' at 640x480 (bench_editor_prediction).
 inline constexpr double kUnmeasuredSecondsAPixelPass = 22e-9;
 struct ViewPace {

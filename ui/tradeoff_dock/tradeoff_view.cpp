@@ -20,8 +20,8 @@
 
 #include "document/scene_document.h"
 #include "plot/plot_widget.h"
+#include "prediction/render_record.h"
 #include "prediction/settings_prediction.h"
-#include "prediction/tradeoff_record.h"
 #include "tradeoff_dock/tradeoff_plot_spec.h"
 #include "tradeoff_dock/tradeoff_tables.h"
 
@@ -56,7 +56,7 @@ QString TradeoffView::sizeText(int w, int h) {
     return QObject::tr("%1 × %2").arg(w).arg(h);
 }
 
-TradeoffView::TradeoffView(SceneDocument* doc, TradeoffRecord* record, QWidget* parent)
+TradeoffView::TradeoffView(SceneDocument* doc, RenderRecord* record, QWidget* parent)
     : QWidget(parent),
       doc_(doc),
       record_(record),

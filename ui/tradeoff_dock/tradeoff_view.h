@@ -16,7 +16,7 @@
 //
 // Measure runs the whole trade-off of the scene (MeasureJob) in the background,
 // with progress and Cancel; its points fill the plot as they come, the Pareto
-// front ringed, and the finished (or cancelled) run goes to the TradeoffRecord
+// front ringed, and the finished (or cancelled) run goes to the RenderRecord
 // that the Render tab predicts from.
 #pragma once
 
@@ -44,13 +44,13 @@ class QTabWidget;
 namespace whitted::ui {
 
 class SceneDocument;
-class TradeoffRecord;
+class RenderRecord;
 class PlotWidget;
 
 class TradeoffView : public QWidget {
     Q_OBJECT
   public:
-    TradeoffView(SceneDocument* doc, TradeoffRecord* record, QWidget* parent = nullptr);
+    TradeoffView(SceneDocument* doc, RenderRecord* record, QWidget* parent = nullptr);
     ~TradeoffView() override;
 
     // Enabled once the current settings' render is complete.
@@ -133,7 +133,7 @@ class TradeoffView : public QWidget {
     static QString sizeText(int w, int h);
 
     SceneDocument* doc_;
-    TradeoffRecord* record_;
+    RenderRecord* record_;
     ErrorWorker errors_;
 
     std::optional<RenderFrame> complete_;  // the current settings' finished frame, if any

@@ -10,8 +10,8 @@
 #include <algorithm>
 
 #include "document/scene_document.h"
+#include "prediction/render_record.h"
 #include "prediction/settings_prediction.h"
-#include "prediction/tradeoff_record.h"
 #include "tradeoff_dock/tradeoff_tables.h"
 
 namespace whitted::ui {

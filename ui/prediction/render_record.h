@@ -1,6 +1,8 @@
-// What the editor knows about the speed/accuracy trade of the open scene: the
-// renders it finished (their times) and the last Measure run (times and
-// errors). The Render tab's predictions and the Trade-off dock both read it.
+// What the editor knows of the open scene's renders: those it finished
+// (their settings, times and rays), the view's pace beyond the probes'
+// prediction, the probes' newest predictions (probe_predictor.h) and the last
+// Measure run (times and errors). The Render tab's predictions and the
+// Trade-off dock both read it.
 #pragma once
 
 #include <QObject>
@@ -14,7 +16,7 @@
 
 namespace whitted::ui {
 
-class TradeoffRecord : public QObject {
+class RenderRecord : public QObject {
     Q_OBJECT
   public:
     using QObject::QObject;

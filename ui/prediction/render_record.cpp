@@ -1,4 +1,4 @@
-#include "prediction/tradeoff_record.h"
+#include "prediction/render_record.h"
 
 #include <algorithm>
 #include <utility>
@@ -7,7 +7,7 @@
 
 namespace whitted::ui {
 
-void TradeoffRecord::addRender(const EditorRender& render) {
+void RenderRecord::addRender(const EditorRender& render) {
     // One entry per settings: the newest time is the one the machine has now.
     std::erase_if(renders_, [&](const EditorRender& r) { return r.settings == render.settings; });
     renders_.push_back(render);
@@ -15,18 +15,18 @@ void TradeoffRecord::addRender(const EditorRender& render) {
     emit changed();
 }
 
-void TradeoffRecord::contentChanged() {
+void RenderRecord::contentChanged() {
     bool marked = false;  // once per edit of many (a drag): nothing to refresh after the first
     for (EditorRender& r : renders_) marked = !std::exchange(r.earlierContent, true) || marked;
     if (marked) emit changed();
 }
 
-void TradeoffRecord::setMeasure(std::optional<MeasureResults> results) {
+void RenderRecord::setMeasure(std::optional<MeasureResults> results) {
     measure_ = std::move(results);
     emit changed();
 }
 
-void TradeoffRecord::setProbePrediction(std::shared_ptr<const ProbePrediction> probe) {
+void RenderRecord::setProbePrediction(std::shared_ptr<const ProbePrediction> probe) {
     if (!probe->target) {
         probe_ = std::move(probe);
         pace();
@@ -40,15 +40,15 @@ void TradeoffRecord::setProbePrediction(std::shared_ptr<const ProbePrediction> p
     emit changed();
 }
 
-const TargetPrediction* TradeoffRecord::targetPrediction(const Scene& scene,
-                                                         const QualityTarget& target) const {
+const TargetPrediction* RenderRecord::targetPrediction(const Scene& scene,
+                                                       const QualityTarget& target) const {
     for (const auto& p : toTargets_)
         if (p->target == target && plannedAlike(p->scene, scene)) return &p->toTarget;
     return nullptr;
 }
 
-void TradeoffRecord::addViewRender(std::uint64_t contentRevision, const RenderSettings& settings,
-                                   double seconds) {
+void RenderRecord::addViewRender(std::uint64_t contentRevision, const RenderSettings& settings,
+                                 double seconds) {
     if (!std::exchange(firstViewRenderSeen_, true)) return;
     lastView_ = ViewRender{contentRevision, settings, seconds};
     pace();
@@ -57,7 +57,7 @@ void TradeoffRecord::addViewRender(std::uint64_t contentRevision, const RenderSe
 
 // Whichever comes second, the render or the prediction, pairs them: a short
 // render ends before the probes start, a long one after they are done.
-void TradeoffRecord::pace() {
+void RenderRecord::pace() {
     if (!lastView_ || !probe_ || !probe_->prediction.predicted ||
         probe_->prediction.seconds <= 0.0 ||
         probe_->contentRevision != lastView_->contentRevision ||
@@ -69,7 +69,7 @@ void TradeoffRecord::pace() {
     lastView_.reset();
 }
 
-ViewPace TradeoffRecord::viewPace() const {
+ViewPace RenderRecord::viewPace() const {
     if (paces_.empty()) return {};
     std::vector<double> sorted(paces_.begin(), paces_.end());
     std::sort(sorted.begin(), sorted.end());
@@ -80,7 +80,7 @@ ViewPace TradeoffRecord::viewPace() const {
     return {std::max(0.0, median), int(n)};
 }
 
-void TradeoffRecord::clear() {
+void RenderRecord::clear() {
     renders_.clear();
     measure_.reset();
     probe_.reset();

@@ -5,6 +5,7 @@
 #include <QAbstractItemView>
 #include <QApplication>
 #include <QComboBox>
+#include <QFormLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListView>
@@ -12,6 +13,7 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSlider>
+#include <QSpinBox>
 #include <QTest>
 #include <QUndoStack>
 #include <QWheelEvent>
@@ -103,6 +105,47 @@ TEST_F(PropertyPanelsTest, RadiusTypedZero_RefusedInUsersWords_SceneUnchanged) {
     EXPECT_EQ(doc->undoStack()->count(), 0);
     EXPECT_EQ(radius->value(), 0.6) << "the field shows the sphere's radius again";
     box->close();
+}
+
+// The label of the form row that holds `field` (or a widget inside it).
+QString rowLabelOf(QWidget* field) {
+    for (QWidget* w = field; w && w->parentWidget(); w = w->parentWidget())
+        if (auto* form = qobject_cast<QFormLayout*>(w->parentWidget()->layout()))
+            if (auto* label = qobject_cast<QLabel*>(form->labelForField(w))) return label->text();
+    return {};
+}
+
+// A field's row and its undo entry say it in the words of its one
+// description (scene_fields.h): the row short where its page says the rest.
+TEST_F(PropertyPanelsTest, FieldsRowAndUndoEntry_SayItInTheWordsOfItsDescription) {
+    auto* fov = child<QDoubleSpinBox>("cameraVfov");
+    EXPECT_EQ(rowLabelOf(fov), QStringLiteral("Vertical FOV:"));
+    fov->setFocus();
+    fov->selectAll();
+    QTest::keyClicks(fov, QStringLiteral("40"));
+    QTest::keyClick(fov, Qt::Key_Return);
+    ASSERT_EQ(doc->undoStack()->count(), 1);
+    EXPECT_EQ(doc->undoStack()->text(0), QStringLiteral("Change vertical field of view"));
+    EXPECT_EQ(doc->scene().camera.vfovDegrees, 40.0);
+
+    auto* depth = child<QSpinBox>("renderMaxDepth");
+    EXPECT_EQ(rowLabelOf(depth), QStringLiteral("Max depth:"));
+    depth->setFocus();
+    depth->selectAll();
+    QTest::keyClicks(depth, QStringLiteral("7"));
+    QTest::keyClick(depth, Qt::Key_Return);
+    ASSERT_EQ(doc->undoStack()->count(), 2);
+    EXPECT_EQ(doc->undoStack()->text(1), QStringLiteral("Change max depth"));
+
+    window->scenePanel()->select(ItemKind::Sphere, kBlueBall);
+    auto* radius = child<QDoubleSpinBox>("sphereRadius");
+    EXPECT_EQ(rowLabelOf(radius), QStringLiteral("Radius:"));
+    radius->setFocus();
+    radius->selectAll();
+    QTest::keyClicks(radius, QStringLiteral("0.5"));
+    QTest::keyClick(radius, Qt::Key_Return);
+    ASSERT_EQ(doc->undoStack()->count(), 3);
+    EXPECT_EQ(doc->undoStack()->text(2), QStringLiteral("Change radius of blue ball"));
 }
 
 // Renaming a sphere to a taken name, in the list's own editor.

@@ -2,6 +2,7 @@
 
 #include <QObject>
 
+#include "document/field_words.h"
 #include "document/scene_document.h"   // ItemKind, kindNoun, itemCount
 #include "document/scene_selection.h"  // itemNameOf
 
@@ -35,10 +36,6 @@ QString ruleText(FieldRule rule) {
     return {};
 }
 
-QString label(const SceneField& field) {
-    return QObject::tr(QByteArray(field.label.data(), qsizetype(field.label.size())).constData());
-}
-
 QString quotedName(const std::string& name) {
     return QStringLiteral("“%1”").arg(QString::fromStdString(name));
 }
@@ -64,11 +61,11 @@ QString valueText(const SceneProblem& problem, const Scene& scene) {
     const QString rule =
         ruleText(problem.kind == ProblemKind::NotFinite ? FieldRule::Finite : problem.field->rule);
     if (problem.list == SceneList::None)
-        return QObject::tr("%1 %2").arg(label(*problem.field), rule);
+        return QObject::tr("%1 %2").arg(fieldLabel(*problem.field), rule);
     const std::string* name = itemName(problem, scene);
     if (!name) return {};
     return QObject::tr("%1 of %2 %3 %4")
-        .arg(label(*problem.field), kindNoun(kindOf(problem.list)), quotedName(*name), rule);
+        .arg(fieldLabel(*problem.field), kindNoun(kindOf(problem.list)), quotedName(*name), rule);
 }
 
 QString problemText(const SceneProblem& problem, const Scene& scene) {

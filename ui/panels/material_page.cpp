@@ -6,6 +6,7 @@
 #include <QLabel>
 #include <QSignalBlocker>
 
+#include "document/field_words.h"
 #include "panels/color_button.h"
 #include "panels/material_rows.h"
 #include "panels/panel_fields.h"
@@ -84,7 +85,7 @@ void MaterialPage::addCheckerRows(QFormLayout* form) {
         doc_, QStringLiteral("materialCheckerSize"), kPositiveLength,
         [this](const Scene&) { return targets(); },
         [](auto& m) { return m.checker ? &m.checker->size : nullptr; },
-        changeText(tr("checker size")), unused);
+        changeText(fieldChanged(scene_field::kCheckerSize)), unused);
     {
         const QSignalBlocker block(checkerSize_->spinBox());
         checkerSize_->spinBox()->setValue(Checker{}.size);
@@ -92,16 +93,17 @@ void MaterialPage::addCheckerRows(QFormLayout* form) {
     connect(checker_, &QCheckBox::toggled, this, [this](bool on) {
         std::optional<Checker> checker;
         if (on) checker = Checker{checkerColor_->color(), checkerSize_->spinBox()->value()};
-        editMaterial(tr("checker"), [checker](Material& m) { m.checker = checker; });
+        editMaterial(fieldChanged(scene_field::kChecker),
+                     [checker](Material& m) { m.checker = checker; });
     });
     connect(checkerColor_, &ColorButton::colorEdited, this, [this](const Vec3& c) {
-        editMaterial(tr("checker colour"), [c](Material& m) {
+        editMaterial(fieldChanged(scene_field::kCheckerColour), [c](Material& m) {
             if (m.checker) m.checker->color = c;
         });
     });
     form->addRow(QString(), checker_);
-    form->addRow(tr("Checker colour:"), checkerColor_);
-    form->addRow(tr("Checker size:"), checkerSize_);
+    form->addRow(fieldRow(scene_field::kCheckerColour), checkerColor_);
+    form->addRow(fieldRow(scene_field::kCheckerSize), checkerSize_);
 }
 
 void MaterialPage::setIndex(int index) {

@@ -2,6 +2,7 @@
 
 #include <QFormLayout>
 
+#include "document/field_words.h"
 #include "panels/color_button.h"
 #include "panels/panel_fields.h"
 
@@ -13,33 +14,33 @@ MaterialRows::MaterialRows(SceneDocument* doc, QWidget* owner, QFormLayout* form
     diffuse_->setObjectName(prefix + QStringLiteral("Diffuse"));
     QObject::connect(diffuse_, &ColorButton::colorEdited, owner, [this, owner](const Vec3& c) {
         editItemsOrTell<Material>(owner, doc_, targets_(doc_->scene()),
-                                  text_(QObject::tr("diffuse colour")),
+                                  text_(fieldChanged(scene_field::kDiffuse)),
                                   [c](Material& m) { m.diffuse = c; });
     });
     const bool all = extent == Extent::All;
     // On a sphere's page "Colour" is what the user looks for; the material page
     // names the shading term.
-    form->addRow(all ? QObject::tr("Diffuse:") : QObject::tr("Colour:"), diffuse_);
+    form->addRow(all ? fieldRow(scene_field::kDiffuse) : QObject::tr("Colour:"), diffuse_);
     if (all) {
-        form->addRow(QObject::tr("Specular:"),
+        form->addRow(fieldRow(scene_field::kSpecular),
                      scalar(prefix + QStringLiteral("Specular"),
                             DoubleFieldSpec::range(0.0, 10.0, 0.05).linearSlider(0.0, 2.0),
-                            &Material::specular, QObject::tr("specular")));
-        form->addRow(QObject::tr("Shininess:"),
+                            &Material::specular, fieldChanged(scene_field::kSpecular)));
+        form->addRow(fieldRow(scene_field::kShininess),
                      scalar(prefix + QStringLiteral("Shininess"),
                             DoubleFieldSpec::range(0.0, 10000.0, 1.0).logSlider(1.0, 10000.0),
-                            &Material::shininess, QObject::tr("shininess")));
+                            &Material::shininess, fieldChanged(scene_field::kShininess)));
     }
-    form->addRow(QObject::tr("Reflectivity:"),
+    form->addRow(fieldRow(scene_field::kReflectivity),
                  scalar(prefix + QStringLiteral("Reflectivity"), kUnitInterval,
-                        &Material::reflectivity, QObject::tr("reflectivity")));
-    form->addRow(QObject::tr("Transparency:"),
+                        &Material::reflectivity, fieldChanged(scene_field::kReflectivity)));
+    form->addRow(fieldRow(scene_field::kTransparency),
                  scalar(prefix + QStringLiteral("Transparency"), kUnitInterval,
-                        &Material::transparency, QObject::tr("transparency")));
-    form->addRow(QObject::tr("Index of refraction:"),
+                        &Material::transparency, fieldChanged(scene_field::kTransparency)));
+    form->addRow(fieldRow(scene_field::kIor),
                  scalar(prefix + QStringLiteral("Ior"),
                         DoubleFieldSpec::range(0.01, 100.0, 0.01).linearSlider(1.0, 3.0),
-                        &Material::ior, QObject::tr("index of refraction")));
+                        &Material::ior, fieldChanged(scene_field::kIor)));
 }
 
 DoubleField* MaterialRows::scalar(const QString& name, const DoubleFieldSpec& spec,

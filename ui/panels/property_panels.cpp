@@ -12,6 +12,7 @@
 #include <QStackedWidget>
 #include <QVBoxLayout>
 
+#include "document/field_words.h"
 #include "document/quality_choice.h"
 #include "panels/color_button.h"
 #include "panels/image_size_fields.h"
@@ -81,22 +82,24 @@ QWidget* PropertyPanel::buildLightPage() {
 
     lightName_ = makeNameLabel(QStringLiteral("lightName"));
     form->addRow(tr("Light:"), lightName_);
-    form->addRow(tr("Position:"), makeItemsVectorRow<Light>(
-                                      doc_, QStringLiteral("lightPosition"), kCoordinate, targets,
-                                      [](auto& l) { return &l.position; },
-                                      changeText(tr("position")), lightFields_));
+    form->addRow(fieldRow(scene_field::kLightPosition),
+                 makeItemsVectorRow<Light>(
+                     doc_, QStringLiteral("lightPosition"), kCoordinate, targets,
+                     [](auto& l) { return &l.position; },
+                     changeText(fieldChanged(scene_field::kLightPosition)), lightFields_));
 
     lightColor_ = new ColorButton;
     lightColor_->setObjectName(QStringLiteral("lightColor"));
-    connect(lightColor_, &ColorButton::colorEdited, this,
-            [this](const Vec3& c) { editLight(tr("colour"), [c](Light& l) { l.color = c; }); });
-    form->addRow(tr("Colour:"), lightColor_);
-    form->addRow(
-        tr("Intensity:"),
-        makeItemsField<Light>(
-            doc_, QStringLiteral("lightIntensity"),
-            DoubleFieldSpec::range(0.0, 1000.0, 0.1).linearSlider(0.0, 10.0), targets,
-            [](auto& l) { return &l.intensity; }, changeText(tr("intensity")), lightFields_));
+    connect(lightColor_, &ColorButton::colorEdited, this, [this](const Vec3& c) {
+        editLight(fieldChanged(scene_field::kLightColour), [c](Light& l) { l.color = c; });
+    });
+    form->addRow(fieldRow(scene_field::kLightColour), lightColor_);
+    form->addRow(fieldRow(scene_field::kIntensity),
+                 makeItemsField<Light>(
+                     doc_, QStringLiteral("lightIntensity"),
+                     DoubleFieldSpec::range(0.0, 1000.0, 0.1).linearSlider(0.0, 10.0), targets,
+                     [](auto& l) { return &l.intensity; },
+                     changeText(fieldChanged(scene_field::kIntensity)), lightFields_));
     return page;
 }
 
@@ -131,28 +134,31 @@ void PropertyPanel::refresh() {
 
 CameraPanel::CameraPanel(SceneDocument* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
     QFormLayout* form = makeForm(this);
-    auto text = [](const QString& what) {
-        return [what] { return tr("Change camera %1").arg(what); };
+    auto text = [](const SceneField& field) {
+        return [what = fieldChanged(field)] { return tr("Change %1").arg(what); };
     };
-    form->addRow(tr("Position:"),
+    form->addRow(fieldRow(scene_field::kCameraPosition),
                  makeVectorRow(
                      doc_, QStringLiteral("cameraPosition"), kCoordinate,
-                     [](auto& s) { return &s.camera.position; }, text(tr("position")), fields_));
-    form->addRow(tr("Look at:"),
-                 makeVectorRow(
-                     doc_, QStringLiteral("cameraLookAt"), kCoordinate,
-                     [](auto& s) { return &s.camera.lookAt; }, text(tr("look-at point")), fields_));
-    form->addRow(tr("Up:"),
+                     [](auto& s) { return &s.camera.position; }, text(scene_field::kCameraPosition),
+                     fields_));
+    form->addRow(
+        fieldRow(scene_field::kLookAt),
+        makeVectorRow(
+            doc_, QStringLiteral("cameraLookAt"), kCoordinate,
+            [](auto& s) { return &s.camera.lookAt; }, text(scene_field::kLookAt), fields_));
+    form->addRow(fieldRow(scene_field::kUp),
                  makeVectorRow(
                      doc_, QStringLiteral("cameraUp"), kCoordinate,
-                     [](auto& s) { return &s.camera.up; }, text(tr("up vector")), fields_));
-    form->addRow(tr("Vertical FOV:"), makeField(
-                                          doc_, QStringLiteral("cameraVfov"),
-                                          DoubleFieldSpec::range(0.01, 179.99, 1.0)
-                                              .linearSlider(1.0, 170.0)
-                                              .unit(QStringLiteral(" °")),
-                                          [](auto& s) { return &s.camera.vfovDegrees; },
-                                          text(tr("field of view")), fields_));
+                     [](auto& s) { return &s.camera.up; }, text(scene_field::kUp), fields_));
+    form->addRow(fieldRow(scene_field::kFieldOfView),
+                 makeField(
+                     doc_, QStringLiteral("cameraVfov"),
+                     DoubleFieldSpec::range(0.01, 179.99, 1.0)
+                         .linearSlider(1.0, 170.0)
+                         .unit(QStringLiteral(" °")),
+                     [](auto& s) { return &s.camera.vfovDegrees; }, text(scene_field::kFieldOfView),
+                     fields_));
     connect(doc_, &SceneDocument::sceneChanged, this, &CameraPanel::refresh);
     refresh();
 }
@@ -170,10 +176,10 @@ RenderSettingsPanel::RenderSettingsPanel(SceneDocument* doc, RenderRecord* recor
     QFormLayout* form = makeForm(this);
     addIntRows(form);
     addPrecisionRow(form);
-    background_ = addColourRow(form, tr("Background:"), QStringLiteral("sceneBackground"),
-                               &Scene::background, tr("background colour"));
-    ambient_ = addColourRow(form, tr("Ambient:"), QStringLiteral("sceneAmbient"), &Scene::ambient,
-                            tr("ambient colour"));
+    background_ = addColourRow(form, scene_field::kBackground, QStringLiteral("sceneBackground"),
+                               &Scene::background);
+    ambient_ =
+        addColourRow(form, scene_field::kAmbient, QStringLiteral("sceneAmbient"), &Scene::ambient);
     if (record && quality) {
         new PresetControls(doc_, record, quality, form);
         connect(quality, &QualityChoice::changed, this, [this, quality] { followTarget(quality); });
@@ -185,25 +191,25 @@ RenderSettingsPanel::RenderSettingsPanel(SceneDocument* doc, RenderRecord* recor
 }
 
 void RenderSettingsPanel::addIntRows(QFormLayout* form) {
-    auto addInt = [&](const QString& label, const QString& name, int min, int max, auto member,
-                      const QString& what, const QString& suffix) {
+    auto addInt = [&](const SceneField& setting, const QString& name, int min, int max, auto member,
+                      const QString& suffix) {
         auto* field = new IntField(
             doc_, name, min, max, [member](const Scene& s) { return s.render.*member; },
             [member](Scene& s, int v) { s.render.*member = v; },
-            [what] { return tr("Change %1").arg(what); });
+            [what = fieldChanged(setting)] { return tr("Change %1").arg(what); });
         field->setSuffix(suffix);
         fields_.push_back(field);
-        form->addRow(label, field);
+        form->addRow(fieldRow(setting), field);
     };
-    addInt(tr("Width:"), QStringLiteral("renderWidth"), 1, kMaxImageSize, &RenderSettings::width,
-           tr("image width"), tr(" px"));
-    addInt(tr("Height:"), QStringLiteral("renderHeight"), 1, kMaxImageSize, &RenderSettings::height,
-           tr("image height"), tr(" px"));
+    addInt(scene_field::kWidth, QStringLiteral("renderWidth"), 1, kMaxImageSize,
+           &RenderSettings::width, tr(" px"));
+    addInt(scene_field::kHeight, QStringLiteral("renderHeight"), 1, kMaxImageSize,
+           &RenderSettings::height, tr(" px"));
     form->addRow(tr("Common size:"), makeCommonSizeChooser(doc_));
-    addInt(tr("Max depth:"), QStringLiteral("renderMaxDepth"), 0, kMaxDepth,
-           &RenderSettings::maxDepth, tr("maximum depth"), QString());
-    addInt(tr("Samples per pixel:"), QStringLiteral("renderSamples"), 1, kMaxSamplesPerPixel,
-           &RenderSettings::samplesPerPixel, tr("samples per pixel"), QString());
+    addInt(scene_field::kDepth, QStringLiteral("renderMaxDepth"), 0, kMaxDepth,
+           &RenderSettings::maxDepth, QString());
+    addInt(scene_field::kSamples, QStringLiteral("renderSamples"), 1, kMaxSamplesPerPixel,
+           &RenderSettings::samplesPerPixel, QString());
 }
 
 void RenderSettingsPanel::addPrecisionRow(QFormLayout* form) {
@@ -217,20 +223,20 @@ void RenderSettingsPanel::addPrecisionRow(QFormLayout* form) {
         const auto precision = static_cast<Precision>(precision_->itemData(i).toInt());
         QString error;
         if (!doc_->edit(
-                tr("Change precision"), [precision](Scene& s) { s.render.precision = precision; },
-                &error)) {
+                tr("Change %1").arg(fieldChanged(scene_field::kPrecision)),
+                [precision](Scene& s) { s.render.precision = precision; }, &error)) {
             showRefusal(this, error);
             refresh();
         }
     });
-    form->addRow(tr("Precision:"), precision_);
+    form->addRow(fieldRow(scene_field::kPrecision), precision_);
 }
 
-ColorButton* RenderSettingsPanel::addColourRow(QFormLayout* form, const QString& label,
-                                               const QString& name, Vec3 Scene::*member,
-                                               const QString& what) {
+ColorButton* RenderSettingsPanel::addColourRow(QFormLayout* form, const SceneField& field,
+                                               const QString& name, Vec3 Scene::*member) {
     auto* button = new ColorButton;
     button->setObjectName(name);
+    const QString what = fieldChanged(field);
     connect(button, &ColorButton::colorEdited, this, [this, member, what](const Vec3& c) {
         QString error;
         if (!doc_->edit(
@@ -239,7 +245,7 @@ ColorButton* RenderSettingsPanel::addColourRow(QFormLayout* form, const QString&
             refresh();
         }
     });
-    form->addRow(label, button);
+    form->addRow(fieldRow(field), button);
     return button;
 }
 

@@ -9,6 +9,7 @@
 #include <QWidget>
 
 #include "document/scene_document.h"
+#include "scene/scene_fields.h"
 
 class QComboBox;
 class QFormLayout;
@@ -82,8 +83,8 @@ class RenderSettingsPanel : public QWidget {
   private:
     void addIntRows(QFormLayout* form);
     void addPrecisionRow(QFormLayout* form);
-    ColorButton* addColourRow(QFormLayout* form, const QString& label, const QString& name,
-                              Vec3 Scene::*member, const QString& what);
+    ColorButton* addColourRow(QFormLayout* form, const SceneField& field, const QString& name,
+                              Vec3 Scene::*member);
     // Depth and samples rest while a target or Whitted 1980 sampling chooses them.
     void followTarget(const QualityChoice* quality);
     void refresh();

@@ -10,6 +10,7 @@
 #include <QPushButton>
 #include <QSignalBlocker>
 
+#include "document/field_words.h"
 #include "panels/material_rows.h"
 #include "panels/material_sharing.h"
 #include "panels/panel_fields.h"
@@ -43,15 +44,17 @@ SpherePage::SpherePage(SceneDocument* doc, QWidget* parent)
         const Sphere* sp = sphere(s);
         return centreStep(sp ? sp->radius : 1.0);
     });
-    form->addRow(tr("Centre:"),
+    form->addRow(fieldRow(scene_field::kCentre),
                  makeItemsVectorRow<Sphere>(
                      doc_, QStringLiteral("sphereCenter"), centre, targets,
-                     [](auto& sp) { return &sp.center; }, text(tr("centre")), fields_));
-    form->addRow(tr("Radius:"),
+                     [](auto& sp) { return &sp.center; }, text(fieldChanged(scene_field::kCentre)),
+                     fields_));
+    form->addRow(fieldRow(scene_field::kRadius),
                  makeItemsField<Sphere>(
                      doc_, QStringLiteral("sphereRadius"), kLength, targets,
-                     [](auto& sp) { return &sp.radius; }, text(tr("radius")), fields_));
-    form->addRow(tr("Material:"), buildMaterialChoice());
+                     [](auto& sp) { return &sp.radius; }, text(fieldChanged(scene_field::kRadius)),
+                     fields_));
+    form->addRow(fieldRow(scene_field::kSphereMaterial), buildMaterialChoice());
     form->addRow(QString(), users_);  // "Shared by 3 spheres" says what it is
     materialRows_ = std::make_unique<MaterialRows>(
         doc_, this, form, MaterialRows::Extent::Main, QStringLiteral("sphereMaterial"),

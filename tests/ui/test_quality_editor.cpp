@@ -17,6 +17,7 @@
 #include "analysis/quality_check.h"
 #include "analysis/target_prediction.h"
 #include "document/quality_choice.h"
+#include "document/settings_words.h"
 #include "editor/main_window.h"
 #include "image/image_error.h"
 #include "image/image_io.h"
@@ -25,7 +26,6 @@
 #include "support/export_support.h"
 #include "support/main_window_fixture.h"
 #include "support/test_support.h"
-#include "tradeoff_dock/tradeoff_points.h"
 
 namespace whitted::ui {
 namespace {

@@ -11,9 +11,9 @@
 #include "analysis/render_presets.h"
 #include "document/quality_choice.h"
 #include "document/scene_document.h"
+#include "document/settings_words.h"
 #include "panels/number_field.h"
 #include "prediction/render_record.h"
-#include "tradeoff_dock/tradeoff_points.h"
 
 namespace whitted::ui {
 

@@ -5,23 +5,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "document/settings_words.h"
 #include "image/image_error.h"
 #include "tracer/renderer.h"
-#include "tradeoff_dock/tradeoff_points.h"
 
 namespace whitted::ui {
 
 namespace {
-
-// "4 spp, depth 2, float, 640 × 480"
-QString settingsText(const RenderSettings& r) {
-    return QObject::tr("%1 spp, depth %2, %3, %4 × %5")
-        .arg(r.samplesPerPixel)
-        .arg(r.maxDepth)
-        .arg(precisionText(r.precision))
-        .arg(r.width)
-        .arg(r.height);
-}
 
 // Pixels times samples: what a render's time grows with at fixed depth and precision.
 double work(const RenderSettings& r) {

@@ -1,4 +1,5 @@
 #include "tradeoff_dock/tradeoff_points.h"
+#include "document/settings_words.h"
 
 #include <QObject>
 
@@ -29,24 +30,6 @@ QString errorLines(const ErrorStats& e) {
 }
 
 }  // namespace
-
-QString secondsText(double s) {
-    if (s < 0.1) return QObject::tr("%1 ms").arg(s * 1000, 0, 'f', 1);
-    if (s < 10) return QObject::tr("%1 s").arg(s, 0, 'f', 2);
-    return QObject::tr("%1 s").arg(s, 0, 'f', 0);
-}
-
-QString precisionText(Precision p) {
-    const auto name = precisionName(p);
-    return QString::fromUtf8(name.data(), qsizetype(name.size()));
-}
-
-QString settingsText(int samples, int depth, Precision precision) {
-    return QObject::tr("%1 spp, depth %2, %3")
-        .arg(samples)
-        .arg(depth)
-        .arg(precisionText(precision));
-}
 
 QString shortLabel(const TradeoffPoint& p) {
     const TradeoffSettings& s = p.settings;

@@ -25,17 +25,10 @@ struct PinnedPoint {
     QString note;                     // why it was skipped; empty otherwise
 };
 
-// "float" or "double"
-QString precisionText(Precision precision);
-// "16 spp, depth 3, float"
-QString settingsText(int samples, int depth, Precision precision);
 // "16 spp d3 float" (and " ½" for a Measure point at half size): plot labels.
 QString shortLabel(const TradeoffPoint& p);
 QString shortLabel(const PinnedPoint& p);
 // Several lines: settings, size, time, rays, errors.
 QString pointTooltip(const TradeoffPoint& p);
 QString pointTooltip(const PinnedPoint& p);
-// "1.23 s", "45.6 ms"
-QString secondsText(double seconds);
-
 }  // namespace whitted::ui

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "document/settings_words.h"
 #include "tradeoff_dock/tradeoff_points.h"
 
 namespace whitted::ui {

@@ -10,6 +10,7 @@
 #include <cstdlib>
 
 #include "document/scene_document.h"
+#include "document/settings_words.h"
 #include "prediction/settings_prediction.h"
 #include "tradeoff_dock/tradeoff_tables.h"
 

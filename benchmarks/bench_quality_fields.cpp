@@ -35,6 +35,7 @@
 
 #include "analysis/quality_check.h"
 #include "analysis/reference_cache.h"
+#include "base/elapsed.h"
 #include "image/image_compare.h"
 #include "image/image_error.h"
 #include "paired_times.h"
@@ -133,8 +134,7 @@ int printDepthSeries(int seed, int samples, int deepest) {
         if (depth > deepest) break;
         const auto start = std::chrono::steady_clock::now();
         const Image image = renderAt(scene, depth, samples);
-        const double seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double seconds = secondsSince(start);
         if (before.width == 0) {
             std::printf("| %d | | %.2f |\n", depth, seconds);
         } else {

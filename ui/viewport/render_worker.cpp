@@ -8,6 +8,7 @@
 #include <shared_mutex>
 #include <utility>
 
+#include "base/elapsed.h"
 #include "viewport/image_convert.h"
 
 namespace whitted::ui {
@@ -191,7 +192,7 @@ class FrameAssembler {
         frame.settings = settings_;
         frame.qualityPlan = plan_;
         frame.whitted1980 = whitted1980_;
-        frame.seconds = std::chrono::duration<double>(Clock::now() - start_).count();
+        frame.seconds = secondsSince(start_);
         return frame;
     }
 

@@ -118,6 +118,25 @@ void twoProductLanes(const V& a, const V& b, V& p, V& e) {
     e = ((ahi * bhi - p) + ahi * blo + alo * bhi) + alo * blo;
 }
 
+// The cell the length hi + lo (a two-term sum) falls in along an axis whose
+// frame origin is fAxis + fAxisLo cells from the world's: floor((hi + lo) /
+// size + f), right to the last bit (floorOfPair()).
+template <typename T, typename V = typename Simd<T>::type>
+[[gnu::always_inline]] inline V cellOfPair(const LaneMaterials<T>& g, V hi, V lo, const V& fAxis,
+                                           const V& fAxisLo) {
+    // (hi + lo) / size as q1 + q2: q1 from the rounded 1/size, q2 from the exact
+    // remainder (hi + lo) - q1 * size, so the pair is right to ~eps^2 without a
+    // division (1/size alone is inexact for sizes such as 50).
+    V ph, pl, sum, e;
+    const V q1 = hi * g.checkerInvSize;
+    twoProductLanes<V, T>(q1, g.checkerSize, ph, pl);
+    const V q2 = ((((hi - ph) - pl) + lo) - q1 * g.checkerSizeLo) * g.checkerInvSize;
+    exact::twoSum<V>(q1, fAxis, sum, e);
+    exact::twoSum<V>(sum, (e + fAxisLo) + q2, hi, lo);
+    const V f = laneFloor(hi);
+    return (f == hi) & (lo < T(0)) ? f - T(1) : f;
+}
+
 // kd(P) of SPEC §3 for every lane: checker colour where floor(Px/s) +
 // floor(Py/s) + floor(Pz/s) is odd, diffuse where even.
 //
@@ -158,7 +177,7 @@ Vec3x<T> checkerLanes(const LaneMaterials<T>& g, const Vec3x<T>& p, const Vec3x<
     // The sphere's extreme, centre + sign * r, is made a normalised pair before
     // the drop is taken off: added to an unnormalised low term (the seed's floor
     // in float: -0.8515625 + 0.0015625) a drop of 1e-11 would be rounded away.
-    V hi, lo, hi2, e, loHi, loLo, ph, pl;
+    V hi, lo, hi2, e, loHi, loLo;
     exact::twoSum<V>(cAxis, sign * g.radius, hi, lo);
     exact::twoSum<V>(cAxisLo, sign * g.radiusLo, loHi, loLo);
     exact::twoSum<V>(hi, (lo + loHi) + loLo, hi2, e);
@@ -167,22 +186,11 @@ Vec3x<T> checkerLanes(const LaneMaterials<T>& g, const Vec3x<T>& p, const Vec3x<
     // In cells, plus the frame origin's fraction of a cell.
     const Vec3x<T>& fh = g.checkerFrameFraction;
     const Vec3x<T>& fl = g.checkerFrameFractionLo;
-    const V fAxis = isX ? fh.x : (isY ? fh.y : fh.z);
-    const V fAxisLo = isX ? fl.x : (isY ? fl.y : fl.z);
-    // (hi + lo) / size as q1 + q2: q1 from the rounded 1/size, q2 from the exact
-    // remainder (hi + lo) - q1 * size, so the pair is right to ~eps^2 without a
-    // division (1/size alone is inexact for sizes such as 50).
-    const V q1 = hi * g.checkerInvSize;
-    twoProductLanes<V, T>(q1, g.checkerSize, ph, pl);
-    const V q2 = ((((hi - ph) - pl) + lo) - q1 * g.checkerSizeLo) * g.checkerInvSize;
-    exact::twoSum<V>(q1, fAxis, hi2, e);
-    exact::twoSum<V>(hi2, (e + fAxisLo) + q2, hi, lo);
-    const V f = laneFloor(hi);
-    const V steepCell = (f == hi) & (lo < T(0)) ? f - T(1) : f;  // floorOfPair()
-    const Vec3x<T>& frac = g.checkerFrameFraction;
-    const V cx = isX ? steepCell : laneFloor(frac.x + p.x * g.checkerInvSize);
-    const V cy = isY ? steepCell : laneFloor(frac.y + p.y * g.checkerInvSize);
-    const V cz = isZ ? steepCell : laneFloor(frac.z + p.z * g.checkerInvSize);
+    const V steepCell =
+        cellOfPair(g, hi, lo, isX ? fh.x : (isY ? fh.y : fh.z), isX ? fl.x : (isY ? fl.y : fl.z));
+    const V cx = isX ? steepCell : laneFloor(fh.x + p.x * g.checkerInvSize);
+    const V cy = isY ? steepCell : laneFloor(fh.y + p.y * g.checkerInvSize);
+    const V cz = isZ ? steepCell : laneFloor(fh.z + p.z * g.checkerInvSize);
     auto odd = [](const V& cell) {
         const V half = cell * T(0.5);
         return half != laneFloor(half);

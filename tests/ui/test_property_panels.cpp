@@ -3,6 +3,7 @@
 // material presets, and slider and arrow steps that suit a small ball. A shown
 // MainWindow on the seed scene at 160x120.
 #include <QAbstractItemView>
+#include <QAbstractSpinBox>
 #include <QApplication>
 #include <QComboBox>
 #include <QFormLayout>
@@ -60,6 +61,13 @@ class PropertyPanelsTest : public EditorWindowTest {
         EXPECT_TRUE(waitForRender(before));
         return window->renderView()->frame();
     }
+    // Types `text` into a number field as a user does: select all, type, Return.
+    static void typeInto(QAbstractSpinBox* field, const QString& text) {
+        field->setFocus();
+        field->selectAll();
+        QTest::keyClicks(field, text);
+        QTest::keyClick(field, Qt::Key_Return);
+    }
     // The refused-edit message box, once it shows.
     QMessageBox* refusal() {
         QMessageBox* box = nullptr;
@@ -94,10 +102,7 @@ TEST_F(PropertyPanelsTest, RadiusTypedZero_RefusedInUsersWords_SceneUnchanged) {
     window->scenePanel()->select(ItemKind::Sphere, kBlueBall);
     const Scene before = doc->scene();
     auto* radius = child<QDoubleSpinBox>("sphereRadius");
-    radius->setFocus();
-    radius->selectAll();
-    QTest::keyClicks(radius, QStringLiteral("0"));
-    QTest::keyClick(radius, Qt::Key_Return);
+    typeInto(radius, QStringLiteral("0"));
     QMessageBox* box = refusal();
     ASSERT_NE(box, nullptr);
     EXPECT_EQ(box->text(), QStringLiteral("Radius of sphere “blue ball” must be greater than 0"));
@@ -120,30 +125,21 @@ QString rowLabelOf(QWidget* field) {
 TEST_F(PropertyPanelsTest, FieldsRowAndUndoEntry_SayItInTheWordsOfItsDescription) {
     auto* fov = child<QDoubleSpinBox>("cameraVfov");
     EXPECT_EQ(rowLabelOf(fov), QStringLiteral("Vertical FOV:"));
-    fov->setFocus();
-    fov->selectAll();
-    QTest::keyClicks(fov, QStringLiteral("40"));
-    QTest::keyClick(fov, Qt::Key_Return);
+    typeInto(fov, QStringLiteral("40"));
     ASSERT_EQ(doc->undoStack()->count(), 1);
     EXPECT_EQ(doc->undoStack()->text(0), QStringLiteral("Change vertical field of view"));
     EXPECT_EQ(doc->scene().camera.vfovDegrees, 40.0);
 
     auto* depth = child<QSpinBox>("renderMaxDepth");
     EXPECT_EQ(rowLabelOf(depth), QStringLiteral("Max depth:"));
-    depth->setFocus();
-    depth->selectAll();
-    QTest::keyClicks(depth, QStringLiteral("7"));
-    QTest::keyClick(depth, Qt::Key_Return);
+    typeInto(depth, QStringLiteral("7"));
     ASSERT_EQ(doc->undoStack()->count(), 2);
     EXPECT_EQ(doc->undoStack()->text(1), QStringLiteral("Change max depth"));
 
     window->scenePanel()->select(ItemKind::Sphere, kBlueBall);
     auto* radius = child<QDoubleSpinBox>("sphereRadius");
     EXPECT_EQ(rowLabelOf(radius), QStringLiteral("Radius:"));
-    radius->setFocus();
-    radius->selectAll();
-    QTest::keyClicks(radius, QStringLiteral("0.5"));
-    QTest::keyClick(radius, Qt::Key_Return);
+    typeInto(radius, QStringLiteral("0.5"));
     ASSERT_EQ(doc->undoStack()->count(), 3);
     EXPECT_EQ(doc->undoStack()->text(2), QStringLiteral("Change radius of blue ball"));
 }
@@ -409,10 +405,7 @@ TEST_F(PropertyPanelsTest, AddMaterialMenu_Glass_AddsGlassMaterialAndShowsIt) {
 TEST_F(PropertyPanelsTest, SmallBall_SliderAndArrowSteps_SmallAndFinerWithShift) {
     window->scenePanel()->select(ItemKind::Sphere, kBlueBall);
     auto* radius = child<QDoubleSpinBox>("sphereRadius");
-    radius->setFocus();
-    radius->selectAll();
-    QTest::keyClicks(radius, QStringLiteral("0.05"));
-    QTest::keyClick(radius, Qt::Key_Return);
+    typeInto(radius, QStringLiteral("0.05"));
     ASSERT_EQ(doc->scene().spheres[kBlueBall].radius, 0.05);
 
     auto* slider = child<QSlider>("sphereRadiusSlider");

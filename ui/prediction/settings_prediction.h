@@ -10,7 +10,7 @@
 #include <optional>
 #include <vector>
 
-#include "analysis/tradeoff.h"
+#include "prediction/measure_results.h"
 #include "prediction/probe_predictor.h"
 #include "scene/scene.h"
 
@@ -24,18 +24,6 @@ struct EditorRender {
     // Of the scene before an edit: its time estimates, but does not measure,
     // a render of the scene now (RenderRecord::contentChanged()).
     bool earlierContent = false;
-};
-
-// What a Measure run left: the grid's points against its reference.
-struct MeasureResults {
-    Scene scene;  // as measured; its render size is scale 1
-    std::vector<TradeoffPoint> points;
-    int total = 0;           // points in the grid; more than points.size() when cancelled
-    bool cancelled = false;  // stopped before the grid was done
-    int referenceSamples = 0;
-    int referenceDepth = 0;
-    double referenceSeconds = 0.0;
-    double seconds = 0.0;  // the whole run, reference included
 };
 
 struct Prediction {

@@ -11,7 +11,7 @@
 #include <thread>
 
 #include "analysis/tradeoff.h"
-#include "prediction/settings_prediction.h"
+#include "prediction/measure_results.h"
 
 namespace whitted::ui {
 

@@ -287,6 +287,15 @@ class TileRenderer {
             storePixel(out, sum / double(n));
     }
 
+    // Asks for the cache lines of `count` floats from `at` while the row is
+    // traced: fetched only when the row was stored, the lines of a fresh
+    // image held up the stores behind them.
+    static void prefetchForWriting(const float* at, int count) {
+        const char* first = reinterpret_cast<const char*>(at);
+        for (int offset = 0; offset < count * int(sizeof(float)); offset += 64)
+            __builtin_prefetch(first + offset, 1);
+    }
+
     // A one-sample pass stores the samples as they come: what the sums would
     // hold, 0.0 + sample (which turns a -0.0 into +0.0), over 1.
     void storeSamples(const Vec<T>* radiance, int x, int y, int w) {
@@ -305,6 +314,7 @@ class TileRenderer {
             pass.centres || (pass.firstSample == 0 && pass.lastSample == 1 && sums_.empty());
         for (int y = tile.y; y < tile.y + tile.h; ++y) {
             if (stopRequested()) return false;
+            prefetchForWriting(image_.pixel(tile.x, y), 3 * tile.w);
             if (!options_.alsoAtDepths.empty()) {
                 renderRowAtDepths(pass, tile, y, row, counts);
             } else if (oneSample) {

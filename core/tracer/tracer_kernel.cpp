@@ -362,29 +362,39 @@ auto blockPlacer(const PreparedScene<T>& s, int y, int x0, int n0, int samples) 
     };
 }
 
-// Where sample n of the pixels x0, x0+1, ... of row y lies, as pixelSample()
-// gives it: place(first, m, px, py) fills the lanes of pixels first ..
-// first+m-1 (counted from x0).
+// Where the centres of the pixels x0, x0+1, ... of row y lie: place(first,
+// m, px, py) fills the lanes of pixels first .. first+m-1 (counted from x0).
 template <typename T>
-auto rowPlacer(const PreparedScene<T>& s, int y, int x0, int n) {
+auto centrePlacer(int y, int x0) {
     using V = typename Simd<T>::type;
-    V laneIndex{};
-    for (int l = 0; l < RayPacket<T>::kWidth; ++l) laneIndex[l] = T(l);
-    const auto sampled = blockPlacer(s, y, x0, n, 1);
-    return [&s, y, x0, n, laneIndex, sampled](int first, int m, V& px, V& py) {
-        if (s.samplesPerPixel == 1 || n == kPixelCentre) {  // as pixelSample() gives them
-            px = (laneIndex + T(x0 + first)) + T(0.5);
-            py = V{} + (T(y) + T(0.5));
-            return;
-        }
-        sampled(first, m, px, py);
+    return [y, x0](int first, int, V& px, V& py) {
+        V laneIndex{};
+        for (int l = 0; l < RayPacket<T>::kWidth; ++l) laneIndex[l] = T(l);  // a constant
+        px = (laneIndex + T(x0 + first)) + T(0.5);
+        py = V{} + (T(y) + T(0.5));
     };
+}
+
+// Calls use(place) with the placer of sample n of the pixels x0, x0+1, ...
+// of row y, as pixelSample() gives it: the centres at one sample a pixel,
+// else blockPlacer()'s. A choice of two calls rather than one placer holding
+// the other: copying that closure on every row, in 16-byte loads from the
+// stores just made, stalled each row until the image's stores had drained
+// (a sixth of a seed render's time, in perf's samples).
+template <typename T, typename Use>
+void withRowPlacer(const PreparedScene<T>& s, int y, int x0, int n, Use use) {
+    if (s.samplesPerPixel == 1 || n == kPixelCentre)
+        use(centrePlacer<T>(y, x0));
+    else
+        use(blockPlacer(s, y, x0, n, 1));
 }
 
 template <typename T>
 void kernelCameraRow(const PreparedScene<T>& s, int y, int x0, int count, int n, Vec<T>* radiance,
                      RayCounts& counts) {
-    traceCameraPackets(s, count, radiance, counts, rowPlacer(s, y, x0, n));
+    withRowPlacer(s, y, x0, n, [&](const auto& place) {
+        traceCameraPackets(s, count, radiance, counts, place);
+    });
 }
 
 // Samples n0 .. n0+samples-1 of the pixels x0, x0+1, ... of row y, pixel by
@@ -403,25 +413,26 @@ void kernelCameraRowAtDepths(const PreparedScene<T>& s, int y, int x0, int count
                              RayCounts& counts) {
     constexpr int W = RayPacket<T>::kWidth;
     using V = typename Simd<T>::type;
-    const auto place = rowPlacer(s, y, x0, n);
-    std::array<Vec3x<T>, kMaxDepth + 1> levels;
-    for (int first = 0; first < count; first += W) {
-        const int m = std::min(W, count - first);
-        V px{}, py{};
-        place(first, m, px, py);
-        std::fill_n(levels.begin(), s.maxDepth + 1, Vec3x<T>::broadcast(Vec<T>(T(0))));
-        Vec3x<T> out;
-        traceCameraPacket(s, px, py, m, out, counts, levels.data());
-        for (int l = 0; l < m; ++l) {
-            radiance[first + l] = out.lane(l);
-            Vec<T> sum(T(0));
-            int level = 0;
-            for (int j = 0; j < depthCount; ++j) {
-                for (; level <= depths[j]; ++level) sum += levels[level].lane(l);
-                atDepths[std::size_t(first + l) * depthCount + j] = sum;
+    withRowPlacer(s, y, x0, n, [&](const auto& place) {
+        std::array<Vec3x<T>, kMaxDepth + 1> levels;
+        for (int first = 0; first < count; first += W) {
+            const int m = std::min(W, count - first);
+            V px{}, py{};
+            place(first, m, px, py);
+            std::fill_n(levels.begin(), s.maxDepth + 1, Vec3x<T>::broadcast(Vec<T>(T(0))));
+            Vec3x<T> out;
+            traceCameraPacket(s, px, py, m, out, counts, levels.data());
+            for (int l = 0; l < m; ++l) {
+                radiance[first + l] = out.lane(l);
+                Vec<T> sum(T(0));
+                int level = 0;
+                for (int j = 0; j < depthCount; ++j) {
+                    for (; level <= depths[j]; ++level) sum += levels[level].lane(l);
+                    atDepths[std::size_t(first + l) * depthCount + j] = sum;
+                }
             }
         }
-    }
+    });
 }
 
 }  // namespace

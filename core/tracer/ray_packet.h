@@ -7,10 +7,13 @@
 // a packet, whatever its neighbours (tests/core/test_ray_packet.cpp).
 #pragma once
 
+#include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <type_traits>
 
 #include "tracer/isa_namespace.h"
+#include "tracer/screen_boxes.h"
 #include "tracer/simd.h"
 #include "tracer/simd_vec3.h"
 #include "tracer/sphere_intersect.h"
@@ -35,6 +38,9 @@ struct RayPacket {
     Mask intoOrigin{};        // the ray goes into originSphere
     bool fromCamera = false;  // every origin is the camera position
     unsigned active = 0;      // bit l: lane l holds a ray
+    // Which of the first kScreenBoxedSpheres spheres brute force tests (bit
+    // k: sphere k); every sphere after those is tested.
+    std::uint32_t spheres = ~0u;
 
     void set(int l, const Vec<T>& o, const Vec<T>& d, int sphere, bool into) {
         ox[l] = o.x;
@@ -149,6 +155,16 @@ inline PacketRoots<T> intersectPacket(const SphereSet<T>& spheres, int k, const 
     return intersectPacket(spheres, spheres.leafSphere(k), r, lanes);
 }
 
+// Calls test(k) for each sphere k that packet `r` is tested against by brute
+// force, in index order (r.spheres).
+template <typename T, typename Test>
+inline void forTestedSpheres(const RayPacket<T>& r, int count, Test test) {
+    const int boxed = std::min(count, kScreenBoxedSpheres);
+    const std::uint32_t all = boxed == 32 ? ~0u : (1u << boxed) - 1;
+    for (std::uint32_t bits = r.spheres & all; bits; bits &= bits - 1) test(__builtin_ctz(bits));
+    for (int k = boxed; k < count; ++k) test(k);
+}
+
 // Nearest hit per lane with t in (0, infinity): t, and the sphere index as T
 // (-1 for a miss). Ties go to the lower sphere index, as in closestHit().
 template <typename T>
@@ -160,18 +176,18 @@ inline void packetClosestHits(const SphereSet<T>& spheres, const RayPacket<T>& r
     // Camera rays and rays reflected off outsides never go into a sphere: they
     // take the plain loop; the exit rule below is for rays going into their own.
     const bool mayGoIn = laneBits(r.intoOrigin & maskFromBits<T>(r.active)) != 0;
-    for (int k = 0; k < spheres.count(); ++k) {
+    forTestedSpheres(r, spheres.count(), [&](int k) {
         const PacketRoots<T> roots = intersectPacket(spheres, k, r, r.active);
         if (!mayGoIn) {
-            if (!roots.valid) continue;
+            if (!roots.valid) return;
             const V t = roots.tNear > T(0) ? roots.tNear : roots.tFar;
             const auto take = roots.hit & (t > T(0)) & (t < tBest);
             tBest = take ? t : tBest;
             kBest = take ? V{} + T(k) : kBest;
-            continue;
+            return;
         }
         const auto inward = roots.self & r.intoOrigin & maskFromBits<T>(r.active);
-        if (!roots.valid && !laneBits(inward)) continue;
+        if (!roots.valid && !laneBits(inward)) return;
         // Going into its own sphere, a ray can only meet the far side, and must
         // meet it: where the origin's rounding error (off the surface by ~eps|p|)
         // makes a grazing line miss or puts the exit behind it, the ray leaves
@@ -182,7 +198,7 @@ inline void packetClosestHits(const SphereSet<T>& spheres, const RayPacket<T>& r
         const auto take = (roots.hit | inward) & (t > T(0)) & (t < tBest);
         tBest = take ? t : tBest;
         kBest = take ? V{} + T(k) : kBest;
-    }
+    });
 }
 
 // S_j per lane: the product of the transparencies of the spheres each shadow

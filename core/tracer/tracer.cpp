@@ -211,6 +211,8 @@ PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache) {
     if (useBvh) {
         s.bvh = sphereBvhFor<T>(bvh.centres, bvh.radii, s.spheres, bvhCache, s.frameOrigin);
         s.useBvh = true;
+    } else {
+        s.screenBoxes = sphereScreenBoxes(s.camera, s.spheres);
     }
     return s;
 }

@@ -21,6 +21,7 @@
 #include "tracer/bvh.h"
 #include "tracer/camera.h"
 #include "tracer/sampling.h"
+#include "tracer/screen_boxes.h"
 #include "tracer/sphere_intersect.h"
 #include "tracer/sphere_set.h"
 
@@ -88,6 +89,9 @@ struct PreparedScene {
     // finds near it (useBvh). Either way the same image, bit for bit.
     std::shared_ptr<const SphereBvh<T>> bvh;  // shared with a BvhCache, when one is kept
     bool useBvh = false;
+    // Without the tree, where each of the first spheres can be seen: a packet
+    // of camera rays tests only the spheres whose box it meets.
+    std::vector<ScreenBox> screenBoxes;
     std::vector<PreparedMaterial<T>> materials;
     std::vector<PreparedLight<T>> lights;
     Vec<T> background, ambient;

@@ -287,6 +287,22 @@ Vec<T> kernelTraceRay(const PreparedScene<T>& s, const Ray<T>& ray, int depth, R
     return radiance.lane(0);
 }
 
+// The spheres that camera rays through (x, y), in the first m lanes, can meet
+// (screen_boxes.h): with no tree, a packet in the sky tests none.
+template <typename T>
+std::uint32_t spheresInView(const PreparedScene<T>& s, const typename Simd<T>::type& x,
+                            const typename Simd<T>::type& y, int m) {
+    if (s.screenBoxes.empty()) return ~0u;
+    float xMin = float(x[0]), xMax = xMin, yMin = float(y[0]), yMax = yMin;
+    for (int l = 1; l < m; ++l) {
+        xMin = std::min(xMin, float(x[l]));
+        xMax = std::max(xMax, float(x[l]));
+        yMin = std::min(yMin, float(y[l]));
+        yMax = std::max(yMax, float(y[l]));
+    }
+    return spheresInView(s.screenBoxes, xMin, xMax, yMin, yMax);
+}
+
 // Camera rays through image-plane positions (x, y) = (i + u, j + v) for the
 // first m lanes: cameraDirection() for every lane at once, operation for operation.
 template <typename T>
@@ -295,14 +311,15 @@ void traceCameraPacket(const PreparedScene<T>& s, typename Simd<T>::type x,
                        Vec3x<T>* levels = nullptr) {
     using V = typename Simd<T>::type;
     const CameraBasis<T>& cam = s.camera;
+    const std::uint32_t spheres = spheresInView(s, x, y, m);
     x = (x / T(cam.width) * T(2) - T(1)) * cam.tanHalfFov * cam.aspect;
     y = (T(1) - y / T(cam.height) * T(2)) * cam.tanHalfFov;
     const Vec3x<T> dir =
         normalize(Vec3x<T>::broadcast(cam.forward) + x * Vec3x<T>::broadcast(cam.right) +
                   y * Vec3x<T>::broadcast(cam.up));
-    const RayPacket<T> packet =
-        RayPacket<T>::of(Vec3x<T>::broadcast(cam.origin), dir, V{} - T(1),
-                         typename RayPacket<T>::Mask{}, (1u << m) - 1, true);
+    RayPacket<T> packet = RayPacket<T>::of(Vec3x<T>::broadcast(cam.origin), dir, V{} - T(1),
+                                           typename RayPacket<T>::Mask{}, (1u << m) - 1, true);
+    packet.spheres = spheres;
     counts.camera += m;
     tracePacket(s, packet, 0, V{} + T(1), radiance, counts, levels);
 }

@@ -1,0 +1,108 @@
+// Without the sphere tree, a packet of camera rays tests only the spheres
+// whose screen box it meets (screen_boxes.h). Skipping the others must change
+// no pixel: rows traced with the boxes equal rows traced testing every sphere,
+// bit for bit, from random cameras among random spheres and a huge floor, in
+// both precisions and under every kernel. Seed printed on failure.
+#include <random>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "tracer/kernel_dispatch.h"
+#include "tracer/screen_boxes.h"
+#include "tracer/tracer.h"
+
+namespace whitted {
+namespace {
+
+Scene randomScene(unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> pos(-4.0, 4.0), logR(-3.0, 0.5), unit(0.0, 1.0);
+    Scene scene;
+    scene.render.width = 40;
+    scene.render.height = 30;
+    scene.render.maxDepth = 2;
+    scene.render.samplesPerPixel = 3;
+    scene.materials = {Material{"m", {0.5, 0.2, 0.1}, 1, 50, 0.5, 0, 1.5, Checker{{0, 0, 0}, 0.5}},
+                       Material{"glass", {0, 0, 0}, 1, 200, 0.1, 0.9, 1.5, std::nullopt}};
+    scene.lights = {Light{"key", {5, 5, -10}, {1, 1, 1}, 1}};
+    scene.spheres = {Sphere{"floor", {0, -99999.5, 0}, 99999, "m"}};
+    for (int k = 0; k < 6; ++k)
+        scene.spheres.push_back(Sphere{"s" + std::to_string(k),
+                                       {pos(rng), pos(rng), pos(rng)},
+                                       std::pow(10.0, logR(rng)),
+                                       k % 2 ? "glass" : "m"});
+    // The eye sometimes inside a ball, sometimes just above the floor.
+    Vec3 eye{pos(rng), unit(rng) < 0.3 ? -0.5 + 1e-3 * unit(rng) : pos(rng) * 0.5, pos(rng)};
+    if (unit(rng) < 0.2) eye = scene.spheres[1].center;
+    Vec3 ahead{pos(rng), pos(rng) * 0.3, pos(rng)};
+    if (glm::length(ahead - eye) < 0.1) ahead += Vec3(1.0);
+    scene.camera = Camera{eye, ahead, {0, 1, 0}, 20.0 + 150.0 * unit(rng)};
+    return scene;
+}
+
+// Rows of every sample with the scene's boxes and without: equal bit for bit.
+// Returns how many (row, sphere) pairs the boxes let the rows skip.
+template <typename T>
+int checkBoxesChangeNoPixel(const Scene& scene, unsigned seed) {
+    const PreparedScene<T> boxed = prepareScene<T>(scene);
+    PreparedScene<T> every = boxed;
+    every.screenBoxes.clear();
+    const int w = scene.render.width;
+    int skipped = 0;
+    for (int y = 0; y < scene.render.height; ++y) {
+        const std::uint32_t seen =
+            spheresInView(boxed.screenBoxes, 0.0f, float(w), float(y), float(y + 1));
+        skipped += int(boxed.screenBoxes.size()) - __builtin_popcount(seen);
+        for (int n = 0; n < scene.render.samplesPerPixel; ++n) {
+            std::vector<Vec<T>> withBoxes(w), withoutBoxes(w);
+            RayCounts a, b;
+            traceCameraRow(boxed, y, 0, w, n, withBoxes.data(), a);
+            traceCameraRow(every, y, 0, w, n, withoutBoxes.data(), b);
+            for (int x = 0; x < w; ++x)
+                EXPECT_EQ(withBoxes[x], withoutBoxes[x])
+                    << "seed " << seed << " pixel " << x << "," << y << " sample " << n;
+            EXPECT_EQ(a.total(), b.total()) << "seed " << seed << " row " << y;
+        }
+    }
+    return skipped;
+}
+
+TEST(ScreenBoxes, SkippedSpheresChangeNoPixel) {
+    for (const std::string& kernel : supportedKernelNames()) {
+        SCOPED_TRACE("kernel " + kernel);
+        useKernel(kernel);
+        int skipped = 0, pairs = 0;
+        for (unsigned seed = 1; seed <= 40; ++seed) {
+            const Scene scene = randomScene(seed);
+            skipped += checkBoxesChangeNoPixel<float>(scene, seed);
+            skipped += checkBoxesChangeNoPixel<double>(scene, seed);
+            pairs += 2 * scene.render.height * int(scene.spheres.size());
+        }
+        // The boxes do leave spheres out, or this test would test nothing.
+        EXPECT_GT(skipped, pairs / 3);
+    }
+    useKernel("");
+}
+
+// The seed's sky, the picture's top row, meets no sphere's box, and the
+// bottom row only the floor's.
+TEST(ScreenBoxes, SeedSkyTestsNoSphere) {
+    Scene scene;
+    scene.camera = Camera{{0, 0.35, -1}, {0, 0.25, 0}, {0, 1, 0}, 73.74};
+    scene.render.width = 640;
+    scene.render.height = 480;
+    scene.materials = {Material{"m", {0.5, 0.5, 0.5}, 1, 50, 0.5, 0, 1.5, std::nullopt}};
+    scene.spheres = {Sphere{"blue", {1, 0.2, 2}, 0.6, "m"},
+                     Sphere{"purple", {-0.95, 0.31, 1.25}, 0.6, "m"},
+                     Sphere{"white", {-0.175, 0.51, 7.5}, 0.6, "m"},
+                     Sphere{"floor", {0, -99999.5, 0}, 99999, "m"}};
+    const PreparedScene<float> s = prepareScene<float>(scene);
+    ASSERT_EQ(s.screenBoxes.size(), 4u);
+    EXPECT_EQ(spheresInView(s.screenBoxes, 0.0f, 640.0f, 0.0f, 1.0f), 0u);
+    EXPECT_EQ(spheresInView(s.screenBoxes, 0.0f, 640.0f, 479.0f, 480.0f), 1u << 3);
+}
+
+}  // namespace
+}  // namespace whitted

@@ -405,9 +405,10 @@ inline typename Simd<T>::type sceneTransmittance(const SphereSet<T>& spheres,
                                                  const std::vector<T>& transparency,
                                                  const SphereBvh<T>* bvh, const RayPacket<T>& r,
                                                  const typename Simd<T>::type& distance,
-                                                 unsigned lanes) {
+                                                 unsigned lanes,
+                                                 const ShadowCone<T>* cones = nullptr) {
     return bvh ? bvhTransmittance(spheres, transparency, *bvh, r, distance, lanes)
-               : packetTransmittance(spheres, transparency, r, distance, lanes);
+               : packetTransmittance(spheres, transparency, r, distance, lanes, cones);
 }
 
 }  // namespace WHITTED_ISA_NAMESPACE

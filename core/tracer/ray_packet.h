@@ -14,6 +14,7 @@
 
 #include "tracer/isa_namespace.h"
 #include "tracer/screen_boxes.h"
+#include "tracer/shadow_cones.h"
 #include "tracer/simd.h"
 #include "tracer/simd_vec3.h"
 #include "tracer/sphere_intersect.h"
@@ -202,18 +203,25 @@ inline void packetClosestHits(const SphereSet<T>& spheres, const RayPacket<T>& r
 }
 
 // S_j per lane: the product of the transparencies of the spheres each shadow
-// ray crosses before `distance`, in sphere order (SPEC §3).
+// ray crosses before `distance`, in sphere order (SPEC §3). With `cones`
+// (shadow_cones.h, one a sphere), a sphere is tested only for the lanes whose
+// direction lies in its cone, and for the rays that leave it.
 template <typename T>
-inline typename Simd<T>::type packetTransmittance(const SphereSet<T>& spheres,
-                                                  const std::vector<T>& transparency,
-                                                  const RayPacket<T>& r,
-                                                  const typename Simd<T>::type& distance,
-                                                  unsigned lanes) {
+inline typename Simd<T>::type packetTransmittance(
+    const SphereSet<T>& spheres, const std::vector<T>& transparency, const RayPacket<T>& r,
+    const typename Simd<T>::type& distance, unsigned lanes, const ShadowCone<T>* cones = nullptr) {
     using V = typename Simd<T>::type;
     V s = V{} + T(1);
     const bool mayGoIn = laneBits(r.intoOrigin & maskFromBits<T>(lanes)) != 0;
     for (int k = 0; k < spheres.count() && lanes; ++k) {
-        const PacketRoots<T> roots = intersectPacket(spheres, k, r, lanes);
+        unsigned tested = lanes;
+        if (cones) {
+            const ShadowCone<T>& cone = cones[k];
+            const V along = r.dx * cone.axis.x + r.dy * cone.axis.y + r.dz * cone.axis.z;
+            tested &= laneBits((along >= cone.cosine) | (r.originSphere == T(k)));
+            if (!tested) continue;
+        }
+        const PacketRoots<T> roots = intersectPacket(spheres, k, r, tested);
         const auto inward = roots.self & r.intoOrigin & maskFromBits<T>(lanes);
         if (!roots.valid && (!mayGoIn || !laneBits(inward))) continue;
         // A ray going into its own sphere crosses it before the light unless the

@@ -200,7 +200,7 @@ PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache) {
     for (const Light& l : scene.lights) {
         const Vec3 c = l.color * l.intensity;
         if (c == Vec3(0.0)) continue;  // a dark light adds nothing: no shadow rays for it
-        s.lights.push_back({Vec<T>(l.position - s.frameOrigin), boundedInput<T>(c)});
+        s.lights.push_back({Vec<T>(l.position - s.frameOrigin), boundedInput<T>(c), {}});
     }
     const std::size_t count = scene.spheres.size();
     const bool useBvh = bvhChosen(static_cast<int>(count));
@@ -213,6 +213,8 @@ PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache) {
         s.useBvh = true;
     } else {
         s.screenBoxes = sphereScreenBoxes(s.camera, s.spheres);
+        for (PreparedLight<T>& light : s.lights)
+            light.cones = shadowCones(light.position, s.spheres);
     }
     return s;
 }

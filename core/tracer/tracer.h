@@ -22,6 +22,7 @@
 #include "tracer/camera.h"
 #include "tracer/sampling.h"
 #include "tracer/screen_boxes.h"
+#include "tracer/shadow_cones.h"
 #include "tracer/sphere_intersect.h"
 #include "tracer/sphere_set.h"
 
@@ -74,6 +75,9 @@ template <typename T>
 struct PreparedLight {
     Vec<T> position;
     Vec<T> color;  // colour * intensity
+    // Without the tree, each sphere's cone from this light: a shadow ray is
+    // tested against the spheres whose cone holds its direction.
+    std::vector<ShadowCone<T>> cones;
 };
 
 // Positions in a prepared scene are relative to frameOrigin (world = frameOrigin +

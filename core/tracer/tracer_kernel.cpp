@@ -93,7 +93,8 @@ void addDirectLight(const PreparedScene<T>& s, const LaneMaterials<T>& g, const 
         const RayPacket<T> shadow =
             RayPacket<T>::of(p, l, kHit, dot(l, sp.outward) < T(0), litLanes);
         const V sj = sceneTransmittance(s.spheres, s.transparency, s.useBvh ? s.bvh.get() : nullptr,
-                                        shadow, distance, litLanes);
+                                        shadow, distance, litLanes,
+                                        light.cones.empty() ? nullptr : light.cones.data());
         const auto shaded = lit & (sj != T(0));
         if (!laneBits(shaded)) continue;
         Vec3x<T> term = kd * nl;

@@ -14,13 +14,6 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kQuarterTurn = M_PI / 2;
 
-// How much wider than the sphere the box is, relative to the sphere's distance
-// and size: a float camera direction is off by a few 1e-8 radians and the
-// float sphere test by a few 1e-8 of |o - centre| and r, so 4e-6 is a margin
-// of a hundred times. Still narrow enough that the seed's floor, 0.85 below an
-// eye 1e5 from its centre, is left out of the sky.
-constexpr double kWidening = 4e-6;
-
 // The slopes a/b (b > 0) of directions in the plane (a, b) from the origin
 // that come within `reach` of the point (ca, cb).
 struct Slopes {
@@ -63,7 +56,7 @@ std::vector<ScreenBox> sphereScreenBoxes(const CameraBasis<T>& camera,
     for (std::size_t k = 0; k < boxes.size(); ++k) {
         const glm::dvec3 c = glm::dvec3(spheres.centre[k]) + glm::dvec3(spheres.centreLo[k]) - eye;
         const double radius = double(spheres.radius[k]) + double(spheres.radiusLo[k]);
-        const double reach = radius + kWidening * (glm::length(c) + radius);
+        const double reach = radius + kSkipWidening * (glm::length(c) + radius);
         const double cf = glm::dot(c, forward);
         const Slopes x = slopesTowards(glm::dot(c, right), cf, reach);
         const Slopes y = slopesTowards(glm::dot(c, up), cf, reach);

@@ -19,6 +19,14 @@ struct ScreenBox {
     float xMin, xMax, yMin, yMax;
 };
 
+// How much wider than a sphere its screen box and its shadow cones
+// (shadow_cones.h) are, relative to the sphere's distance and size: a float
+// ray direction is off by a few 1e-8 radians and the float sphere test by a
+// few 1e-8 of |o - centre| and r, so this is a margin of a hundred times.
+// Still narrow enough that the seed's floor, 0.85 below an eye 1e5 from its
+// centre, is left out of the sky.
+inline constexpr double kSkipWidening = 4e-6;
+
 // The spheres a brute-force packet can skip: at most this many, the first ones.
 inline constexpr int kScreenBoxedSpheres = 32;
 

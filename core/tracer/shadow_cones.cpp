@@ -7,12 +7,11 @@
 
 #include <cmath>
 
+#include "tracer/screen_boxes.h"
+
 namespace whitted {
 namespace {
 
-// As screen_boxes.cpp's widening: 4e-6 of the distances, a hundred times the
-// rounding of a float direction and sphere test.
-constexpr double kWidening = 4e-6;
 // A float dot product of unit vectors is off by a few 1e-8: the cosine is
 // lowered by more, so that no ray in the cone compares below it.
 constexpr double kCosineSlack = 4e-6;
@@ -27,7 +26,7 @@ std::vector<ShadowCone<T>> shadowCones(const Vec<T>& light, const SphereSet<T>& 
             glm::dvec3(light) - (glm::dvec3(spheres.centre[k]) + glm::dvec3(spheres.centreLo[k]));
         const double distance = glm::length(toLight);
         const double radius = double(spheres.radius[k]) + double(spheres.radiusLo[k]);
-        const double reach = radius + kWidening * (distance + radius);
+        const double reach = radius + kSkipWidening * (distance + radius);
         if (!(distance > reach)) {
             cones[k] = {Vec<T>(T(0)), T(-1)};
             continue;

@@ -15,7 +15,6 @@ namespace {
 // Enough for the editor's image and sample sums of two renders in flight (the
 // one on screen and the next), and a bound on memory held for nothing.
 constexpr std::size_t kKeptBuffers = 4;
-constexpr std::size_t kHugePage = std::size_t(2) << 20;
 constexpr std::size_t kKeptBytes = std::size_t(256) << 20;
 
 struct Buffer {
@@ -55,9 +54,6 @@ void* allocateZeroedPages(std::size_t bytes) {
     void* pages =
         ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
     if (pages == MAP_FAILED) throw std::bad_alloc();
-    // In 2 MB pages where the kernel has them: a fresh 1280x720 image is 2,700
-    // small pages, and their faults were a tenth of a seed render on one thread.
-    if (bytes >= kHugePage) ::madvise(pages, bytes, MADV_HUGEPAGE);
     return pages;
 }
 

@@ -182,7 +182,7 @@ void testLeaf(const SphereSet<float>& spheres, const SphereBvh<float>& bvh, int 
 
 void binaryCounted(const SphereSet<float>& spheres, const SphereBvh<float>& bvh, const Packet& r,
                    V& tBest, V& kBest, Counts* c) {
-    const PacketSlabs<float> slabs = packetSlabs(r);
+    const PacketSlabs<float> slabs = packetSlabs(r, treeReach(bvh));
     if (!bvhClosestStart(spheres, bvh, r, slabs, tBest, kBest)) return;
     ++c->boxes;
     const auto leaf = [&](const BvhNode& node, unsigned in) {
@@ -261,7 +261,7 @@ void pushPacketChildren(const WideNode<W>& node, const PacketSlabs<float>& slabs
 template <int W, bool kCount>
 void widePacket(const SphereSet<float>& spheres, const SphereBvh<float>& bvh,
                 const WideBvh<W>& wide, const Packet& r, V& tBest, V& kBest, Counts* c) {
-    const PacketSlabs<float> slabs = packetSlabs(r);
+    const PacketSlabs<float> slabs = packetSlabs(r, treeReach(bvh));
     if (!bvhClosestStart(spheres, bvh, r, slabs, tBest, kBest)) return;
     PacketEntry stack[(W - 1) * kMaxBvhDepth + 2];
     int top = 0;
@@ -319,7 +319,7 @@ Vec load(const void* p) {
 
 // One ray's slab values (lane 0 of its PacketSlabs: the same numbers).
 struct RaySlabs {
-    float o[3], inv[3], reach;
+    float o[3], inv[3], margin;
 };
 
 // The children of `node` the ray meets within [0, limit], as bits, and their
@@ -328,15 +328,13 @@ template <int W>
 unsigned childHits(const WideNode<W>& node, const RaySlabs& s, float limit,
                    typename ChildVec<W>::type& entry) {
     using CV = typename ChildVec<W>::type;
-    CV reach{}, near, far;
+    CV near, far;
     CV lo[3], hi[3];
     for (int a = 0; a < 3; ++a) {
         lo[a] = load<CV>(node.lo[a]);
         hi[a] = load<CV>(node.hi[a]);
-        const CV l = lo[a] < 0.0f ? -lo[a] : lo[a], h = hi[a] < 0.0f ? -hi[a] : hi[a];
-        reach += l > h ? l : h;
     }
-    const CV margin = kBvhSlack<float> * (s.reach + reach);
+    const CV margin = CV{} + s.margin;
     for (int a = 0; a < 3; ++a) {
         const CV p = ((lo[a] - s.o[a]) - margin) * s.inv[a];
         const CV q = ((hi[a] - s.o[a]) + margin) * s.inv[a];
@@ -374,14 +372,14 @@ void pushRayChildren(const WideNode<W>& node, const RaySlabs& s, float limit, Ra
 }
 
 RaySlabs raySlabs(const PacketSlabs<float>& s) {
-    return {{s.ox[0], s.oy[0], s.oz[0]}, {s.ix[0], s.iy[0], s.iz[0]}, s.reach[0]};
+    return {{s.ox[0], s.oy[0], s.oz[0]}, {s.ix[0], s.iy[0], s.iz[0]}, s.margin[0]};
 }
 
 // `r` holds one ray, in lane 0; the sphere tests are the packets' own.
 template <int W, bool kCount>
 void wideRay(const SphereSet<float>& spheres, const SphereBvh<float>& bvh, const WideBvh<W>& wide,
              const Packet& r, V& tBest, V& kBest, Counts* c) {
-    const PacketSlabs<float> slabs = packetSlabs(r);
+    const PacketSlabs<float> slabs = packetSlabs(r, treeReach(bvh));
     if (!bvhClosestStart(spheres, bvh, r, slabs, tBest, kBest)) return;
     const RaySlabs s = raySlabs(slabs);
     RayEntry stack[(W - 1) * kMaxBvhDepth + 2];

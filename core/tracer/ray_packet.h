@@ -7,7 +7,6 @@
 // a packet, whatever its neighbours (tests/core/test_ray_packet.cpp).
 #pragma once
 
-#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <type_traits>
@@ -160,8 +159,10 @@ inline PacketRoots<T> intersectPacket(const SphereSet<T>& spheres, int k, const 
 // force, in index order (r.spheres).
 template <typename T, typename Test>
 inline void forTestedSpheres(const RayPacket<T>& r, int count, Test test) {
-    const int boxed = std::min(count, kScreenBoxedSpheres);
-    const std::uint32_t all = boxed == 32 ? ~0u : (1u << boxed) - 1;
+    // Not std::min, which would take the constant by reference and so define
+    // it in this instruction set's object (check_kernel_symbols.cmake).
+    const int boxed = count < kScreenBoxedSpheres ? count : kScreenBoxedSpheres;
+    const std::uint32_t all = boxed == 32 ? ~0u : (1u << boxed) - 1;  // no shift by 32
     for (std::uint32_t bits = r.spheres & all; bits; bits &= bits - 1) test(__builtin_ctz(bits));
     for (int k = boxed; k < count; ++k) test(k);
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tracer/camera.h"
+#include "tracer/isa_namespace.h"
 #include "tracer/sphere_set.h"
 
 namespace whitted {
@@ -37,7 +38,10 @@ inline constexpr int kScreenBoxedSpheres = 32;
 template <typename T>
 std::vector<ScreenBox> sphereScreenBoxes(const CameraBasis<T>& camera, const SphereSet<T>& spheres);
 
-// Bit k set: sphere k's box meets the box [xMin, xMax] x [yMin, yMax].
+inline namespace WHITTED_ISA_NAMESPACE {
+
+// Bit k set: sphere k's box meets the box [xMin, xMax] x [yMin, yMax]. In
+// each kernel's namespace, as the kernel calls it (isa_namespace.h).
 inline std::uint32_t spheresInView(const std::vector<ScreenBox>& boxes, float xMin, float xMax,
                                    float yMin, float yMax) {
     std::uint32_t seen = 0;
@@ -48,4 +52,5 @@ inline std::uint32_t spheresInView(const std::vector<ScreenBox>& boxes, float xM
     return seen;
 }
 
+}  // namespace WHITTED_ISA_NAMESPACE
 }  // namespace whitted

@@ -28,7 +28,7 @@ std::vector<ShadowCone<T>> shadowCones(const Vec<T>& light, const SphereSet<T>& 
         const double radius = double(spheres.radius[k]) + double(spheres.radiusLo[k]);
         const double reach = radius + kSkipWidening * (distance + radius);
         if (!(distance > reach)) {
-            cones[k] = {Vec<T>(T(0)), T(-1)};
+            cones[k] = {Vec<T>(T(0)), T(-2)};  // below any rounded dot product
             continue;
         }
         const double sine = reach / distance;

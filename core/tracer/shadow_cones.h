@@ -16,7 +16,7 @@ namespace whitted {
 template <typename T>
 struct ShadowCone {
     Vec<T> axis;  // unit, from the sphere's centre towards the light
-    T cosine;     // -1 where the light is inside the sphere or nearly
+    T cosine;     // -2 where the light is inside the sphere or nearly: every direction
 };
 
 // Each sphere's cone from the light at `light`, widened by far more than the

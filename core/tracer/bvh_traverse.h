@@ -72,6 +72,9 @@ struct PacketSlabs {
     V ix, iy, iz;
     V reach;   // |o|_1
     V margin;  // kBvhSlack * (|o|_1 + the tree's reach): every box's widening
+    // o + margin and o - margin per axis: a box's low side, less the margin,
+    // minus o is its low side minus o + margin, one subtraction fewer a side.
+    V originPlus[3], originMinus[3];
 };
 
 // The sum over axes of the largest |coordinate| of the root's box: at least
@@ -102,15 +105,21 @@ inline typename Simd<T>::type laneAbs(const typename Simd<T>::type& v) {
 
 template <typename T>
 inline PacketSlabs<T> packetSlabs(const RayPacket<T>& r, T reachOfTree) {
-    const typename Simd<T>::type reach = laneAbs<T>(r.ox) + laneAbs<T>(r.oy) + laneAbs<T>(r.oz);
-    return {r.ox,
-            r.oy,
-            r.oz,
-            clampedInverse<T>(r.dx),
-            clampedInverse<T>(r.dy),
-            clampedInverse<T>(r.dz),
-            reach,
-            kBvhSlack<T> * (reach + reachOfTree)};
+    PacketSlabs<T> s;
+    s.ox = r.ox;
+    s.oy = r.oy;
+    s.oz = r.oz;
+    s.ix = clampedInverse<T>(r.dx);
+    s.iy = clampedInverse<T>(r.dy);
+    s.iz = clampedInverse<T>(r.dz);
+    s.reach = laneAbs<T>(r.ox) + laneAbs<T>(r.oy) + laneAbs<T>(r.oz);
+    s.margin = kBvhSlack<T> * (s.reach + reachOfTree);
+    const typename Simd<T>::type origin[3] = {r.ox, r.oy, r.oz};
+    for (int i = 0; i < 3; ++i) {
+        s.originPlus[i] = origin[i] + s.margin;
+        s.originMinus[i] = origin[i] - s.margin;
+    }
+    return s;
 }
 
 // The lanes of `lanes` whose ray meets the widened box [lo, hi] at some t in
@@ -121,10 +130,9 @@ inline unsigned slabLanes(const float (&lo)[3], const float (&hi)[3], const Pack
                           const typename Simd<T>::type& limit, unsigned lanes,
                           typename Simd<T>::type& entry) {
     using V = typename Simd<T>::type;
-    const V& margin = s.margin;
-    const V ax = ((lo[0] - s.ox) - margin) * s.ix, bx = ((hi[0] - s.ox) + margin) * s.ix;
-    const V ay = ((lo[1] - s.oy) - margin) * s.iy, by = ((hi[1] - s.oy) + margin) * s.iy;
-    const V az = ((lo[2] - s.oz) - margin) * s.iz, bz = ((hi[2] - s.oz) + margin) * s.iz;
+    const V ax = (lo[0] - s.originPlus[0]) * s.ix, bx = (hi[0] - s.originMinus[0]) * s.ix;
+    const V ay = (lo[1] - s.originPlus[1]) * s.iy, by = (hi[1] - s.originMinus[1]) * s.iy;
+    const V az = (lo[2] - s.originPlus[2]) * s.iz, bz = (hi[2] - s.originMinus[2]) * s.iz;
     const V nx = ax < bx ? ax : bx, fx = ax < bx ? bx : ax;
     const V ny = ay < by ? ay : by, fy = ay < by ? by : ay;
     const V nz = az < bz ? az : bz, fz = az < bz ? bz : az;

@@ -300,21 +300,26 @@ struct ChildVec<8> {
     typedef std::int32_t ints __attribute__((vector_size(32)));
 };
 
+// One instruction where the build has it; a portable build (no AVX) takes
+// the loop for eight children.
 template <typename M>
 unsigned childBits(const M& m) {
+#ifdef __AVX__
     if constexpr (sizeof(M) == 32)
         return static_cast<unsigned>(_mm256_movemask_ps(reinterpret_cast<__m256>(m)));
-    else if constexpr (sizeof(M) == 16)
+#endif
+    if constexpr (sizeof(M) == 16)
         return static_cast<unsigned>(_mm_movemask_ps(reinterpret_cast<__m128>(m)));
-    else
-        return (m[0] ? 1u : 0u) | (m[1] ? 2u : 0u);
+    unsigned bits = 0;
+    for (unsigned c = 0; c < sizeof(M) / sizeof(m[0]); ++c) bits |= (m[c] ? 1u : 0u) << c;
+    return bits;
 }
 
+// By reference: returning a 32-byte vector by value changes the ABI in a
+// build without AVX (GCC's -Wpsabi).
 template <typename Vec>
-Vec load(const void* p) {
-    Vec v;
+void loadInto(Vec& v, const void* p) {
     std::memcpy(&v, p, sizeof v);
-    return v;
 }
 
 // One ray's slab values (lane 0 of its PacketSlabs: the same numbers).
@@ -331,8 +336,8 @@ unsigned childHits(const WideNode<W>& node, const RaySlabs& s, float limit,
     CV near, far;
     CV lo[3], hi[3];
     for (int a = 0; a < 3; ++a) {
-        lo[a] = load<CV>(node.lo[a]);
-        hi[a] = load<CV>(node.hi[a]);
+        loadInto(lo[a], node.lo[a]);
+        loadInto(hi[a], node.hi[a]);
     }
     const CV margin = CV{} + s.margin;
     for (int a = 0; a < 3; ++a) {
@@ -344,7 +349,9 @@ unsigned childHits(const WideNode<W>& node, const RaySlabs& s, float limit,
     }
     entry = near;
     const auto miss = (near > far) | (far < 0.0f) | (near > limit);
-    const unsigned filled = childBits(load<typename ChildVec<W>::ints>(node.count) != 0);
+    typename ChildVec<W>::ints counts;
+    loadInto(counts, node.count);
+    const unsigned filled = childBits(counts != 0);
     return filled & ~childBits(miss);
 }
 

@@ -54,8 +54,8 @@ std::vector<ScreenBox> sphereScreenBoxes(const CameraBasis<T>& camera,
     auto row = [&](double slope) { return (1.0 - slope / halfHeight) * camera.height / 2.0; };
     std::vector<ScreenBox> boxes(std::min(spheres.count(), kScreenBoxedSpheres));
     for (std::size_t k = 0; k < boxes.size(); ++k) {
-        const glm::dvec3 c = glm::dvec3(spheres.centre[k]) + glm::dvec3(spheres.centreLo[k]) - eye;
-        const double radius = double(spheres.radius[k]) + double(spheres.radiusLo[k]);
+        const glm::dvec3 c = spheres.centreOf(int(k)) - eye;
+        const double radius = spheres.radiusOf(int(k));
         const double reach = radius + kSkipWidening * (glm::length(c) + radius);
         const double cf = glm::dot(c, forward);
         const Slopes x = slopesTowards(glm::dot(c, right), cf, reach);

@@ -22,10 +22,9 @@ template <typename T>
 std::vector<ShadowCone<T>> shadowCones(const Vec<T>& light, const SphereSet<T>& spheres) {
     std::vector<ShadowCone<T>> cones(spheres.count());
     for (int k = 0; k < spheres.count(); ++k) {
-        const glm::dvec3 toLight =
-            glm::dvec3(light) - (glm::dvec3(spheres.centre[k]) + glm::dvec3(spheres.centreLo[k]));
+        const glm::dvec3 toLight = glm::dvec3(light) - spheres.centreOf(k);
         const double distance = glm::length(toLight);
-        const double radius = double(spheres.radius[k]) + double(spheres.radiusLo[k]);
+        const double radius = spheres.radiusOf(k);
         const double reach = radius + kSkipWidening * (distance + radius);
         if (!(distance > reach)) {
             cones[k] = {Vec<T>(T(0)), T(-2)};  // below any rounded dot product

@@ -47,6 +47,10 @@ struct SphereSet {
     Array<T> cameraC;                // accurateOffsetSquared() from the camera position
 
     int count() const { return static_cast<int>(centre.size()); }
+    // Sphere k's centre and radius in double, both terms added: for the
+    // bounds made once a render (screen_boxes.h, shadow_cones.h).
+    glm::dvec3 centreOf(int k) const { return glm::dvec3(centre[k]) + glm::dvec3(centreLo[k]); }
+    double radiusOf(int k) const { return double(radius[k]) + double(radiusLo[k]); }
     LeafSphere<T> leafSphere(int k) const { return {centre[k], rrHi[k], cameraC[k], k}; }
 
     // Room for n spheres, each to be given by set(): a large scene's spheres

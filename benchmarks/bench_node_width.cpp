@@ -324,7 +324,7 @@ void loadInto(Vec& v, const void* p) {
 
 // One ray's slab values (lane 0 of its PacketSlabs: the same numbers).
 struct RaySlabs {
-    float o[3], inv[3], margin;
+    float originPlus[3], originMinus[3], inv[3];
 };
 
 // The children of `node` the ray meets within [0, limit], as bits, and their
@@ -339,10 +339,9 @@ unsigned childHits(const WideNode<W>& node, const RaySlabs& s, float limit,
         loadInto(lo[a], node.lo[a]);
         loadInto(hi[a], node.hi[a]);
     }
-    const CV margin = CV{} + s.margin;
     for (int a = 0; a < 3; ++a) {
-        const CV p = ((lo[a] - s.o[a]) - margin) * s.inv[a];
-        const CV q = ((hi[a] - s.o[a]) + margin) * s.inv[a];
+        const CV p = (lo[a] - s.originPlus[a]) * s.inv[a];
+        const CV q = (hi[a] - s.originMinus[a]) * s.inv[a];
         const CV n = p < q ? p : q, f = p < q ? q : p;
         near = a == 0 ? n : (near > n ? near : n);
         far = a == 0 ? f : (far < f ? far : f);
@@ -379,7 +378,9 @@ void pushRayChildren(const WideNode<W>& node, const RaySlabs& s, float limit, Ra
 }
 
 RaySlabs raySlabs(const PacketSlabs<float>& s) {
-    return {{s.ox[0], s.oy[0], s.oz[0]}, {s.ix[0], s.iy[0], s.iz[0]}, s.margin[0]};
+    return {{s.originPlus[0][0], s.originPlus[1][0], s.originPlus[2][0]},
+            {s.originMinus[0][0], s.originMinus[1][0], s.originMinus[2][0]},
+            {s.ix[0], s.iy[0], s.iz[0]}};
 }
 
 // `r` holds one ray, in lane 0; the sphere tests are the packets' own.

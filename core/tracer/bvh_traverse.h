@@ -66,14 +66,13 @@ inline constexpr T kBvhOriginReach = sizeof(T) == sizeof(float) ? T(1e17) : T(1e
 template <typename T>
 struct PacketSlabs {
     using V = typename Simd<T>::type;
-    V ox, oy, oz;
     // 1 / direction, clamped to +-max of T: finite, so an axis the ray does not
     // move along gives 0 or +-infinity for its slab, never NaN (0 * infinity).
     V ix, iy, iz;
-    V reach;   // |o|_1
-    V margin;  // kBvhSlack * (|o|_1 + the tree's reach): every box's widening
-    // o + margin and o - margin per axis: a box's low side, less the margin,
-    // minus o is its low side minus o + margin, one subtraction fewer a side.
+    V reach;  // |o|_1
+    // o + margin and o - margin per axis, the margin kBvhSlack * (|o|_1 + the
+    // tree's reach): a box's low side, less the margin, minus o is its low
+    // side minus o + margin, one subtraction fewer a side.
     V originPlus[3], originMinus[3];
 };
 
@@ -106,18 +105,15 @@ inline typename Simd<T>::type laneAbs(const typename Simd<T>::type& v) {
 template <typename T>
 inline PacketSlabs<T> packetSlabs(const RayPacket<T>& r, T reachOfTree) {
     PacketSlabs<T> s;
-    s.ox = r.ox;
-    s.oy = r.oy;
-    s.oz = r.oz;
     s.ix = clampedInverse<T>(r.dx);
     s.iy = clampedInverse<T>(r.dy);
     s.iz = clampedInverse<T>(r.dz);
     s.reach = laneAbs<T>(r.ox) + laneAbs<T>(r.oy) + laneAbs<T>(r.oz);
-    s.margin = kBvhSlack<T> * (s.reach + reachOfTree);
+    const typename Simd<T>::type margin = kBvhSlack<T> * (s.reach + reachOfTree);
     const typename Simd<T>::type origin[3] = {r.ox, r.oy, r.oz};
     for (int i = 0; i < 3; ++i) {
-        s.originPlus[i] = origin[i] + s.margin;
-        s.originMinus[i] = origin[i] - s.margin;
+        s.originPlus[i] = origin[i] + margin;
+        s.originMinus[i] = origin[i] - margin;
     }
     return s;
 }

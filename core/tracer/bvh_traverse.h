@@ -13,10 +13,14 @@
 //    order), and stops early only at an opaque sphere, where it is 0 either way;
 //  * a box never drops a sphere whose test would report a hit (kBvhSlack below).
 //
-// Lanes go through the tree together, masked as they leave the boxes. Each
+// Lanes go through the tree together, masked as they leave the boxes: every
 // lane of reflected, refracted and shadow packets alone through the tree took
-// 1.7 to 3 times as long (docs/design/acceleration.md): a sphere test costs one
-// vector operation however few lanes it serves.
+// 1.7 to 3 times as long (docs/design/acceleration.md), as a box or sphere test
+// costs one vector operation however few lanes it serves. But in a cloud of
+// balls the bounces scatter, and most nodes are entered by one lane alone
+// (59 % on the inside field): that lane then walks on by itself, testing both
+// children of a node in one operation (childrenMet()) and every sphere of a
+// leaf in one (leaf_one_ray.h).
 #pragma once
 
 #include <cmath>
@@ -25,7 +29,9 @@
 #include <vector>
 
 #include "tracer/bvh.h"
+#include "tracer/bvh_slabs.h"
 #include "tracer/isa_namespace.h"
+#include "tracer/leaf_one_ray.h"
 #include "tracer/ray_packet.h"
 #include "tracer/simd.h"
 #include "tracer/sphere_set.h"
@@ -34,119 +40,6 @@ namespace whitted {
 
 inline namespace WHITTED_ISA_NAMESPACE {
 
-// How far a box is widened for a ray: kBvhSlack * (|o|_1 + reach), o the ray's
-// origin and reach the sum over axes of the root box's largest |coordinate|,
-// which is at least |c|_1 + r for every sphere (c, r) in the tree. Each node's
-// own reach would do, and is narrower near the eye, but working it out was 19
-// of a box test's 74 instructions; the root's is worked out once a packet
-// (bench_scaling, 100k: ours over Embree 4 to 8 % lower on four layouts).
-//
-// Why that covers the sphere test: intersectPacket() works with f = o - c, so
-// each of its roundings is relative to |f|, |b| <= |f|, r or r^2; a reported
-// root t then puts the exact point o + t d within a few eps (|f| + r) of the
-// ball (a grazing line is accepted when r^2 - |perp|^2 rounds to >= 0, i.e.
-// within eps |f| of the ball; a root's own error moves the point along the
-// ray by eps |f| (1 + r / sqrt(disc)), which changes its distance from the
-// centre only by eps |f| r). |f| <= |o|_1 + |c|_1. The test measures the
-// constant below 1 (0.84 in float, 0.91 in double: HitsLieWithinTheMargin,
-// radii 1e-4 to 1e6, centres to 1e7, grazing lines); the slab test's own
-// roundings (the subtraction, the margin, 1/d, the product) are another few
-// eps of the same sizes. 64 leaves a wide safety factor and costs nothing
-// that matters: 64 eps is 8e-6 of the scene's reach in float.
-//
-// The argument needs squares of coordinates to be finite in T: spheres beyond
-// kTreeReach (bvh.cpp) stay out of the tree, and packets whose origins lie
-// beyond kBvhOriginReach take the brute-force loop.
-template <typename T>
-inline constexpr T kBvhSlack = T(64) * std::numeric_limits<T>::epsilon();
-template <typename T>
-inline constexpr T kBvhOriginReach = sizeof(T) == sizeof(float) ? T(1e17) : T(1e150);
-
-// A packet prepared for box tests.
-template <typename T>
-struct PacketSlabs {
-    using V = typename Simd<T>::type;
-    // 1 / direction, clamped to +-max of T: finite, so an axis the ray does not
-    // move along gives 0 or +-infinity for its slab, never NaN (0 * infinity).
-    V ix, iy, iz;
-    V reach;  // |o|_1
-    // o + margin and o - margin per axis, the margin kBvhSlack * (|o|_1 + the
-    // tree's reach): a box's low side, less the margin, minus o is its low
-    // side minus o + margin, one subtraction fewer a side.
-    V originPlus[3], originMinus[3];
-};
-
-// The sum over axes of the largest |coordinate| of the root's box: at least
-// that of any box below it, as each lies inside its parent's.
-template <typename T>
-inline T treeReach(const SphereBvh<T>& bvh) {
-    if (bvh.nodes.empty()) return T(0);
-    T reach = 0;
-    for (int i = 0; i < 3; ++i) {
-        const T l = std::fabs(bvh.nodes[0].lo[i]), h = std::fabs(bvh.nodes[0].hi[i]);
-        reach += l > h ? l : h;
-    }
-    return reach;
-}
-
-template <typename T>
-inline typename Simd<T>::type clampedInverse(const typename Simd<T>::type& d) {
-    using V = typename Simd<T>::type;
-    constexpr T kMax = std::numeric_limits<T>::max();
-    const V inv = T(1) / d;
-    return inv > kMax ? V{} + kMax : (inv < -kMax ? V{} - kMax : inv);
-}
-
-template <typename T>
-inline typename Simd<T>::type laneAbs(const typename Simd<T>::type& v) {
-    return v < T(0) ? -v : v;
-}
-
-template <typename T>
-inline PacketSlabs<T> packetSlabs(const RayPacket<T>& r, T reachOfTree) {
-    PacketSlabs<T> s;
-    s.ix = clampedInverse<T>(r.dx);
-    s.iy = clampedInverse<T>(r.dy);
-    s.iz = clampedInverse<T>(r.dz);
-    s.reach = laneAbs<T>(r.ox) + laneAbs<T>(r.oy) + laneAbs<T>(r.oz);
-    const typename Simd<T>::type margin = kBvhSlack<T> * (s.reach + reachOfTree);
-    const typename Simd<T>::type origin[3] = {r.ox, r.oy, r.oz};
-    for (int i = 0; i < 3; ++i) {
-        s.originPlus[i] = origin[i] + margin;
-        s.originMinus[i] = origin[i] - margin;
-    }
-    return s;
-}
-
-// The lanes of `lanes` whose ray meets the widened box [lo, hi] at some t in
-// [0, limit], and each lane's entry distance. A NaN anywhere keeps the lane
-// (no comparison is true).
-template <typename T>
-inline unsigned slabLanes(const float (&lo)[3], const float (&hi)[3], const PacketSlabs<T>& s,
-                          const typename Simd<T>::type& limit, unsigned lanes,
-                          typename Simd<T>::type& entry) {
-    using V = typename Simd<T>::type;
-    const V ax = (lo[0] - s.originPlus[0]) * s.ix, bx = (hi[0] - s.originMinus[0]) * s.ix;
-    const V ay = (lo[1] - s.originPlus[1]) * s.iy, by = (hi[1] - s.originMinus[1]) * s.iy;
-    const V az = (lo[2] - s.originPlus[2]) * s.iz, bz = (hi[2] - s.originMinus[2]) * s.iz;
-    const V nx = ax < bx ? ax : bx, fx = ax < bx ? bx : ax;
-    const V ny = ay < by ? ay : by, fy = ay < by ? by : ay;
-    const V nz = az < bz ? az : bz, fz = az < bz ? bz : az;
-    const V nxy = nx > ny ? nx : ny, fxy = fx < fy ? fx : fy;
-    entry = nxy > nz ? nxy : nz;
-    const V exit = fxy < fz ? fxy : fz;
-    const auto miss = (entry > exit) | (exit < T(0)) | (entry > limit);
-    return lanes & ~laneBits(miss);
-}
-
-// slabLanes() for a node's box.
-template <typename T>
-inline unsigned boxLanes(const BvhNode& node, const PacketSlabs<T>& s,
-                         const typename Simd<T>::type& limit, unsigned lanes,
-                         typename Simd<T>::type& entry) {
-    return slabLanes(node.lo, node.hi, s, limit, lanes, entry);
-}
-
 // A node some lanes are yet to visit, with their entry distances into its box.
 template <typename T>
 struct BvhVisit {
@@ -154,6 +47,50 @@ struct BvhVisit {
     unsigned lanes;
     int node;
 };
+
+// traverseBvh() for one lane, from `node`, whose box its ray meets: the same
+// walk, but testing both children of a node in one go (childrenMet()). Returns
+// the lanes the leaves left looking, as leaf() does.
+template <typename T, typename Leaf, typename Inner>
+inline unsigned walkOneLane(const SphereSet<T>& spheres, const SphereBvh<T>& bvh,
+                            const PacketSlabs<T>& slabs, const typename Simd<T>::type& limit,
+                            int lane, int node, Leaf& leaf, Inner& inner) {
+    const LaneSlabs<T> ray = laneSlabs(slabs, lane);
+    const unsigned bit = 1u << lane;
+    struct Visit {
+        T entry;
+        int node;
+    };
+    Visit stack[kMaxBvhDepth + 1];
+    int top = 0;
+    unsigned looking = ~0u;
+    for (;;) {
+        const BvhNode& n = bvh.nodes[node];
+        if (n.count == kLazyNode) {
+            node = lazyJobRoot(bvh, n.first, spheres);
+            continue;
+        }
+        if (n.count > 0) {
+            looking &= leaf(n, bit);
+            if (!(looking & bit)) return looking;
+        } else {
+            inner();
+            T entry[2];
+            const unsigned met = childrenMet(&bvh.nodes[n.first], ray, limit[lane], entry);
+            if (met) {
+                const int near = met == 2 || (met == 3 && entry[1] < entry[0]) ? 1 : 0;
+                if (met == 3) stack[top++] = {entry[1 - near], n.first + 1 - near};
+                node = n.first + near;
+                continue;
+            }
+        }
+        do {
+            if (top == 0) return looking;
+            --top;
+        } while (stack[top].entry > limit[lane]);
+        node = stack[top].node;
+    }
+}
 
 // Visits the leaves whose boxes the lanes' rays meet within [0, limit],
 // building a lazy tree's subtrees as the lanes enter them (from `spheres`).
@@ -187,6 +124,11 @@ inline void traverseBvh(
         if (in && n.count == kLazyNode) {
             node = lazyJobRoot(bvh, n.first, spheres);  // a root with the same box
             continue;
+        }
+        if (in && !(in & (in - 1))) {
+            lanes &= walkOneLane(spheres, bvh, slabs, limit, __builtin_ctz(in), node, leaf, inner);
+            if (!lanes) return;
+            in = 0;
         }
         if (in) {
             inner();
@@ -288,6 +230,17 @@ __attribute__((noinline)) void bvhClosestHits(const SphereSet<T>& spheres, const
     if (!bvhClosestStart(spheres, bvh, r, slabs, tBest, kBest)) return;
     // Testing a ray's own sphere again changes nothing: its (t, k) is already kept.
     auto leaf = [&](const BvhNode& node, unsigned lanes) {
+        if (!(lanes & (lanes - 1)) && node.count > 1) {
+            const int lane = __builtin_ctz(lanes);
+            T t = tBest[lane], k = kBest[lane];
+            forSphereLanes(&bvh.leafSpheres[node.first], node.count, [&](const SphereLanes<T>& s) {
+                closestUpdateOneRay(spheres, s, r, lane, t, k);
+                return true;
+            });
+            tBest[lane] = t;
+            kBest[lane] = k;
+            return ~0u;
+        }
         for (int i = node.first; i < node.first + node.count; ++i)
             closestUpdate(spheres, bvh.leafSpheres[i], r, lanes, tBest, kBest);
         return ~0u;
@@ -372,6 +325,14 @@ __attribute__((noinline)) typename Simd<T>::type bvhTransmittance(
             shadowUpdate(spheres, transparency, spheres.leafSphere(k), r, distance,
                          goingIn ? open & ~lanesInto(r, k, goingIn) : open, found);
     auto leaf = [&](const BvhNode& node, unsigned in) {
+        if (!(in & (in - 1)) && node.count > 1) {
+            const int lane = __builtin_ctz(in);
+            forSphereLanes(&bvh.leafSpheres[node.first], node.count, [&](const SphereLanes<T>& s) {
+                shadowUpdateOneRay(spheres, transparency, s, r, lane, distance[lane], found);
+                return !(found.opaque & in);
+            });
+            return ~found.opaque;
+        }
         for (int i = node.first; i < node.first + node.count && in; ++i) {
             const LeafSphere<T>& sphere = bvh.leafSpheres[i];
             // Its own sphere was counted above; once is all.

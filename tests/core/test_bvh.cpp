@@ -693,6 +693,8 @@ void expectSamePackets(const Scene& scene, std::uint32_t seed, const std::string
         }
         r.active = static_cast<unsigned>(rng()) & ((1u << W) - 1);
         if (!r.active) r.active = 1;
+        // A packet of one ray walks the tree alone (walkOneLane(), leaf_one_ray.h).
+        if (trial % 4 == 0) r.active = 1u << (rng() % W);
         V tb, kb, tt, kt;
         packetClosestHits(s.spheres, r, tb, kb);
         bvhClosestHits(s.spheres, *s.bvh, r, tt, kt);

@@ -233,10 +233,11 @@ __attribute__((noinline)) void bvhClosestHits(const SphereSet<T>& spheres, const
         if (!(lanes & (lanes - 1)) && node.count > 1) {
             const int lane = __builtin_ctz(lanes);
             T t = tBest[lane], k = kBest[lane];
-            forSphereLanes(&bvh.leafSpheres[node.first], node.count, [&](const SphereLanes<T>& s) {
-                closestUpdateOneRay(spheres, s, r, lane, t, k);
-                return true;
-            });
+            const int end = node.first + node.count;
+            for (int i = node.first; i < end; i += RayPacket<T>::kWidth) {
+                const int n = end - i < RayPacket<T>::kWidth ? end - i : RayPacket<T>::kWidth;
+                closestUpdateOneRay(spheres, sphereLanes(&bvh.leafSpheres[i], n), r, lane, t, k);
+            }
             tBest[lane] = t;
             kBest[lane] = k;
             return ~0u;
@@ -327,10 +328,12 @@ __attribute__((noinline)) typename Simd<T>::type bvhTransmittance(
     auto leaf = [&](const BvhNode& node, unsigned in) {
         if (!(in & (in - 1)) && node.count > 1) {
             const int lane = __builtin_ctz(in);
-            forSphereLanes(&bvh.leafSpheres[node.first], node.count, [&](const SphereLanes<T>& s) {
-                shadowUpdateOneRay(spheres, transparency, s, r, lane, distance[lane], found);
-                return !(found.opaque & in);
-            });
+            const int end = node.first + node.count;
+            for (int i = node.first; i < end && !(found.opaque & in); i += RayPacket<T>::kWidth) {
+                const int n = end - i < RayPacket<T>::kWidth ? end - i : RayPacket<T>::kWidth;
+                shadowUpdateOneRay(spheres, transparency, sphereLanes(&bvh.leafSpheres[i], n), r,
+                                   lane, distance[lane], found);
+            }
             return ~found.opaque;
         }
         for (int i = node.first; i < node.first + node.count && in; ++i) {

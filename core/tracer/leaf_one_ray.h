@@ -94,24 +94,10 @@ inline OneRayRoots<T> oneRayRoots(const SphereSet<T>& spheres, const SphereLanes
         out.tNear = out.tFar = V{};  // as intersectPacket() leaves them
         return out;
     }
-    const V root = laneSqrt(hitLine ? disc : V{});
-    const V q = -b - (b < T(0) ? -root : root);
-    const auto zero = q == T(0);
-    const V t0 = zero ? V{} : c / (zero ? V{} + T(1) : q);
-    const V t1 = zero ? V{} : q;
-    const auto ordered = t0 < t1;
-    out.tNear = ordered ? t0 : t1;
-    out.tFar = ordered ? t1 : t0;
+    const OrderedRoots<T> roots = orderedRoots<T>(b, c, disc, hitLine);
+    out.tNear = roots.tNear;
+    out.tFar = roots.tFar;
     return out;
-}
-
-// Calls test(s) for the `count` spheres from `leaf` on, a vector's worth at a
-// time, while it returns true.
-template <typename T, typename Test>
-inline void forSphereLanes(const LeafSphere<T>* leaf, int count, Test test) {
-    constexpr int kWidth = RayPacket<T>::kWidth;
-    for (int i = 0; i < count; i += kWidth)
-        if (!test(sphereLanes(leaf + i, count - i < kWidth ? count - i : kWidth))) return;
 }
 
 // closestUpdate() of lane `lane` of `r` for every sphere of `s`.

@@ -106,6 +106,29 @@ inline typename Simd<T>::type exactC(const SphereSet<T>& spheres, const LeafSphe
     return maskFromBits<T>(fix) ? all : c;
 }
 
+// The roots of t^2 + 2bt + c, whose discriminant b^2 - c is `disc` (worked
+// out one of two ways), in the lanes of `hit`, by intersectSphere()'s
+// formulas, the nearer first. Shared with oneRayRoots() (leaf_one_ray.h),
+// which tests one ray against a sphere a lane.
+template <typename T>
+struct OrderedRoots {
+    typename Simd<T>::type tNear, tFar;
+};
+
+template <typename T, typename M>
+inline OrderedRoots<T> orderedRoots(const typename Simd<T>::type& b,
+                                    const typename Simd<T>::type& c,
+                                    const typename Simd<T>::type& disc, const M& hit) {
+    using V = typename Simd<T>::type;
+    const V root = laneSqrt(hit ? disc : V{});
+    const V q = -b - (b < T(0) ? -root : root);  // as in intersectSphere()
+    const auto zero = q == T(0);
+    const V t0 = zero ? V{} : c / (zero ? V{} + T(1) : q);
+    const V t1 = zero ? V{} : q;
+    const auto ordered = t0 < t1;
+    return {ordered ? t0 : t1, ordered ? t1 : t0};
+}
+
 // `sphere` is spheres.leafSphere(k), from wherever it was read (the sphere
 // tree keeps copies in leaf order): the same values, so the same roots.
 template <typename T>
@@ -138,14 +161,9 @@ inline PacketRoots<T> intersectPacket(const SphereSet<T>& spheres, const LeafSph
     out.valid = laneBits(hit) & lanes;
     if (!out.valid) return out;
     out.hit = hit & maskFromBits<T>(lanes);
-    const V root = laneSqrt(hit ? disc : V{});
-    const V q = -b - (b < T(0) ? -root : root);  // as in intersectSphere()
-    const auto zero = q == T(0);
-    const V t0 = zero ? V{} : c / (zero ? V{} + T(1) : q);
-    const V t1 = zero ? V{} : q;
-    const auto ordered = t0 < t1;
-    out.tNear = ordered ? t0 : t1;
-    out.tFar = ordered ? t1 : t0;
+    const OrderedRoots<T> roots = orderedRoots<T>(b, c, disc, hit);
+    out.tNear = roots.tNear;
+    out.tFar = roots.tFar;
     return out;
 }
 

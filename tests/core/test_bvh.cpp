@@ -766,6 +766,80 @@ TEST(BvhMargin, HitsLieWithinTheMargin) {
     EXPECT_LT(d, 8.0);
 }
 
+// childrenMet() (one lane, both children at once) against boxLanes() (every
+// lane, one child): the same children met and the same entry distances, to
+// the bit, with rays along axes, from box faces, with NaN directions and
+// limits from 0 to infinity. The lone-lane walk's image rests on it.
+template <typename T>
+void expectSameChildrenMet(std::uint32_t seed) {
+    using V = typename Simd<T>::type;
+    constexpr int W = RayPacket<T>::kWidth;
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-10.0, 10.0);
+    int mismatches = 0, met = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        alignas(64) BvhNode children[2];
+        for (BvhNode& n : children) {
+            for (int i = 0; i < 3; ++i) {
+                const float a = float(u(rng)), b = trial % 7 == 0 ? a : float(u(rng));
+                n.lo[i] = std::min(a, b);
+                n.hi[i] = std::max(a, b);
+            }
+            n.first = static_cast<std::int32_t>(rng() % 1000);
+            n.count = static_cast<std::int32_t>(rng() % 9) - 1;
+        }
+        RayPacket<T> r;
+        V limit{};
+        for (int l = 0; l < W; ++l) {
+            Vec<T> o(T(u(rng)), T(u(rng)), T(u(rng))), d(T(u(rng)), T(u(rng)), T(u(rng)));
+            const int kind = static_cast<int>(rng() % 5);
+            if (kind == 0) {  // towards a point of a child's box
+                const BvhNode& n = children[rng() % 2];
+                for (int i = 0; i < 3; ++i) d[i] = T(0.5f * (n.lo[i] + n.hi[i])) - o[i];
+            }
+            if (kind == 1) d[rng() % 3] = T(0);                    // parallel to a face
+            if (kind == 2) d = Vec<T>(T(0)), d[rng() % 3] = T(1);  // along an axis
+            if (kind == 3) o[rng() % 3] = T(children[rng() % 2].lo[rng() % 3]);  // on a face
+            if (kind == 4 && l == 0) d.x = std::numeric_limits<T>::quiet_NaN();
+            if (kind != 4 && glm::dot(d, d) > T(0)) d = glm::normalize(d);
+            r.set(l, o, d, -1, false);
+            const int reach = static_cast<int>(rng() % 4);
+            limit[l] = reach == 0   ? T(0)
+                       : reach == 1 ? std::numeric_limits<T>::infinity()
+                                    : T(std::fabs(u(rng)) * 3);
+        }
+        const PacketSlabs<T> slabs = packetSlabs(r, T(30));
+        V entries[2];
+        const unsigned lanes = (1u << W) - 1;
+        const unsigned inChild[2] = {boxLanes(children[0], slabs, limit, lanes, entries[0]),
+                                     boxLanes(children[1], slabs, limit, lanes, entries[1])};
+        for (int l = 0; l < W; ++l) {
+            T entry[2];
+            const unsigned alone = childrenMet(children, laneSlabs(slabs, l), limit[l], entry);
+            for (int c = 0; c < 2; ++c) {
+                const bool inPacket = (inChild[c] >> l) & 1u, byItself = (alone >> c) & 1u;
+                met += inPacket;
+                const bool same =
+                    inPacket == byItself &&
+                    (!inPacket || std::memcmp(&entry[c], &entries[c][l], sizeof(T)) == 0);
+                if (!same && mismatches++ < 5)
+                    ADD_FAILURE() << "trial " << trial << " lane " << l << " child " << c
+                                  << ": packet " << inPacket << " entry " << entries[c][l]
+                                  << ", alone " << byItself << " entry " << entry[c];
+            }
+        }
+    }
+    EXPECT_EQ(mismatches, 0);
+    EXPECT_GT(met, 2 * 2000 * W / 10);  // a fair share of the tests meet a box
+}
+
+TEST(BvhSlabs, BothChildrenAtOnce_SameAsEachBoxInThePacket) {
+    const std::uint32_t seed = testSeed(31);
+    std::printf("seed %u\n", seed);
+    expectSameChildrenMet<float>(seed);
+    expectSameChildrenMet<double>(seed);
+}
+
 TEST(BvhPackets, SameHitsAndTransmittanceAsBruteForce) {
     const std::uint32_t seed = testSeed(99);
     std::printf("seed %u\n", seed);

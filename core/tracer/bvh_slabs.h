@@ -172,8 +172,8 @@ inline LaneSlabs<T> laneSlabs(const PacketSlabs<T>& s, int lane) {
     return r;
 }
 
-// Which children of the node whose first child is nodes[first] the ray meets
-// within [0, limit] (bit c: child c), and its entry distance into each.
+// Which of the two sibling nodes at `children` the ray meets within
+// [0, limit] (bit c: children[c]), and its entry distance into each.
 template <typename T>
 inline unsigned childrenMet(const BvhNode* children, const LaneSlabs<T>& s, T limit,
                             T (&entry)[2]) {

@@ -230,6 +230,9 @@ __attribute__((noinline)) void bvhClosestHits(const SphereSet<T>& spheres, const
     if (!bvhClosestStart(spheres, bvh, r, slabs, tBest, kBest)) return;
     // Testing a ray's own sphere again changes nothing: its (t, k) is already kept.
     auto leaf = [&](const BvhNode& node, unsigned lanes) {
+        // One lane: the leaf's spheres a vector's worth at a time. This loop and
+        // the shadow leaf's are written out: a shared helper taking a lambda
+        // stayed out of line and cost the inside field 3 to 4 %.
         if (!(lanes & (lanes - 1)) && node.count > 1) {
             const int lane = __builtin_ctz(lanes);
             T t = tBest[lane], k = kBest[lane];

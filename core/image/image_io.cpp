@@ -7,6 +7,7 @@
 
 #include "base/atomic_file.h"
 #include "image/image_codec.h"
+#include "image/png_encode.h"
 #include "image/srgb.h"
 
 namespace whitted {
@@ -118,11 +119,14 @@ CodecPicture pictureOf(const Image& image, const fs::path& file, const ImageForm
 // Encoded in memory first, then written with checked system calls: the
 // format writers do not report a failed write (a full disk gave a truncated
 // PNG and no error), and a truncated file must never replace a good one.
-void encodeAndReplace(const fs::path& file, const CodecPicture& picture, const Image& image) {
+void encodeAndReplace(const fs::path& file, ImageFormat format, const CodecPicture& picture,
+                      const Image& image) {
     const void* pixels = picture.eightBit ? static_cast<const void*>(picture.codes.data())
                                           : static_cast<const void*>(image.rgb.data());
     std::vector<unsigned char> encoded;
-    const std::string failure = codecFor(file).encode(file.string(), picture, pixels, encoded);
+    const std::string failure =
+        format == ImageFormat::Png ? encodePng(picture, pixels, encoded)
+                                   : codecFor(file).encode(file.string(), picture, pixels, encoded);
     if (!failure.empty()) throw ImageIoError(file.string() + ": " + failure);
     try {
         replaceFileAtomically(file, [&](const fs::path& temp) {
@@ -168,7 +172,7 @@ ImageMetadata metadataOf(const CodecPicture& p) {
 
 void writeImage(const Image& image, const fs::path& file, const ImageMetadata& metadata) {
     const ImageFormatInfo format = formatOrThrow(file);
-    encodeAndReplace(file, pictureOf(image, file, format, metadata), image);
+    encodeAndReplace(file, format.format, pictureOf(image, file, format, metadata), image);
 }
 
 void writeImagePart(const ImagePart& part, const fs::path& file, const ImageMetadata& metadata) {
@@ -182,7 +186,7 @@ void writeImagePart(const ImagePart& part, const fs::path& file, const ImageMeta
     picture.y = part.window.y;
     picture.fullWidth = part.fullWidth;
     picture.fullHeight = part.fullHeight;
-    encodeAndReplace(file, picture, part.image);
+    encodeAndReplace(file, format.format, picture, part.image);
 }
 
 ImagePart readImagePart(const fs::path& file) {

@@ -128,6 +128,8 @@ TEST(ImageIo, Png_StoresSrgbCodesNotLinear) {
     auto in = OIIO::ImageInput::open(file.string());
     ASSERT_TRUE(in) << OIIO::geterror();
     ASSERT_EQ(in->spec().format, OIIO::TypeDesc::UINT8);
+    // The sRGB chunk, so that viewers show the codes as they are.
+    EXPECT_EQ(in->spec().get_string_attribute("oiio:ColorSpace"), "sRGB");
     const int channels = in->spec().nchannels;
     std::vector<unsigned char> codes(size_t(3) * channels);
     ASSERT_TRUE(in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, codes.data()));

@@ -1,0 +1,113 @@
+#include "image/png_encode.h"
+
+#include <png.h>
+
+#include <csetjmp>
+
+namespace whitted {
+namespace {
+
+// libpng reports through these callbacks and leaves by longjmp, so nothing
+// thrown may cross them: a failure is kept as text and libpng is told.
+void appendToEncoded(png_structp png, png_bytep data, png_size_t length) {
+    auto* encoded = static_cast<std::vector<unsigned char>*>(png_get_io_ptr(png));
+    bool grown = true;
+    try {
+        encoded->insert(encoded->end(), data, data + length);
+    } catch (...) {
+        grown = false;
+    }
+    if (!grown) png_error(png, "out of memory");
+}
+
+void flushNothing(png_structp) {}
+
+[[noreturn]] void keepReasonAndLeave(png_structp png, png_const_charp message) {
+    auto* reason = static_cast<std::string*>(png_get_error_ptr(png));
+    try {
+        *reason = message;
+    } catch (...) {
+    }
+    png_longjmp(png, 1);
+}
+
+void ignoreWarning(png_structp, png_const_charp) {}
+
+// What libpng is given, made before it starts: after its setjmp nothing here
+// is created, changed or destroyed.
+struct PngInput {
+    int width = 0, height = 0, x = 0, y = 0;
+    std::vector<png_bytep> rows;
+    std::vector<std::string> keys;
+    std::vector<png_text> texts;
+};
+
+PngInput pngInput(const CodecPicture& picture, const void* codes) {
+    PngInput in;
+    in.width = picture.width;
+    in.height = picture.height;
+    in.x = picture.x;
+    in.y = picture.y;
+    auto* first = static_cast<png_bytep>(const_cast<void*>(codes));
+    const std::size_t stride = std::size_t(3) * picture.width;
+    for (int row = 0; row < picture.height; ++row) in.rows.push_back(first + row * stride);
+    in.keys.reserve(picture.attributes.size());  // the texts point into it
+    for (const auto& [name, value] : picture.attributes) {
+        if (value.integer || value.real) continue;
+        in.keys.push_back(name == "ImageDescription" ? "Description" : name);
+        png_text t{};
+        t.compression = PNG_TEXT_COMPRESSION_NONE;
+        t.key = const_cast<char*>(in.keys.back().c_str());
+        t.text = const_cast<char*>(value.text.c_str());
+        t.text_length = value.text.size();
+        in.texts.push_back(t);
+    }
+    return in;
+}
+
+// Returns false, with `reason` set, where libpng failed.
+bool writePng(const PngInput& in, std::vector<unsigned char>& encoded, std::string& reason) {
+    png_structp png =
+        png_create_write_struct(PNG_LIBPNG_VER_STRING, &reason, keepReasonAndLeave, ignoreWarning);
+    if (!png) return false;
+    png_infop info = png_create_info_struct(png);
+    if (!info) {
+        png_destroy_write_struct(&png, nullptr);
+        return false;
+    }
+    if (setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, &info);
+        return false;
+    }
+    png_set_write_fn(png, &encoded, appendToEncoded, flushNothing);
+    // Each row filtered by its left neighbour, and zlib's level 5: the seed,
+    // glass and field renders at 1280x720 come out 1 to 6 % larger than
+    // OpenImageIO's files (level 6, libpng's choice of filter row by row), and
+    // the seed's whole process takes 44 ms instead of 65, of which the
+    // encoding was half.
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
+    png_set_compression_level(png, 5);
+    png_set_IHDR(png, info, in.width, in.height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_ABSOLUTE);
+    png_set_oFFs(png, info, in.x, in.y, PNG_OFFSET_PIXEL);
+    if (!in.texts.empty())
+        png_set_text(png, info, in.texts.data(), static_cast<int>(in.texts.size()));
+    png_set_rows(png, info, const_cast<png_bytepp>(in.rows.data()));
+    png_write_png(png, info, PNG_TRANSFORM_IDENTITY, nullptr);
+    png_destroy_write_struct(&png, &info);
+    return true;
+}
+
+}  // namespace
+
+std::string encodePng(const CodecPicture& picture, const void* codes,
+                      std::vector<unsigned char>& encoded) {
+    if (!picture.eightBit || picture.channels != 3) return "a PNG is written from 8-bit RGB codes";
+    const PngInput in = pngInput(picture, codes);
+    std::string reason;
+    if (writePng(in, encoded, reason)) return {};
+    return reason.empty() ? "libpng could not start" : reason;
+}
+
+}  // namespace whitted

@@ -22,16 +22,20 @@ void appendToEncoded(png_structp png, png_bytep data, png_size_t length) {
 
 void flushNothing(png_structp) {}
 
-[[noreturn]] void keepReasonAndLeave(png_structp png, png_const_charp message) {
+// The warnings too: libpng says what was wrong in a warning ("Image width is
+// zero in IHDR") before its error ("Invalid IHDR data").
+void keepMessage(png_structp png, png_const_charp message) {
     auto* reason = static_cast<std::string*>(png_get_error_ptr(png));
     try {
-        *reason = message;
+        *reason += (reason->empty() ? "" : "; ") + std::string(message);
     } catch (...) {
     }
-    png_longjmp(png, 1);
 }
 
-void ignoreWarning(png_structp, png_const_charp) {}
+[[noreturn]] void keepReasonAndLeave(png_structp png, png_const_charp message) {
+    keepMessage(png, message);
+    png_longjmp(png, 1);
+}
 
 // What libpng is given, made before it starts: after its setjmp nothing here
 // is created, changed or destroyed.
@@ -68,7 +72,7 @@ PngInput pngInput(const CodecPicture& picture, const void* codes) {
 // Returns false, with `reason` set, where libpng failed.
 bool writePng(const PngInput& in, std::vector<unsigned char>& encoded, std::string& reason) {
     png_structp png =
-        png_create_write_struct(PNG_LIBPNG_VER_STRING, &reason, keepReasonAndLeave, ignoreWarning);
+        png_create_write_struct(PNG_LIBPNG_VER_STRING, &reason, keepReasonAndLeave, keepMessage);
     if (!png) return false;
     png_infop info = png_create_info_struct(png);
     if (!info) {

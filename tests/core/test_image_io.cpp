@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "image/image_io.h"
+#include "image/png_encode.h"
 #include "image/srgb.h"
 #include "support/test_support.h"
 
@@ -181,6 +182,24 @@ TEST(ImageIo, WriteIntoMissingDirectory_ThrowsAndLeavesNothing) {
     EXPECT_THROW(writeImage(knownImage(), file, metadata()), ImageIoError);
     EXPECT_FALSE(fs::exists(dir / "missing"));
     EXPECT_TRUE(dir.entries().empty()) << test::joined(dir.entries());
+}
+
+// libpng refuses what PNG cannot hold by jumping out of its own code: the
+// reason comes back as text, and no bytes are kept.
+TEST(PngEncode, WhatLibpngRefuses_ComesBackAsItsReason) {
+    CodecPicture picture;
+    picture.width = 0;
+    picture.height = 4;
+    picture.eightBit = true;
+    picture.codes.assign(12, 0);
+    std::vector<unsigned char> encoded;
+    const std::string reason = encodePng(picture, picture.codes.data(), encoded);
+    EXPECT_NE(reason.find("width"), std::string::npos) << reason;
+    picture.width = 1;
+    encoded.clear();
+    EXPECT_EQ(encodePng(picture, picture.codes.data(), encoded), "");
+    EXPECT_GT(encoded.size(), 8u);
+    EXPECT_EQ(std::string(encoded.begin() + 1, encoded.begin() + 4), "PNG");
 }
 
 TEST(ImageIo, WriteWithUnknownExtension_ThrowsNamingFileAndLeavesNothing) {

@@ -185,7 +185,7 @@ TEST(ImageIo, WriteIntoMissingDirectory_ThrowsAndLeavesNothing) {
 }
 
 // libpng refuses what PNG cannot hold by jumping out of its own code: the
-// reason comes back as text, and no bytes are kept.
+// reason comes back as text, with libpng's warning that says what was wrong.
 TEST(PngEncode, WhatLibpngRefuses_ComesBackAsItsReason) {
     CodecPicture picture;
     picture.width = 0;

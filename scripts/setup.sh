@@ -8,7 +8,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 packages=(
   cmake ninja-build g++ pkg-config
-  libopenimageio-dev libpng-dev libglm-dev nlohmann-json3-dev libsimdjson-dev libcli11-dev
+  libopenimageio-dev libpng-dev libopenexr-dev libglm-dev nlohmann-json3-dev libsimdjson-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   # division by a render's sample count without a division instruction
   libdivide-dev

@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "base/atomic_file.h"
+#include "image/exr_encode.h"
 #include "image/image_codec.h"
 #include "image/png_encode.h"
 #include "image/srgb.h"
@@ -116,6 +117,20 @@ CodecPicture pictureOf(const Image& image, const fs::path& file, const ImageForm
     return p;
 }
 
+// PNG and OpenEXR, which renders write most, are encoded here without the
+// plug-in (png_encode.h says why); the other formats by the plug-in.
+std::string encode(const fs::path& file, ImageFormat format, const CodecPicture& picture,
+                   const void* pixels, std::vector<unsigned char>& encoded) {
+    switch (format) {
+        case ImageFormat::Png:
+            return encodePng(picture, pixels, encoded);
+        case ImageFormat::Exr:
+            return encodeExr(picture, static_cast<const float*>(pixels), encoded);
+        default:
+            return codecFor(file).encode(file.string(), picture, pixels, encoded);
+    }
+}
+
 // Encoded in memory first, then written with checked system calls: the
 // format writers do not report a failed write (a full disk gave a truncated
 // PNG and no error), and a truncated file must never replace a good one.
@@ -124,9 +139,7 @@ void encodeAndReplace(const fs::path& file, ImageFormat format, const CodecPictu
     const void* pixels = picture.eightBit ? static_cast<const void*>(picture.codes.data())
                                           : static_cast<const void*>(image.rgb.data());
     std::vector<unsigned char> encoded;
-    const std::string failure =
-        format == ImageFormat::Png ? encodePng(picture, pixels, encoded)
-                                   : codecFor(file).encode(file.string(), picture, pixels, encoded);
+    const std::string failure = encode(file, format, picture, pixels, encoded);
     if (!failure.empty()) throw ImageIoError(file.string() + ": " + failure);
     try {
         replaceFileAtomically(file, [&](const fs::path& temp) {

@@ -458,53 +458,56 @@ TEST(WhittedRender, SamplerFlagsThatDoNotGo_ExitTwoAndWriteNothing) {
 }
 
 // A program copied away from the image plug-in it is installed with still
-// writes PNG (libpng, linked in), and for the other formats renders, then says
-// what it could not load instead of writing the picture.
-TEST(WhittedRender, WithoutItsImagePlugin_WritesPngAndSaysWhyNotExr) {
+// writes PNG and OpenEXR (libpng and OpenEXR, linked in), and for the other
+// formats renders, then says what it could not load instead of writing the
+// picture.
+TEST(WhittedRender, WithoutItsImagePlugin_WritesPngAndExrAndSaysWhyNotTiff) {
     TempDir dir;
     fs::create_directory(dir / "bin");
-    const fs::path program = dir / "bin" / "whitted-render", png = dir / "o.png",
-                   exr = dir / "o.exr";
+    const fs::path program = dir / "bin" / "whitted-render", tiff = dir / "o.tif";
     fs::copy_file(WHITTED_RENDER_EXE, program);
     const auto run = [&](const fs::path& out) {
         return test::Program{program.string()}(
             {test::kSeedScenePath, "-o", out.string(), "--width", "8", "--height", "8", "--quiet"});
     };
-    const ProgramRun wrotePng = run(png);
-    EXPECT_EQ(wrotePng.exitCode, 0) << describe(wrotePng);
-    EXPECT_EQ(readImage(png).width, 8);
-    const ProgramRun r = run(exr);
+    for (const char* name : {"o.png", "o.exr"}) {
+        const ProgramRun wrote = run(dir / name);
+        EXPECT_EQ(wrote.exitCode, 0) << name << ": " << describe(wrote);
+        EXPECT_EQ(readImage(dir / name).width, 8) << name;
+    }
+    const ProgramRun r = run(tiff);
     EXPECT_EQ(r.exitCode, 1) << describe(r);
-    EXPECT_NE(r.err.find(exr.string() + ": cannot load the image library: "), std::string::npos)
+    EXPECT_NE(r.err.find(tiff.string() + ": cannot load the image library: "), std::string::npos)
         << r.err;
     EXPECT_NE(r.err.find("whitted_oiio.so"), std::string::npos) << r.err;
-    EXPECT_EQ(dir.entries(), (std::vector<std::string>{"bin", "o.png"}))
+    EXPECT_EQ(dir.entries(), (std::vector<std::string>{"bin", "o.exr", "o.png"}))
         << test::joined(dir.entries());
 }
 
 // OpenImageIO's libraries load with the first image file that needs them, not
-// with the program (core/image/image_codec.h): a run that writes a PNG, or no
-// image, never binds them; one that writes OpenEXR does.
-TEST(WhittedRender, LoadsOpenImageIOOnlyForFormatsBesidesPng) {
+// with the program (core/image/image_codec.h): a run that writes a PNG or an
+// OpenEXR file, or no image, never binds them; one that writes a TIFF does.
+TEST(WhittedRender, LoadsOpenImageIOOnlyForFormatsBesidesPngAndExr) {
     TempDir dir;
-    const fs::path png = dir / "o.png", exr = dir / "o.exr";
-    const ProgramRun refused =
-        runRender({test::kSeedScenePath, "-o", png.string(), "--spp", "0"}, "LD_DEBUG=files");
+    const ProgramRun refused = runRender(
+        {test::kSeedScenePath, "-o", (dir / "o.png").string(), "--spp", "0"}, "LD_DEBUG=files");
     EXPECT_EQ(refused.exitCode, 2) << describe(refused);
     EXPECT_EQ(refused.err.find("libOpenImageIO"), std::string::npos) << refused.err;
-    const auto write = [&](const fs::path& out) {
-        return runRender(
-            {test::kSeedScenePath, "-o", out.string(), "--width", "8", "--height", "8", "--quiet"},
-            "LD_DEBUG=files");
+    const auto write = [&](const char* name) {
+        return runRender({test::kSeedScenePath, "-o", (dir / name).string(), "--width", "8",
+                          "--height", "8", "--quiet"},
+                         "LD_DEBUG=files");
     };
-    const ProgramRun wrotePng = write(png);
-    EXPECT_EQ(wrotePng.exitCode, 0) << describe(wrotePng);
-    EXPECT_TRUE(fs::exists(png));
-    EXPECT_EQ(wrotePng.err.find("libOpenImageIO"), std::string::npos);
-    const ProgramRun wroteExr = write(exr);
-    EXPECT_EQ(wroteExr.exitCode, 0) << describe(wroteExr);
-    EXPECT_NE(wroteExr.err.find("whitted_oiio.so"), std::string::npos);
-    EXPECT_NE(wroteExr.err.find("libOpenImageIO"), std::string::npos);
+    for (const char* name : {"o.png", "o.exr"}) {
+        const ProgramRun wrote = write(name);
+        EXPECT_EQ(wrote.exitCode, 0) << name << ": " << describe(wrote);
+        EXPECT_TRUE(fs::exists(dir / name)) << name;
+        EXPECT_EQ(wrote.err.find("libOpenImageIO"), std::string::npos) << name;
+    }
+    const ProgramRun wroteTiff = write("o.tif");
+    EXPECT_EQ(wroteTiff.exitCode, 0) << describe(wroteTiff);
+    EXPECT_NE(wroteTiff.err.find("whitted_oiio.so"), std::string::npos);
+    EXPECT_NE(wroteTiff.err.find("libOpenImageIO"), std::string::npos);
 }
 
 // ---- rendering to a quality --------------------------------------------------

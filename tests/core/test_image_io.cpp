@@ -8,6 +8,7 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include "image/exr_encode.h"
 #include "image/image_io.h"
 #include "image/png_encode.h"
 #include "image/srgb.h"
@@ -200,6 +201,22 @@ TEST(PngEncode, WhatLibpngRefuses_ComesBackAsItsReason) {
     EXPECT_EQ(encodePng(picture, picture.codes.data(), encoded), "");
     EXPECT_GT(encoded.size(), 8u);
     EXPECT_EQ(std::string(encoded.begin() + 1, encoded.begin() + 4), "PNG");
+}
+
+// OpenEXR's refusal (here of a picture with no pixels) comes back as its text.
+TEST(ExrEncode, WhatOpenExrRefuses_ComesBackAsItsReason) {
+    CodecPicture picture;
+    picture.width = picture.fullWidth = 0;
+    picture.height = picture.fullHeight = 4;
+    const std::vector<float> values(12, 0.5f);
+    std::vector<unsigned char> encoded;
+    EXPECT_FALSE(encodeExr(picture, values.data(), encoded).empty());
+    picture.width = picture.fullWidth = 1;
+    encoded.clear();
+    EXPECT_EQ(encodeExr(picture, values.data(), encoded), "");
+    ASSERT_GT(encoded.size(), 4u);
+    EXPECT_EQ(encoded[0], 0x76);  // OpenEXR's magic number, 20000630
+    EXPECT_EQ(encoded[1], 0x2f);
 }
 
 TEST(ImageIo, WriteWithUnknownExtension_ThrowsNamingFileAndLeavesNothing) {

@@ -8,6 +8,7 @@
 #include <OpenEXR/ImfIntAttribute.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
+#include <OpenEXR/ImfThreading.h>
 
 #include <algorithm>
 #include <cstring>
@@ -70,9 +71,16 @@ std::string encodeExr(const CodecPicture& picture, const float* values,
             frame.insert(names[c],
                          Imf::Slice::Make(Imf::FLOAT, values + c, header.dataWindow(), pixel, row));
         MemoryStream stream(encoded);
-        // Compression is most of the writing: one thread for each core.
-        const int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-        Imf::OutputFile file(stream, header, threads);
+        // Compression is most of the writing, and OpenEXR's pool of threads
+        // for it is empty until it is given a size: one thread for each core,
+        // as OpenImageIO gave it.
+        static const bool pooled = [] {
+            Imf::setGlobalThreadCount(
+                static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+            return true;
+        }();
+        (void)pooled;
+        Imf::OutputFile file(stream, header);
         file.setFrameBuffer(frame);
         file.writePixels(picture.height);
     } catch (const std::exception& e) {

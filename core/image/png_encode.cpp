@@ -37,10 +37,9 @@ void keepMessage(png_structp png, png_const_charp message) {
     png_longjmp(png, 1);
 }
 
-// What libpng is given, made before it starts: after its setjmp nothing here
-// is created, changed or destroyed.
+// What libpng is given beside the picture, made before it starts: after its
+// setjmp nothing here is created, changed or destroyed.
 struct PngInput {
-    int width = 0, height = 0, x = 0, y = 0;
     std::vector<png_bytep> rows;
     std::vector<std::string> keys;
     std::vector<png_text> texts;
@@ -48,10 +47,6 @@ struct PngInput {
 
 PngInput pngInput(const CodecPicture& picture, const void* codes) {
     PngInput in;
-    in.width = picture.width;
-    in.height = picture.height;
-    in.x = picture.x;
-    in.y = picture.y;
     auto* first = static_cast<png_bytep>(const_cast<void*>(codes));
     const std::size_t stride = std::size_t(3) * picture.width;
     for (int row = 0; row < picture.height; ++row) in.rows.push_back(first + row * stride);
@@ -70,7 +65,8 @@ PngInput pngInput(const CodecPicture& picture, const void* codes) {
 }
 
 // Returns false, with `reason` set, where libpng failed.
-bool writePng(const PngInput& in, std::vector<unsigned char>& encoded, std::string& reason) {
+bool writePng(const CodecPicture& picture, const PngInput& in, std::vector<unsigned char>& encoded,
+              std::string& reason) {
     png_structp png =
         png_create_write_struct(PNG_LIBPNG_VER_STRING, &reason, keepReasonAndLeave, keepMessage);
     if (!png) return false;
@@ -91,10 +87,10 @@ bool writePng(const PngInput& in, std::vector<unsigned char>& encoded, std::stri
     // encoding was half.
     png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
     png_set_compression_level(png, 5);
-    png_set_IHDR(png, info, in.width, in.height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
-                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_IHDR(png, info, picture.width, picture.height, 8, PNG_COLOR_TYPE_RGB,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_ABSOLUTE);
-    png_set_oFFs(png, info, in.x, in.y, PNG_OFFSET_PIXEL);
+    png_set_oFFs(png, info, picture.x, picture.y, PNG_OFFSET_PIXEL);
     if (!in.texts.empty())
         png_set_text(png, info, in.texts.data(), static_cast<int>(in.texts.size()));
     png_set_rows(png, info, const_cast<png_bytepp>(in.rows.data()));
@@ -110,7 +106,7 @@ std::string encodePng(const CodecPicture& picture, const void* codes,
     if (!picture.eightBit || picture.channels != 3) return "a PNG is written from 8-bit RGB codes";
     const PngInput in = pngInput(picture, codes);
     std::string reason;
-    if (writePng(in, encoded, reason)) return {};
+    if (writePng(picture, in, encoded, reason)) return {};
     return reason.empty() ? "libpng could not start" : reason;
 }
 

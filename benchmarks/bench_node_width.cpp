@@ -5,7 +5,7 @@
 //
 //   build/bin/bench_node_width [--sizes N,N,...] [--width W] [--height H]
 //                              [--row-step S] [--random M] [--reps R] [--no-counts]
-//                              [--layout NAME]
+//                              [--layout NAME] [--regroup B]
 //
 // Defaults: N = 1000,100000,1000000 balls of app/field/sphere_field.h (the
 // scene of `whitted-field N` and bench_scaling), 1280x720, every row, 200,000
@@ -18,7 +18,12 @@
 //             of a row to a packet, as kernelCameraRow() forms them;
 //  * reflect: the reflected rays at the camera rays' first hits, packed as
 //             tracePacket() packs them (the hit lanes of a camera packet);
-//  * random:  random points in the field's box, random directions, 8 to a packet.
+//  * random:  random points in the field's box, random directions, 8 to a packet;
+//  * with --regroup B: the reflected rays at the first reflections' hits
+//             ("reflect2"), and the reflect, reflect2 and random sets again,
+//             each run of B rays in their order sorted (regroup()) before
+//             they are packed: what regrouping bounces into coherent packets
+//             would buy the traversal, the sort itself not timed.
 //
 // Trees:
 //  * "2 (ours)": the renderer's own bvhClosestHits() (bvh_traverse.h) on its
@@ -493,6 +498,66 @@ RaySet reflectRays(const Bench& b, const RaySet& camera) {
     return set;
 }
 
+// Every third bit of v's low 10 bits spread out, for a 30-bit Morton code.
+std::uint32_t spreadBits(std::uint32_t v) {
+    v = (v | (v << 16)) & 0x030000FF;
+    v = (v | (v << 8)) & 0x0300F00F;
+    v = (v | (v << 4)) & 0x030C30C3;
+    return (v | (v << 2)) & 0x09249249;
+}
+
+// The rays of `set` again, sorted by their direction's octant and then along
+// a Morton curve through their origins, `batch` rays at a time, kLanes to a
+// packet: bounces regrouped so that a packet's rays start near one another
+// and go the same way. Prints what the regrouping itself took.
+RaySet regroup(const RaySet& set, const char* name, std::size_t batch) {
+    struct Entry {
+        std::uint64_t key;
+        Vec<float> o, d;
+        int sphere;
+        bool into;
+    };
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<Entry> rays;
+    Vec<float> lo(1e30f, 1e30f, 1e30f), hi(-1e30f, -1e30f, -1e30f);
+    for (const Packet& p : set.packets)
+        for (unsigned bits = p.active; bits; bits &= bits - 1) {
+            const int l = __builtin_ctz(bits);
+            const Vec<float> o = p.origin(l);
+            rays.push_back({0, o, p.dir(l), int(p.originSphere[l]), p.intoOrigin[l] != 0});
+            lo = Vec<float>(std::min(lo.x, o.x), std::min(lo.y, o.y), std::min(lo.z, o.z));
+            hi = Vec<float>(std::max(hi.x, o.x), std::max(hi.y, o.y), std::max(hi.z, o.z));
+        }
+    auto cell = [](float v, float a, float b) {
+        return std::uint32_t(
+            std::clamp((v - a) / std::max(b - a, 1e-20f) * 1023.0f, 0.0f, 1023.0f));
+    };
+    for (Entry& e : rays) {
+        const std::uint32_t octant =
+            (e.d.x < 0 ? 4u : 0u) | (e.d.y < 0 ? 2u : 0u) | (e.d.z < 0 ? 1u : 0u);
+        const std::uint32_t morton = spreadBits(cell(e.o.x, lo.x, hi.x)) << 2 |
+                                     spreadBits(cell(e.o.y, lo.y, hi.y)) << 1 |
+                                     spreadBits(cell(e.o.z, lo.z, hi.z));
+        e.key = std::uint64_t(octant) << 32 | morton;
+    }
+    for (std::size_t b0 = 0; b0 < rays.size(); b0 += batch)
+        std::stable_sort(rays.begin() + b0, rays.begin() + std::min(rays.size(), b0 + batch),
+                         [](const Entry& a, const Entry& b) { return a.key < b.key; });
+    RaySet out{name, {}, 0};
+    for (std::size_t i = 0; i < rays.size(); i += kLanes) {
+        Packet p;
+        p.active = 0;
+        for (std::size_t l = 0; l < kLanes && i + l < rays.size(); ++l) {
+            const Entry& e = rays[i + l];
+            p.set(int(l), e.o, e.d, e.sphere, e.into);
+        }
+        out.packets.push_back(p);
+    }
+    out.rays = countRays(out.packets);
+    std::printf("%s: %zu rays regrouped in %.1f ms\n", name, out.rays, secondsSince(start) * 1e3);
+    return out;
+}
+
 // Origins in the balls' box (x in [-50, 50], y in [-0.5, 0.1], z in [1.5,
 // 100], less the camera position: the prepared scene's frame), directions
 // uniform on the sphere.
@@ -621,6 +686,7 @@ struct Options {
     int rowStep = 1;
     int random = 200000;
     int reps = 5;
+    std::size_t regroup = 0;  // rays regrouped together; 0: no regrouped sets
     bool counts = true;
     std::string layout = "field";
 };
@@ -634,6 +700,9 @@ Options parseOptions(int argc, char** argv) {
     app.add_option("--row-step", o.rowStep, "Trace every this many rows")
         ->check(CLI::PositiveNumber);
     app.add_option("--random", o.random, "Random rays");
+    app.add_option(
+        "--regroup", o.regroup,
+        "Also trace second reflections, and each set regrouped this many rays at a time");
     app.add_option("--reps", o.reps, "Repetitions")->check(CLI::PositiveNumber);
     app.add_flag("!--no-counts", o.counts, "Skip the counting traversals");
     app.add_option("--layout", o.layout, "Field layout (whitted-field --layout)")
@@ -743,7 +812,16 @@ void runSize(int n, const Options& o, std::size_t& mismatch) {
         n, b.bvh().nodes.size(), b.bvh().depth, b.wide4.nodes.size(), b.wide4.depth,
         b.wide8.nodes.size(), b.wide8.depth, b.bvh().leafSpheres.size(), b.bvh().direct.size());
     const RaySet camera = cameraRays(b, o.rowStep);
-    const RaySet sets[] = {camera, reflectRays(b, camera), randomRays(o.random)};
+    const RaySet reflect = reflectRays(b, camera);
+    std::vector<RaySet> sets = {camera, reflect, randomRays(o.random)};
+    if (o.regroup) {
+        RaySet reflect2 = reflectRays(b, reflect);
+        reflect2.name = "reflect2";
+        sets.push_back(regroup(reflect, "reflect, regrouped", o.regroup));
+        sets.push_back(reflect2);
+        sets.push_back(regroup(reflect2, "reflect2, regrouped", o.regroup));
+        sets.push_back(regroup(sets[2], "random, regrouped", o.regroup));
+    }
     CALLGRIND_START_INSTRUMENTATION;
     for (const RaySet& set : sets) printSet(b, set, o, n, mismatch);
 }

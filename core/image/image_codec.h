@@ -2,10 +2,10 @@
 // libraries take 0.2 s of a process's start to bind (0.4 s under ASan), which
 // the editor until it exports, the farm and most tests never need; so the one
 // file that calls it (image/oiio_codec.cpp) is a plug-in, whitted_oiio.so,
-// which image_io.cpp loads the first time an image is read, or written in a
-// format other than PNG and OpenEXR (written with their own libraries,
-// png_encode.h, exr_encode.h). Only standard types cross: the plug-in is built
-// with the program that loads it.
+// which image_io.cpp loads the first time an image other than an OpenEXR of
+// RGB is read, or one other than PNG and OpenEXR is written (these with their
+// own libraries, png_encode.h, exr_codec.h). Only standard types cross: the
+// plug-in is built with the program that loads it.
 #pragma once
 
 #include <cstdint>

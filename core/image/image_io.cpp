@@ -6,7 +6,7 @@
 #include <system_error>
 
 #include "base/atomic_file.h"
-#include "image/exr_encode.h"
+#include "image/exr_codec.h"
 #include "image/image_codec.h"
 #include "image/png_encode.h"
 #include "image/srgb.h"
@@ -202,10 +202,24 @@ void writeImagePart(const ImagePart& part, const fs::path& file, const ImageMeta
     encodeAndReplace(file, format.format, picture, part.image);
 }
 
-ImagePart readImagePart(const fs::path& file) {
+namespace {
+
+// OpenEXR files of RGB, which the farm's merge reads, are decoded here
+// without the plug-in; anything else by the plug-in.
+CodecPicture decode(const fs::path& file) {
+    const auto format = imageFormatFor(file);
+    if (format && format->format == ImageFormat::Exr)
+        if (auto picture = decodeExr(file.string())) return std::move(*picture);
     CodecPicture picture;
     const std::string failure = codecFor(file).decode(file.string(), picture);
     if (!failure.empty()) throw ImageIoError(file.string() + ": " + failure);
+    return picture;
+}
+
+}  // namespace
+
+ImagePart readImagePart(const fs::path& file) {
+    const CodecPicture picture = decode(file);
     if (picture.channels < 3) throw ImageIoError(file.string() + ": fewer than 3 channels");
     ImagePart part;
     part.image = Image(picture.width, picture.height);

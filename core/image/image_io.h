@@ -28,7 +28,8 @@ void writeImage(const Image& image, const std::filesystem::path& file,
                 const ImageMetadata& metadata);
 
 // Reads any image OpenImageIO knows as linear RGB floats (8-bit files are
-// decoded from sRGB). Throws ImageIoError.
+// decoded from sRGB; an OpenEXR's R, G and B without OpenImageIO). Throws
+// ImageIoError.
 Image readImage(const std::filesystem::path& file);
 
 // A window of a larger picture (a farm's region): `image` holds the pixels of

@@ -486,7 +486,8 @@ TEST(WhittedRender, WithoutItsImagePlugin_WritesPngAndExrAndSaysWhyNotTiff) {
 
 // OpenImageIO's libraries load with the first image file that needs them, not
 // with the program (core/image/image_codec.h): a run that writes a PNG or an
-// OpenEXR file, or no image, never binds them; one that writes a TIFF does.
+// OpenEXR file, or no image, or merges OpenEXR parts, never binds them; one
+// that writes a TIFF does.
 TEST(WhittedRender, LoadsOpenImageIOOnlyForFormatsBesidesPngAndExr) {
     TempDir dir;
     const ProgramRun refused = runRender(
@@ -504,6 +505,12 @@ TEST(WhittedRender, LoadsOpenImageIOOnlyForFormatsBesidesPngAndExr) {
         EXPECT_TRUE(fs::exists(dir / name)) << name;
         EXPECT_EQ(wrote.err.find("libOpenImageIO"), std::string::npos) << name;
     }
+    const ProgramRun merged =
+        runRender({"merge", (dir / "o.exr").string(), "-o", (dir / "m.exr").string(), "--quiet"},
+                  "LD_DEBUG=files");
+    EXPECT_EQ(merged.exitCode, 0) << describe(merged);
+    EXPECT_TRUE(test::samePixels(readImage(dir / "m.exr"), readImage(dir / "o.exr")));
+    EXPECT_EQ(merged.err.find("libOpenImageIO"), std::string::npos) << "merge";
     const ProgramRun wroteTiff = write("o.tif");
     EXPECT_EQ(wroteTiff.exitCode, 0) << describe(wroteTiff);
     EXPECT_NE(wroteTiff.err.find("whitted_oiio.so"), std::string::npos);

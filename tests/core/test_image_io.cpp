@@ -2,13 +2,14 @@
 // each format allows (SPEC §5), the metadata in the files, and failed writes that
 // leave nothing behind.
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
-#include "image/exr_encode.h"
+#include "image/exr_codec.h"
 #include "image/image_io.h"
 #include "image/png_encode.h"
 #include "image/srgb.h"
@@ -293,6 +294,74 @@ TEST(ImageIo, ReadMissingOrNonImageFile_ThrowsImageIoError) {
     EXPECT_THROW(readImage(dir / "none.png"), ImageIoError);
     test::writeFile(dir / "text.png", "this is not a png");
     EXPECT_THROW(readImage(dir / "text.png"), ImageIoError);
+}
+
+// An OpenEXR file as another program writes it: half floats, an alpha
+// channel, its pixels a window of a display window that does not start at 0.
+// Read without the plug-in (decodeExr()), it gives the same as OpenImageIO.
+TEST(ImageIo, ExrOfHalfRgbaInAWindow_ReadsAsOpenImageIOReadsIt) {
+    TempDir dir;
+    const fs::path file = dir / "half.exr";
+    OIIO::ImageSpec spec(5, 3, 4, OIIO::TypeDesc::HALF);
+    spec.x = 12;
+    spec.y = 7;
+    spec.full_x = 10;
+    spec.full_y = 5;
+    spec.full_width = 20;
+    spec.full_height = 10;
+    spec.attribute("ImageDescription", "from elsewhere");
+    spec.attribute("whitted:max_depth", 7);
+    std::vector<float> rgba(5 * 3 * 4);
+    for (size_t k = 0; k < rgba.size(); ++k) rgba[k] = 0.1f * float(k) + 0.013f;
+    auto out = OIIO::ImageOutput::create(file.string());
+    ASSERT_TRUE(out && out->open(file.string(), spec));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, rgba.data()));
+    ASSERT_TRUE(out->close());
+
+    const std::optional<CodecPicture> mine = decodeExr(file.string());
+    ASSERT_TRUE(mine);
+    const ImagePart part = readImagePart(file);
+    EXPECT_EQ(part.window.x, 2);
+    EXPECT_EQ(part.window.y, 2);
+    EXPECT_EQ(part.window.width, 5);
+    EXPECT_EQ(part.window.height, 3);
+    EXPECT_EQ(part.fullWidth, 20);
+    EXPECT_EQ(part.fullHeight, 10);
+    EXPECT_EQ(part.metadata.description, "from elsewhere");
+    EXPECT_EQ(part.metadata.settings.maxDepth, 7);
+    auto in = OIIO::ImageInput::open(file.string());
+    ASSERT_TRUE(in);
+    std::vector<float> theirs(rgba.size());
+    ASSERT_TRUE(in->read_image(0, 0, 0, 4, OIIO::TypeDesc::FLOAT, theirs.data()));
+    for (size_t p = 0; p < 15; ++p)
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_EQ(part.image.rgb[p * 3 + c], theirs[p * 4 + c]) << p << "," << c;
+            EXPECT_NEAR(part.image.rgb[p * 3 + c], rgba[p * 4 + c], 1e-3f * rgba[p * 4 + c]);
+        }
+}
+
+// What OpenEXR cannot read or holds no RGB goes to the plug-in, which
+// refuses it in its words, naming the file.
+TEST(ImageIo, ExrThatIsNotOne_IsRefusedNamingTheFile) {
+    TempDir dir;
+    test::writeFile(dir / "text.exr", "this is not an exr");
+    EXPECT_FALSE(decodeExr((dir / "text.exr").string()));
+    try {
+        readImage(dir / "text.exr");
+        ADD_FAILURE() << "read";
+    } catch (const ImageIoError& e) {
+        EXPECT_NE(std::string(e.what()).find("text.exr"), std::string::npos) << e.what();
+    }
+    OIIO::ImageSpec grey(4, 4, 1, OIIO::TypeDesc::FLOAT);
+    grey.channelnames = {"Y"};
+    const std::string greyFile = (dir / "grey.exr").string();
+    auto out = OIIO::ImageOutput::create(greyFile);
+    const std::vector<float> values(16, 0.5f);
+    ASSERT_TRUE(out && out->open(greyFile, grey));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, values.data()));
+    ASSERT_TRUE(out->close());
+    EXPECT_FALSE(decodeExr(greyFile));
+    EXPECT_THROW(readImage(greyFile), ImageIoError);  // the plug-in's: fewer than 3 channels
 }
 
 TEST(ImageIo, FormatTable_KnowsTheFiveFormatsCaseInsensitively) {

@@ -1,10 +1,11 @@
-#include "image/exr_encode.h"
+#include "image/exr_codec.h"
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFloatAttribute.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfIO.h>
+#include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfIntAttribute.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
@@ -36,6 +37,18 @@ class MemoryStream : public Imf::OStream {
     uint64_t position_ = 0;
 };
 
+// (De)compression is most of the writing and reading, and OpenEXR's pool of
+// threads for it is empty until it is given a size: one thread for each core,
+// as OpenImageIO gave it.
+void useEveryCore() {
+    static const bool pooled = [] {
+        Imf::setGlobalThreadCount(
+            static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+        return true;
+    }();
+    (void)pooled;
+}
+
 Imf::Header headerOf(const CodecPicture& picture) {
     const Imath::Box2i display({0, 0}, {picture.fullWidth - 1, picture.fullHeight - 1});
     const Imath::Box2i data({picture.x, picture.y},
@@ -57,7 +70,57 @@ Imf::Header headerOf(const CodecPicture& picture) {
     return header;
 }
 
+// An attribute as the plug-in's attributeOf() gives it: a number also as
+// text, an int also as a float.
+std::optional<CodecAttribute> attributeOf(const Imf::Attribute& a) {
+    if (const auto* t = dynamic_cast<const Imf::StringAttribute*>(&a))
+        return CodecAttribute{t->value(), std::nullopt, std::nullopt};
+    if (const auto* i = dynamic_cast<const Imf::IntAttribute*>(&a))
+        return CodecAttribute{std::to_string(i->value()), i->value(), float(i->value())};
+    if (const auto* f = dynamic_cast<const Imf::FloatAttribute*>(&a))
+        return CodecAttribute{std::to_string(f->value()), std::nullopt, f->value()};
+    return std::nullopt;  // boxes, chromaticities...: nothing the renderer records
+}
+
+bool hasRgb(const Imf::Header& header) {
+    const Imf::ChannelList& channels = header.channels();
+    return channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
+}
+
 }  // namespace
+
+std::optional<CodecPicture> decodeExr(const std::string& fileName) {
+    try {
+        useEveryCore();
+        Imf::InputFile file(fileName.c_str());
+        const Imf::Header& header = file.header();
+        if (!hasRgb(header)) return std::nullopt;
+        const Imath::Box2i data = header.dataWindow(), display = header.displayWindow();
+        CodecPicture p;
+        p.width = data.max.x - data.min.x + 1;
+        p.height = data.max.y - data.min.y + 1;
+        p.x = data.min.x - display.min.x;
+        p.y = data.min.y - display.min.y;
+        p.fullWidth = display.max.x - display.min.x + 1;
+        p.fullHeight = display.max.y - display.min.y + 1;
+        p.values.resize(std::size_t(p.width) * p.height * 3);
+        Imf::FrameBuffer frame;
+        const std::size_t pixel = 3 * sizeof(float), row = pixel * p.width;
+        const char* names[] = {"R", "G", "B"};
+        for (int c = 0; c < 3; ++c)
+            frame.insert(names[c],
+                         Imf::Slice::Make(Imf::FLOAT, p.values.data() + c, data, pixel, row));
+        file.setFrameBuffer(frame);
+        file.readPixels(data.min.y, data.max.y);
+        for (auto it = header.begin(); it != header.end(); ++it)
+            if (auto a = attributeOf(it.attribute()))
+                p.attributes[std::strcmp(it.name(), "comments") == 0 ? "ImageDescription"
+                                                                     : it.name()] = std::move(*a);
+        return p;
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+}
 
 std::string encodeExr(const CodecPicture& picture, const float* values,
                       std::vector<unsigned char>& encoded) {
@@ -71,15 +134,7 @@ std::string encodeExr(const CodecPicture& picture, const float* values,
             frame.insert(names[c],
                          Imf::Slice::Make(Imf::FLOAT, values + c, header.dataWindow(), pixel, row));
         MemoryStream stream(encoded);
-        // Compression is most of the writing, and OpenEXR's pool of threads
-        // for it is empty until it is given a size: one thread for each core,
-        // as OpenImageIO gave it.
-        static const bool pooled = [] {
-            Imf::setGlobalThreadCount(
-                static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
-            return true;
-        }();
-        (void)pooled;
+        useEveryCore();
         Imf::OutputFile file(stream, header);
         file.setFrameBuffer(frame);
         file.writePixels(picture.height);

@@ -5,7 +5,7 @@
 //
 //   build/bin/bench_node_width [--sizes N,N,...] [--width W] [--height H]
 //                              [--row-step S] [--random M] [--reps R] [--no-counts]
-//                              [--layout NAME] [--regroup B]
+//                              [--layout NAME] [--blocks W] [--regroup B]
 //
 // Defaults: N = 1000,100000,1000000 balls of app/field/sphere_field.h (the
 // scene of `whitted-field N` and bench_scaling), 1280x720, every row, 200,000
@@ -19,6 +19,9 @@
 //  * reflect: the reflected rays at the camera rays' first hits, packed as
 //             tracePacket() packs them (the hit lanes of a camera packet);
 //  * random:  random points in the field's box, random directions, 8 to a packet;
+//  * with --blocks W: the camera rays of blocks of pixels W wide and as many
+//             rows as fill a packet, every row, and their reflections (what
+//             traceCameraRows() packs: 4 x 4 with AVX-512's 16 float lanes);
 //  * with --regroup B: the reflected rays at the first reflections' hits
 //             ("reflect2"), and the reflect, reflect2 and random sets again,
 //             each run of B rays in their order sorted (regroup()) before
@@ -460,6 +463,37 @@ Packet cameraPacket(const CameraBasis<float>& cam, int y, int x0, int m) {
                       (1u << m) - 1, true);
 }
 
+// The camera rays of a block of pixel centres, (x0, y0) its top left, `side`
+// pixels wide and as many rows as fill the lanes, lane l at
+// (x0 + l % side, y0 + l / side); lanes off the image left empty.
+Packet blockPacket(const CameraBasis<float>& cam, int x0, int y0, int side) {
+    V x{}, yy{};
+    unsigned active = 0;
+    for (int l = 0; l < kLanes; ++l) {
+        const int px = x0 + l % side, py = y0 + l / side;
+        x[l] = float(px) + 0.5f;
+        yy[l] = float(py) + 0.5f;
+        if (px < cam.width && py < cam.height) active |= 1u << l;
+    }
+    x = (x / float(cam.width) * 2.0f - 1.0f) * cam.tanHalfFov * cam.aspect;
+    yy = (1.0f - yy / float(cam.height) * 2.0f) * cam.tanHalfFov;
+    const Vec3x<float> dir =
+        normalize(Vec3x<float>::broadcast(cam.forward) + x * Vec3x<float>::broadcast(cam.right) +
+                  yy * Vec3x<float>::broadcast(cam.up));
+    return Packet::of(Vec3x<float>::broadcast(cam.origin), dir, V{} - 1.0f, Packet::Mask{}, active,
+                      true);
+}
+
+RaySet blockRays(const Bench& b, int side) {
+    const CameraBasis<float>& cam = b.scene.camera;
+    RaySet set{"camera, blocks", {}, 0};
+    for (int y = 0; y < cam.height; y += kLanes / side)
+        for (int x0 = 0; x0 < cam.width; x0 += side)
+            set.packets.push_back(blockPacket(cam, x0, y, side));
+    set.rays = countRays(set.packets);
+    return set;
+}
+
 RaySet cameraRays(const Bench& b, int rowStep) {
     const CameraBasis<float>& cam = b.scene.camera;
     RaySet set{"camera", {}, 0};
@@ -686,6 +720,7 @@ struct Options {
     int rowStep = 1;
     int random = 200000;
     int reps = 5;
+    int blocks = 0;           // the width of the camera's blocks of pixels; 0: no such sets
     std::size_t regroup = 0;  // rays regrouped together; 0: no regrouped sets
     bool counts = true;
     std::string layout = "field";
@@ -700,6 +735,9 @@ Options parseOptions(int argc, char** argv) {
     app.add_option("--row-step", o.rowStep, "Trace every this many rows")
         ->check(CLI::PositiveNumber);
     app.add_option("--random", o.random, "Random rays");
+    app.add_option("--blocks", o.blocks,
+                   "Also trace the camera rays of blocks of pixels this wide, as many rows as "
+                   "fill a packet, every row, and their reflections");
     app.add_option(
         "--regroup", o.regroup,
         "Also trace second reflections, and each set regrouped this many rays at a time");
@@ -814,6 +852,13 @@ void runSize(int n, const Options& o, std::size_t& mismatch) {
     const RaySet camera = cameraRays(b, o.rowStep);
     const RaySet reflect = reflectRays(b, camera);
     std::vector<RaySet> sets = {camera, reflect, randomRays(o.random)};
+    if (o.blocks) {
+        const RaySet blocks = blockRays(b, o.blocks);
+        RaySet reflectBlocks = reflectRays(b, blocks);
+        reflectBlocks.name = "reflect, blocks";
+        sets.push_back(blocks);
+        sets.push_back(reflectBlocks);
+    }
     if (o.regroup) {
         RaySet reflect2 = reflectRays(b, reflect);
         reflect2.name = "reflect2";

@@ -132,8 +132,10 @@ inline OrderedRoots<T> orderedRoots(const typename Simd<T>::type& b,
 // `sphere` is spheres.leafSphere(k), from wherever it was read (the sphere
 // tree keeps copies in leaf order): the same values, so the same roots.
 template <typename T>
-inline PacketRoots<T> intersectPacket(const SphereSet<T>& spheres, const LeafSphere<T>& sphere,
-                                      const RayPacket<T>& r, unsigned lanes) {
+[[gnu::always_inline]] inline PacketRoots<T> intersectPacket(const SphereSet<T>& spheres,
+                                                             const LeafSphere<T>& sphere,
+                                                             const RayPacket<T>& r,
+                                                             unsigned lanes) {
     using V = typename Simd<T>::type;
     const int k = sphere.index;
     const T cx = sphere.centre.x, cy = sphere.centre.y, cz = sphere.centre.z;

@@ -319,26 +319,43 @@ class TileRenderer {
     __attribute__((noinline)) bool renderTile(const RenderPass& pass, const Tile& tile, Row& row,
                                               RayCounts& counts, TileErrorEstimate* estimate) {
         if (pass.kind == PassKind::Preview) return renderPreviewTile(tile, counts);
-        row.radiance.resize(tile.w);
+        row.radiance.resize(std::size_t(tile.w) * kRowsAtOnce);
         row.sums.resize(tile.w);
         const bool oneSample =
             pass.centres || (pass.firstSample == 0 && pass.lastSample == 1 && sums_.empty());
-        for (int y = tile.y; y < tile.y + tile.h; ++y) {
+        for (int y = tile.y; y < tile.y + tile.h;) {
             if (stopRequested()) return false;
-            prefetchForWriting(image_.pixel(tile.x, y), 3 * tile.w);
-            if (!options_.alsoAtDepths.empty()) {
-                renderRowAtDepths(pass, tile, y, row, counts);
-            } else if (oneSample) {
-                traceCameraRow(s_, y, tile.x, tile.w, pass.centres ? kPixelCentre : 0,
-                               row.radiance.data(), counts);
-                storeSamples(row.radiance.data(), tile.x, y, tile.w);
-            } else {
-                renderRow(pass, tile, y, row, counts, estimate);
+            if (oneSample && options_.alsoAtDepths.empty()) {
+                y += renderRowsOfOneSample(pass, tile, y, row, counts);
+                continue;
             }
+            prefetchForWriting(image_.pixel(tile.x, y), 3 * tile.w);
+            if (!options_.alsoAtDepths.empty())
+                renderRowAtDepths(pass, tile, y, row, counts);
+            else
+                renderRow(pass, tile, y, row, counts, estimate);
+            ++y;
         }
         if (pass.centres && estimate)
             *estimate = centreSampleEstimate(image_, {tile.x, tile.y, tile.w, tile.h});
         return true;
+    }
+
+    // The rows a one-sample pass traces together: its packets are blocks of
+    // pixels that tall (traceCameraRows()).
+    static constexpr int kRowsAtOnce = 4;
+
+    // Up to kRowsAtOnce rows of a one-sample pass from row y, stored as they
+    // come. Returns the rows done.
+    int renderRowsOfOneSample(const RenderPass& pass, const Tile& tile, int y, Row& row,
+                              RayCounts& counts) {
+        const int rows = std::min(kRowsAtOnce, tile.y + tile.h - y);
+        for (int r = 0; r < rows; ++r) prefetchForWriting(image_.pixel(tile.x, y + r), 3 * tile.w);
+        traceCameraRows(s_, y, rows, tile.x, tile.w, pass.centres ? kPixelCentre : 0,
+                        row.radiance.data(), counts);
+        for (int r = 0; r < rows; ++r)
+            storeSamples(row.radiance.data() + std::size_t(r) * tile.w, tile.x, y + r, tile.w);
+        return rows;
     }
 
     // A row of the pass's samples, and the same rays' radiance at each of

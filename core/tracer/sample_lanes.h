@@ -185,9 +185,10 @@ inline U sobolSecond(U index) {
     return x;
 }
 
-// PCG-style integer hash of the packed coordinates (both < 2^14 + 1).
-template <typename U>
-inline U pixelSeeds(const U& i, std::uint32_t j) {
+// PCG-style integer hash of the packed coordinates (both < 2^14 + 1); j is
+// one row for all lanes or a row a lane.
+template <typename U, typename J>
+inline U pixelSeeds(const U& i, const J& j) {
     U x = (j << 15) ^ i;
     x = x * 747796405u + 2891336453u;
     const U word = ((x >> ((x >> 28u) + 4u)) ^ x) * 277803737u;

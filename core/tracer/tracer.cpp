@@ -237,9 +237,15 @@ void traceCameraSamples(const PreparedScene<T>& s, const CameraSample<T>* sample
 }
 
 template <typename T>
+void traceCameraRows(const PreparedScene<T>& s, int y, int rows, int x0, int count, int n,
+                     Vec<T>* radiance, RayCounts& counts) {
+    activeKernel().entryPoints<T>().traceCameraRows(s, y, rows, x0, count, n, radiance, counts);
+}
+
+template <typename T>
 void traceCameraRow(const PreparedScene<T>& s, int y, int x0, int count, int n, Vec<T>* radiance,
                     RayCounts& counts) {
-    activeKernel().entryPoints<T>().traceCameraRow(s, y, x0, count, n, radiance, counts);
+    traceCameraRows(s, y, 1, x0, count, n, radiance, counts);
 }
 
 template <typename T>
@@ -277,6 +283,8 @@ CameraSample<T> pixelSample(const PreparedScene<T>& s, int i, int j, int n) {
     template PreparedScene<T> prepareScene<T>(const Scene&, BvhCache*);                           \
     template std::optional<Hit<T>> closestHit<T>(const PreparedScene<T>&, const Ray<T>&, T);      \
     template Vec<T> traceRay<T>(const PreparedScene<T>&, const Ray<T>&, int, RayCounts&);         \
+    template void traceCameraRows<T>(const PreparedScene<T>&, int, int, int, int, int, Vec<T>*,   \
+                                     RayCounts&);                                                 \
     template void traceCameraRow<T>(const PreparedScene<T>&, int, int, int, int, Vec<T>*,         \
                                     RayCounts&);                                                  \
     template void traceCameraBlock<T>(const PreparedScene<T>&, int, int, int, int, int, Vec<T>*,  \

@@ -161,8 +161,17 @@ template <typename T>
 void traceCameraSamples(const PreparedScene<T>& s, const CameraSample<T>* samples, int count,
                         Vec<T>* radiance, RayCounts& counts);
 
-// Sample n of the pixels (x0 .. x0+count-1, y): the same results as
-// traceCameraSamples() with pixelSample() for each, without building the list.
+// Sample n of the pixels (x0 .. x0+count-1, y .. y+rows-1): the same results
+// as traceCameraSamples() with pixelSample() for each, without building the
+// list. radiance holds rows * count values, row by row. A packet holds a
+// block of pixels several rows tall: on a field of balls a few pixels across,
+// the rays of a row's pixels parted at every leaf, and a square of them parts
+// less (docs/design/acceleration.md, "Packets of pixels").
+template <typename T>
+void traceCameraRows(const PreparedScene<T>& s, int y, int rows, int x0, int count, int n,
+                     Vec<T>* radiance, RayCounts& counts);
+
+// traceCameraRows() of one row.
 template <typename T>
 void traceCameraRow(const PreparedScene<T>& s, int y, int x0, int count, int n, Vec<T>* radiance,
                     RayCounts& counts);

@@ -15,8 +15,8 @@ struct KernelEntryPoints {
     Vec<T> (*traceRay)(const PreparedScene<T>&, const Ray<T>&, int depth, RayCounts&);
     void (*traceCameraSamples)(const PreparedScene<T>&, const CameraSample<T>*, int count,
                                Vec<T>* radiance, RayCounts&);
-    void (*traceCameraRow)(const PreparedScene<T>&, int y, int x0, int count, int n,
-                           Vec<T>* radiance, RayCounts&);
+    void (*traceCameraRows)(const PreparedScene<T>&, int y, int rows, int x0, int count, int n,
+                            Vec<T>* radiance, RayCounts&);
     void (*traceCameraRowAtDepths)(const PreparedScene<T>&, int y, int x0, int count, int n,
                                    Vec<T>* radiance, const int* depths, int depthCount,
                                    Vec<T>* atDepths, RayCounts&);

@@ -128,9 +128,10 @@ namespace whitted {
 namespace {
 
 // The renderer's row path (traceCameraRow, its samples made for the packet's
-// pixels at once) and the list path (traceCameraSamples with pixelSample, one
-// pixel at a time) agree bit for bit: one sample, Kensler's pattern of many,
-// and the open-ended sequence adaptive renders use.
+// pixels at once), its path of several rows (traceCameraRows, a packet a
+// block of pixels several rows tall) and the list path (traceCameraSamples
+// with pixelSample, one pixel at a time) agree bit for bit: one sample,
+// Kensler's pattern of many, and the open-ended sequence adaptive renders use.
 template <typename T>
 void checkRowMatchesList(int samplesPerPixel, bool openEnded = false) {
     Scene scene;
@@ -154,6 +155,28 @@ void checkRowMatchesList(int samplesPerPixel, bool openEnded = false) {
             traceCameraSamples(s, samples.data(), int(samples.size()), list.data(), b);
             for (int x = 0; x < scene.render.width; ++x)
                 ASSERT_EQ(row[x], list[x]) << "pixel " << x << "," << y << " sample " << n;
+            EXPECT_EQ(a.total(), b.total());
+        }
+    // Blocks as tall as the packets have rows and shorter ones (5 rows from
+    // the top, 3 from the second row), 37 pixels wide, 3 from the 34th.
+    const int width = scene.render.width;
+    struct Rows {
+        int y, rows, x0, count;
+    };
+    for (const Rows& r : {Rows{0, 5, 0, width}, Rows{1, 3, 0, width}, Rows{2, 2, 34, 3}})
+        for (int n = 0; n < samplesPerPixel; ++n) {
+            std::vector<Vec<T>> block(std::size_t(r.rows) * r.count);
+            RayCounts a, b;
+            traceCameraRows(s, r.y, r.rows, r.x0, r.count, n, block.data(), a);
+            for (int j = 0; j < r.rows; ++j)
+                for (int i = 0; i < r.count; ++i) {
+                    const CameraSample<T> sample = pixelSample(s, r.x0 + i, r.y + j, n);
+                    Vec<T> alone;
+                    traceCameraSamples(s, &sample, 1, &alone, b);
+                    ASSERT_EQ(block[std::size_t(j) * r.count + i], alone)
+                        << "pixel " << r.x0 + i << "," << r.y + j << " sample " << n << " of rows "
+                        << r.y << " to " << r.y + r.rows - 1;
+                }
             EXPECT_EQ(a.total(), b.total());
         }
 }

@@ -49,6 +49,17 @@ void useEveryCore() {
     (void)pooled;
 }
 
+// The R, G and B channels of `window`, interleaved at `values` row by row.
+Imf::FrameBuffer rgbFrame(const float* values, const Imath::Box2i& window) {
+    const std::size_t pixel = 3 * sizeof(float);
+    const std::size_t row = pixel * std::size_t(window.max.x - window.min.x + 1);
+    Imf::FrameBuffer frame;
+    const char* names[] = {"R", "G", "B"};
+    for (int c = 0; c < 3; ++c)
+        frame.insert(names[c], Imf::Slice::Make(Imf::FLOAT, values + c, window, pixel, row));
+    return frame;
+}
+
 Imf::Header headerOf(const CodecPicture& picture) {
     const Imath::Box2i display({0, 0}, {picture.fullWidth - 1, picture.fullHeight - 1});
     const Imath::Box2i data({picture.x, picture.y},
@@ -104,13 +115,7 @@ std::optional<CodecPicture> decodeExr(const std::string& fileName) {
         p.fullWidth = display.max.x - display.min.x + 1;
         p.fullHeight = display.max.y - display.min.y + 1;
         p.values.resize(std::size_t(p.width) * p.height * 3);
-        Imf::FrameBuffer frame;
-        const std::size_t pixel = 3 * sizeof(float), row = pixel * p.width;
-        const char* names[] = {"R", "G", "B"};
-        for (int c = 0; c < 3; ++c)
-            frame.insert(names[c],
-                         Imf::Slice::Make(Imf::FLOAT, p.values.data() + c, data, pixel, row));
-        file.setFrameBuffer(frame);
+        file.setFrameBuffer(rgbFrame(p.values.data(), data));
         file.readPixels(data.min.y, data.max.y);
         for (auto it = header.begin(); it != header.end(); ++it)
             if (auto a = attributeOf(it.attribute()))
@@ -127,16 +132,10 @@ std::string encodeExr(const CodecPicture& picture, const float* values,
     if (picture.eightBit || picture.channels != 3) return "OpenEXR is written from RGB floats";
     try {
         const Imf::Header header = headerOf(picture);
-        Imf::FrameBuffer frame;
-        const std::size_t pixel = 3 * sizeof(float), row = pixel * picture.width;
-        const char* names[] = {"R", "G", "B"};
-        for (int c = 0; c < 3; ++c)
-            frame.insert(names[c],
-                         Imf::Slice::Make(Imf::FLOAT, values + c, header.dataWindow(), pixel, row));
         MemoryStream stream(encoded);
         useEveryCore();
         Imf::OutputFile file(stream, header);
-        file.setFrameBuffer(frame);
+        file.setFrameBuffer(rgbFrame(values, header.dataWindow()));
         file.writePixels(picture.height);
     } catch (const std::exception& e) {
         return e.what();

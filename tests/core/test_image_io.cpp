@@ -296,6 +296,15 @@ TEST(ImageIo, ReadMissingOrNonImageFile_ThrowsImageIoError) {
     EXPECT_THROW(readImage(dir / "text.png"), ImageIoError);
 }
 
+// `values` (floats, spec.nchannels a pixel) written to `file` by OpenImageIO
+// in the format spec asks for, as another program would write it.
+bool writtenByOpenImageIO(const std::string& file, const OIIO::ImageSpec& spec,
+                          const std::vector<float>& values) {
+    auto out = OIIO::ImageOutput::create(file);
+    return out && out->open(file, spec) && out->write_image(OIIO::TypeDesc::FLOAT, values.data()) &&
+           out->close();
+}
+
 // An OpenEXR file as another program writes it: half floats, an alpha
 // channel, its pixels a window of a display window that does not start at 0.
 // Read without the plug-in (decodeExr()), it gives the same as OpenImageIO.
@@ -313,10 +322,7 @@ TEST(ImageIo, ExrOfHalfRgbaInAWindow_ReadsAsOpenImageIOReadsIt) {
     spec.attribute("whitted:max_depth", 7);
     std::vector<float> rgba(5 * 3 * 4);
     for (size_t k = 0; k < rgba.size(); ++k) rgba[k] = 0.1f * float(k) + 0.013f;
-    auto out = OIIO::ImageOutput::create(file.string());
-    ASSERT_TRUE(out && out->open(file.string(), spec));
-    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, rgba.data()));
-    ASSERT_TRUE(out->close());
+    ASSERT_TRUE(writtenByOpenImageIO(file.string(), spec, rgba)) << OIIO::geterror();
 
     const std::optional<CodecPicture> mine = decodeExr(file.string());
     ASSERT_TRUE(mine);
@@ -355,11 +361,8 @@ TEST(ImageIo, ExrThatIsNotOne_IsRefusedNamingTheFile) {
     OIIO::ImageSpec grey(4, 4, 1, OIIO::TypeDesc::FLOAT);
     grey.channelnames = {"Y"};
     const std::string greyFile = (dir / "grey.exr").string();
-    auto out = OIIO::ImageOutput::create(greyFile);
-    const std::vector<float> values(16, 0.5f);
-    ASSERT_TRUE(out && out->open(greyFile, grey));
-    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, values.data()));
-    ASSERT_TRUE(out->close());
+    ASSERT_TRUE(writtenByOpenImageIO(greyFile, grey, std::vector<float>(16, 0.5f)))
+        << OIIO::geterror();
     EXPECT_FALSE(decodeExr(greyFile));
     EXPECT_THROW(readImage(greyFile), ImageIoError);  // the plug-in's: fewer than 3 channels
 }

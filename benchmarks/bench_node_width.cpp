@@ -5,7 +5,7 @@
 //
 //   build/bin/bench_node_width [--sizes N,N,...] [--width W] [--height H]
 //                              [--row-step S] [--random M] [--reps R] [--no-counts]
-//                              [--layout NAME] [--blocks W] [--regroup B]
+//                              [--layout NAME] [--blocks W] [--regroup B] [--known-hits]
 //
 // Defaults: N = 1000,100000,1000000 balls of app/field/sphere_field.h (the
 // scene of `whitted-field N` and bench_scaling), 1280x720, every row, 200,000
@@ -27,6 +27,12 @@
 //             each run of B rays in their order sorted (regroup()) before
 //             they are packed: what regrouping bounces into coherent packets
 //             would buy the traversal, the sort itself not timed.
+//
+// With --known-hits, each set also gets a row counted with every ray's nearest
+// hit known before the walk starts ("2 (ours), hit known"; not timed): the
+// nodes and spheres any walk of this tree must visit, since a box nearer than
+// the hit may hold a nearer one. Its gap to the "2 (ours)" row is all that a
+// better order of visiting the children could save.
 //
 // Trees:
 //  * "2 (ours)": the renderer's own bvhClosestHits() (bvh_traverse.h) on its
@@ -173,6 +179,7 @@ struct Counts {
     std::uint64_t nodes = 0;    // inner nodes entered: their children's boxes are tested
     std::uint64_t boxes = 0;    // box tests (a packet's: one, for all its lanes)
     std::uint64_t spheres = 0;  // leaf sphere tests (a packet's: one); the floor not included
+    bool hitKnown = false;      // set by the caller: "2 (ours)" counts a walk told its hits first
 };
 
 template <bool kCount>
@@ -192,6 +199,13 @@ void binaryCounted(const SphereSet<float>& spheres, const SphereBvh<float>& bvh,
                    V& tBest, V& kBest, Counts* c) {
     const PacketSlabs<float> slabs = packetSlabs(r, treeReach(bvh));
     if (!bvhClosestStart(spheres, bvh, r, slabs, tBest, kBest)) return;
+    if (c->hitKnown) {  // an uncounted walk first: tBest is then each lane's hit
+        const auto leaf = [&](const BvhNode& node, unsigned in) {
+            testLeaf<false>(spheres, bvh, node.first, node.count, r, in, tBest, kBest, c);
+            return ~0u;
+        };
+        traverseBvh(spheres, bvh, slabs, tBest, r.active, leaf);
+    }
     ++c->boxes;
     const auto leaf = [&](const BvhNode& node, unsigned in) {
         testLeaf<true>(spheres, bvh, node.first, node.count, r, in, tBest, kBest, c);
@@ -723,6 +737,7 @@ struct Options {
     int blocks = 0;           // the width of the camera's blocks of pixels; 0: no such sets
     std::size_t regroup = 0;  // rays regrouped together; 0: no regrouped sets
     bool counts = true;
+    bool knownHits = false;  // also count walks told each ray's hit first
     std::string layout = "field";
 };
 
@@ -743,6 +758,8 @@ Options parseOptions(int argc, char** argv) {
         "Also trace second reflections, and each set regrouped this many rays at a time");
     app.add_option("--reps", o.reps, "Repetitions")->check(CLI::PositiveNumber);
     app.add_flag("!--no-counts", o.counts, "Skip the counting traversals");
+    app.add_flag("--known-hits", o.knownHits,
+                 "Also count the walks of ours told each ray's nearest hit first");
     app.add_option("--layout", o.layout, "Field layout (whitted-field --layout)")
         ->check(CLI::IsMember(fieldLayoutNames()));
     try {
@@ -824,6 +841,15 @@ void printSet(const Bench& b, const RaySet& set, const Options& o, int n, std::s
                         modeName(kModes[m]), kTreeNames[w], set.rays, rays / seconds[m][w] / 1e6,
                         seconds[m][0] / seconds[m][w],
                         o.counts ? perRay(c, rays).c_str() : "- | - | -");
+            if (w == 0 && o.knownHits) {
+                Counts known;
+                known.hitKnown = true;
+                Result out;
+                runWidth<true>(kOurs, b, set, kModes[m], out, &known);
+                mismatch += mismatches(out, ref);
+                std::printf("| %d | %s | %s | 2 (ours), hit known | %zu | - | - | %s |\n", n,
+                            set.name, modeName(kModes[m]), set.rays, perRay(known, rays).c_str());
+            }
             std::fflush(stdout);
         }
 }

@@ -37,6 +37,9 @@ nlohmann::ordered_json renderStats(const RenderSettings& r, const RenderResult& 
     j["threads"] = result.threads;
     j["kernel"] = activeKernelName();
     j["seconds"] = result.seconds;
+    // Beside the wall time: on a shared machine the two part when other
+    // programs take the cores, and the CPU time is what the tracing cost.
+    j["cpu_seconds"] = result.tilesCpuSeconds;
     j["rays"] = {{"camera", rays.camera},
                  {"shadow", rays.shadow},
                  {"reflection", rays.reflection},

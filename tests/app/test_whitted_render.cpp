@@ -80,6 +80,10 @@ TEST(WhittedRender, Stats_HaveEverySpecKeyAndConsistentRayCounts) {
     EXPECT_EQ(j["threads"], 2);
     EXPECT_GE(j["seconds"].get<double>(), 0.0);
     EXPECT_GE(j["mrays_per_second"].get<double>(), 0.0);
+    // The two threads' time on the CPU: some, and no more than they had.
+    const double cpu = j["cpu_seconds"].get<double>();
+    EXPECT_GT(cpu, 0.0);
+    EXPECT_LE(cpu, 2 * j["seconds"].get<double>() + 1e-3);
     const auto& rays = j["rays"];
     const auto camera = rays["camera"].get<std::uint64_t>();
     EXPECT_EQ(camera, 40u * 30u * 3u);

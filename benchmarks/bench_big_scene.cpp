@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <vector>
 
 #include "big_scene.h"
@@ -54,7 +55,8 @@ int main(int argc, char** argv) {
     QElapsedTimer first;
     double preview = -1, fullPass = -1, opened = -1;
     double previewRender = 0;  // the last preview frame's RenderFrame::seconds, in ms
-    int completeFrames = 0, previewFrames = 0;
+    int previewFrames = 0;
+    bool rendering = true;  // the last frame shown was not a render's last
     QObject::connect(&window, &whitted::ui::MainWindow::frameShown,
                      [&](const whitted::ui::RenderFrame& f) {
                          const double ms = double(first.nsecsElapsed()) / 1e6;
@@ -63,7 +65,7 @@ int main(int argc, char** argv) {
                          // The file's, not the scene the window opened with.
                          if (!f.preview && f.passComplete && fullPass < 0 && opened >= 0)
                              fullPass = ms;
-                         completeFrames += f.renderComplete;
+                         rendering = !f.renderComplete;
                          previewFrames += f.preview;
                      });
     t.restart();
@@ -88,6 +90,20 @@ int main(int argc, char** argv) {
         QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
     std::printf("the file's first full picture: %.0f ms from the start of opening\n", fullPass);
 
+    // Runs the event loop until `done`; a frame that never comes ends the
+    // benchmark with an error rather than with figures of nothing.
+    auto waitFor = [](const char* what, auto done) {
+        QElapsedTimer waited;
+        waited.start();
+        while (!done()) {
+            if (waited.elapsed() > 20000) {
+                std::fprintf(stderr, "bench_big_scene: no %s within 20 s\n", what);
+                std::exit(1);
+            }
+            QCoreApplication::processEvents(QEventLoop::AllEvents, 1);
+        }
+    };
+
     // An edit as the user makes one, once the last render is complete: from
     // the edit to its first preview frame on screen. Moving one sphere, as the
     // sphere page does (SceneDocument::editItem), and as a whole-scene edit().
@@ -95,14 +111,11 @@ int main(int argc, char** argv) {
     auto editToPreview = [&](const char* what, auto move) {
         std::vector<double> ms, render;
         for (int i = 0; i < 12; ++i) {
-            const int complete = completeFrames;
-            while (completeFrames == complete && spell.elapsed() < 120000)
-                QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+            waitFor("complete picture", [&] { return !rendering; });
             const int previews = previewFrames;
             t.restart();
             move(i % 2 ? 0.1 : -0.1);
-            while (previewFrames == previews && spell.elapsed() < 120000)
-                QCoreApplication::processEvents(QEventLoop::AllEvents, 1);
+            waitFor("preview after an edit", [&] { return previewFrames > previews; });
             ms.push_back(double(t.nsecsElapsed()) / 1e6);
             render.push_back(previewRender);
         }

@@ -64,7 +64,10 @@ double firstPreviewMs(MainWindow& window, const QElapsedTimer& since, double* re
         });
     QTimer::singleShot(10000, &loop, &QEventLoop::quit);
     if (ms < 0) loop.exec();
-    if (ms < 0) std::fprintf(stderr, "no preview in 10 s\n");
+    if (ms < 0) {  // figures without the frame would measure nothing
+        std::fprintf(stderr, "bench_editor_gestures: no preview in 10 s\n");
+        std::exit(1);
+    }
     QObject::disconnect(connection);
     return ms;
 }
@@ -72,7 +75,10 @@ double firstPreviewMs(MainWindow& window, const QElapsedTimer& since, double* re
 struct Window {
     explicit Window(const Scene& scene) {
         window.show();
-        if (!QTest::qWaitForWindowExposed(&window)) std::fprintf(stderr, "window not shown\n");
+        if (!QTest::qWaitForWindowExposed(&window)) {
+            std::fprintf(stderr, "bench_editor_gestures: window not shown\n");
+            std::exit(1);
+        }
         window.document()->reset(scene, QString());
         QTest::qWait(300);  // the first render and the tree built
     }

@@ -104,7 +104,11 @@ int main(int argc, char** argv) {
     const QMetaObject::Connection start = QObject::connect(
         &window, &MainWindow::frameShown, &window,
         [&](const RenderFrame& f) { startRendered = startRendered || f.renderComplete; });
-    waitFor([&] { return startRendered && window.renderRecord()->probePrediction(); });
+    if (!waitFor([&] { return startRendered && window.renderRecord()->probePrediction(); })) {
+        std::fprintf(stderr,
+                     "bench_editor_prediction: the first render or prediction never came\n");
+        return 1;
+    }
     QObject::disconnect(start);
     std::printf(
         "%dx%d, depth 5, float; the view's render (in passes, as the status bar times "

@@ -8,7 +8,7 @@ mispredicted branches (callgrind's simple predictor) per ray.
 
   valgrind --tool=callgrind --instr-atstart=no --collect-atstart=no \\
       --cache-sim=yes --branch-sim=yes --LL=8388608,16,64 --callgrind-out-file=cg.out \\
-      build/bin/bench_node_width --sizes N ... > bench.txt
+      build/bin/bench_node_width --sizes N ... > bench.txt     # one size a run
   benchmarks/node_width_callgrind.py bench.txt cg.out
 """
 import glob
@@ -47,7 +47,13 @@ def dumps(out_base):
 def main():
     bench_txt, out_base = sys.argv[1], sys.argv[2]
     rays = rays_per_set(bench_txt)
-    n = int(re.search(r"--sizes (\d+)", open(out_base + ".1").read()).group(1))
+    # The dumps are named by set, mode and tree, not size: a run of one size only.
+    command = open(out_base + ".1").read()
+    sizes = re.findall(r"\d+", re.search(r"--sizes ([\d, ]+)", command).group(1))
+    if len(sizes) != 1:
+        sys.exit(f"node_width_callgrind.py: the run has --sizes {','.join(sizes)}; "
+                 "its dumps do not say which size each is of, so give bench_node_width one size")
+    n = int(sizes[0])
     print("| N | set | mode | tree | instructions/ray | D1 misses/ray | LL misses/ray |"
           " mispredicted branches/ray |")
     print("|---|---|---|---|---|---|---|---|")

@@ -1,9 +1,9 @@
 // Timing a render to a target against a fixed render, in pairs:
 // shared by bench_quality and bench_quality_fields.
 // Times of a few milliseconds say little alone on a shared machine: where ours
-// and the fixed render together take under a second, they are run again in
-// pairs, one after the other, and the medians are kept with the median of the
-// pairs' ratios.
+// and the fixed render together take under half a second, they are run again
+// in pairs, one after the other, as many as fill about a second, and the
+// medians are kept with the median of the pairs' ratios.
 #pragma once
 
 #include <algorithm>

@@ -380,33 +380,6 @@ auto blockPlacer(const PreparedScene<T>& s, int y, int x0, int n0, int samples) 
     };
 }
 
-// Where the centres of the pixels x0, x0+1, ... of row y lie: place(first,
-// m, px, py) fills the lanes of pixels first .. first+m-1 (counted from x0).
-template <typename T>
-auto centrePlacer(int y, int x0) {
-    using V = typename Simd<T>::type;
-    return [y, x0](int first, int, V& px, V& py) {
-        V laneIndex{};
-        for (int l = 0; l < RayPacket<T>::kWidth; ++l) laneIndex[l] = T(l);  // a constant
-        px = (laneIndex + T(x0 + first)) + T(0.5);
-        py = V{} + (T(y) + T(0.5));
-    };
-}
-
-// Calls use(place) with the placer of sample n of the pixels x0, x0+1, ...
-// of row y, as pixelSample() gives it: the centres at one sample a pixel,
-// else blockPlacer()'s. A choice of two calls rather than one placer holding
-// the other: copying that closure on every row, in 16-byte loads from the
-// stores just made, stalled each row until the image's stores had drained
-// (a sixth of a seed render's time, in perf's samples).
-template <typename T, typename Use>
-void withRowPlacer(const PreparedScene<T>& s, int y, int x0, int n, Use use) {
-    if (s.samplesPerPixel == 1 || n == kPixelCentre)
-        use(centrePlacer<T>(y, x0));
-    else
-        use(blockPlacer(s, y, x0, n, 1));
-}
-
 // The rows of pixels a camera packet spans: about as many as its columns.
 template <typename T>
 constexpr int kPacketRows = RayPacket<T>::kWidth >= 16  ? 4
@@ -431,14 +404,11 @@ struct BlockLanes {
     }
 };
 
-// One packet, a block of pixels from (x, y) (BlockLanes), sample n of each as
-// pixelSample() gives it (the centre at one sample a pixel), its radiance
-// stored row by row into `radiance` (`stride` a row).
+// Where sample n of each pixel of a block from (x, y) lies (BlockLanes), as
+// pixelSample() gives it: the centre at one sample a pixel.
 template <typename T>
-void traceBlockOfPixels(const PreparedScene<T>& s, const BlockLanes<T>& b, int x, int y, int n,
-                        Vec<T>* radiance, int stride, RayCounts& counts) {
-    using V = typename Simd<T>::type;
-    V px{}, py{};
+void blockSamplePositions(const PreparedScene<T>& s, const BlockLanes<T>& b, int x, int y, int n,
+                          typename Simd<T>::type& px, typename Simd<T>::type& py) {
     if (s.samplesPerPixel == 1 || n == kPixelCentre) {
         px = (b.x + T(x)) + T(0.5);  // exact integers, then the centre: as pixelSample()
         py = (b.y + T(y)) + T(0.5);
@@ -451,6 +421,16 @@ void traceBlockOfPixels(const PreparedScene<T>& s, const BlockLanes<T>& b, int x
             py[l] = T(row[l]) + T(offset.v[l]);
         }
     }
+}
+
+// One packet, a block of pixels from (x, y) (BlockLanes), sample n of each
+// (blockSamplePositions()), its radiance stored row by row into `radiance`
+// (`stride` a row).
+template <typename T>
+void traceBlockOfPixels(const PreparedScene<T>& s, const BlockLanes<T>& b, int x, int y, int n,
+                        Vec<T>* radiance, int stride, RayCounts& counts) {
+    typename Simd<T>::type px{}, py{};
+    blockSamplePositions(s, b, x, y, n, px, py);
     Vec3x<T> out;
     traceCameraPacket(s, px, py, b.across * b.tall, out, counts);
     for (int r = 0, l = 0; r < b.tall; ++r, radiance += stride)
@@ -486,7 +466,8 @@ void kernelCameraBlock(const PreparedScene<T>& s, int y, int x0, int pixels, int
     traceCameraPackets(s, pixels * samples, radiance, counts, blockPlacer(s, y, x0, n0, samples));
 }
 
-// kernelCameraRow(), each packet's levels kept and summed up to each of the
+// Sample n of the pixels x0 .. x0+count-1 of row y, a packet a run of pixels
+// along the row, each packet's levels kept and summed up to each of the
 // shallower depths (ascending, none past the scene's max depth).
 template <typename T>
 void kernelCameraRowAtDepths(const PreparedScene<T>& s, int y, int x0, int count, int n,
@@ -494,26 +475,25 @@ void kernelCameraRowAtDepths(const PreparedScene<T>& s, int y, int x0, int count
                              RayCounts& counts) {
     constexpr int W = RayPacket<T>::kWidth;
     using V = typename Simd<T>::type;
-    withRowPlacer(s, y, x0, n, [&](const auto& place) {
-        std::array<Vec3x<T>, kMaxDepth + 1> levels;
-        for (int first = 0; first < count; first += W) {
-            const int m = std::min(W, count - first);
-            V px{}, py{};
-            place(first, m, px, py);
-            std::fill_n(levels.begin(), s.maxDepth + 1, Vec3x<T>::broadcast(Vec<T>(T(0))));
-            Vec3x<T> out;
-            traceCameraPacket(s, px, py, m, out, counts, levels.data());
-            for (int l = 0; l < m; ++l) {
-                radiance[first + l] = out.lane(l);
-                Vec<T> sum(T(0));
-                int level = 0;
-                for (int j = 0; j < depthCount; ++j) {
-                    for (; level <= depths[j]; ++level) sum += levels[level].lane(l);
-                    atDepths[std::size_t(first + l) * depthCount + j] = sum;
-                }
+    const BlockLanes<T> run(W, 1);
+    std::array<Vec3x<T>, kMaxDepth + 1> levels;
+    for (int first = 0; first < count; first += W) {
+        const int m = std::min(W, count - first);
+        V px{}, py{};
+        blockSamplePositions(s, m == W ? run : BlockLanes<T>(m, 1), x0 + first, y, n, px, py);
+        std::fill_n(levels.begin(), s.maxDepth + 1, Vec3x<T>::broadcast(Vec<T>(T(0))));
+        Vec3x<T> out;
+        traceCameraPacket(s, px, py, m, out, counts, levels.data());
+        for (int l = 0; l < m; ++l) {
+            radiance[first + l] = out.lane(l);
+            Vec<T> sum(T(0));
+            int level = 0;
+            for (int j = 0; j < depthCount; ++j) {
+                for (; level <= depths[j]; ++level) sum += levels[level].lane(l);
+                atDepths[std::size_t(first + l) * depthCount + j] = sum;
             }
         }
-    });
+    }
 }
 
 }  // namespace

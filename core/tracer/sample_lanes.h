@@ -1,7 +1,8 @@
 // The sub-pixel samples of sampling.h, for one pixel or a packet's pixels at
 // once. Each hash is written once for a lane type U: std::uint32_t (one pixel)
-// or a GCC vector of them (kernelCameraRow's packet). A lane's values are the
-// same whatever U is, bit for bit; a vector only computes several at once.
+// or a GCC vector of them (a camera packet's, kernelCameraRows()). A lane's
+// values are the same whatever U is, bit for bit; a vector only computes
+// several at once.
 // Made one pixel at a time, with a hardware division in each of Kensler's
 // permutations, the positions took nearly a third of the CPU time of renders
 // of 8 and 32 samples a pixel (bench_editor_prediction; docs/design/performance.md).

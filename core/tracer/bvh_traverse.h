@@ -32,6 +32,7 @@
 #include "tracer/bvh_slabs.h"
 #include "tracer/isa_namespace.h"
 #include "tracer/leaf_one_ray.h"
+#include "tracer/light_buffer.h"
 #include "tracer/ray_packet.h"
 #include "tracer/simd.h"
 #include "tracer/sphere_set.h"
@@ -306,11 +307,88 @@ inline void sortIndices(std::int32_t* first, std::int32_t* last) {
     }
 }
 
-// packetTransmittance() through the tree.
+// The index of the cell of `buffer` that a shadow ray with direction d (towards
+// the light) falls in; -1 where no sphere of the buffer's lies that way.
+template <typename T>
+inline int lightBufferCell(const LightBuffer& buffer, T dx, T dy, T dz) {
+    // Seen from the light the ray's direction is -d.
+    const double x = -double(dx), y = -double(dy), z = -double(dz);
+    const double ax = std::fabs(x), ay = std::fabs(y), az = std::fabs(z);
+    int axis;
+    double m, u, v;
+    if (ax >= ay && ax >= az) {
+        axis = 0, m = x, u = y, v = z;
+    } else if (ay >= az) {
+        axis = 1, m = y, u = z, v = x;
+    } else {
+        axis = 2, m = z, u = x, v = y;
+    }
+    const LightBufferFace& face = buffer.faces[2 * axis + (m < 0)];
+    const double across = std::fabs(m);
+    const double i = std::floor((u / across - face.u0) * face.cellsPerU);
+    const double j = std::floor((v / across - face.v0) * face.cellsPerV);
+    if (!(i >= 0 && i < face.nu && j >= 0 && j < face.nv)) return -1;
+    return face.firstCell + int(j) * face.nu + int(i);
+}
+
+// The lanes of `lanes` whose shadow rays the light's buffer answers, their
+// cells' spheres tested into `found` by shadowUpdate()'s rules (a lane's own
+// sphere, when it goes into it, left out: counted before): every lane but
+// those whose cell lists too many spheres for the tree to be spared. Lanes
+// that share a cell test its spheres together, a vector operation a sphere;
+// a lane alone tests a vector's worth of them at once.
+template <typename T>
+inline unsigned bufferTransmittance(const SphereSet<T>& spheres, const std::vector<T>& transparency,
+                                    const LightBuffer& buffer, const RayPacket<T>& r,
+                                    const typename Simd<T>::type& distance, unsigned lanes,
+                                    unsigned goingIn, Occluders<T>& found) {
+    int cellOf[RayPacket<T>::kWidth];
+    for (unsigned open = lanes; open; open &= open - 1) {
+        const int lane = __builtin_ctz(open);
+        cellOf[lane] = lightBufferCell(buffer, r.dx[lane], r.dy[lane], r.dz[lane]);
+    }
+    unsigned answered = 0;
+    for (unsigned rest = lanes; rest;) {
+        const int c = cellOf[__builtin_ctz(rest)];
+        unsigned group = 0;
+        for (unsigned bits = rest; bits; bits &= bits - 1)
+            if (cellOf[__builtin_ctz(bits)] == c) group |= 1u << __builtin_ctz(bits);
+        rest &= ~group;
+        const LightBufferCell cell = c < 0 ? LightBufferCell{} : buffer.cells[std::size_t(c)];
+        if (cell.count == LightBufferCell::kThroughTree) continue;
+        answered |= group;
+        const int end = int(cell.first + cell.count);
+        if (!(group & (group - 1))) {
+            const int lane = __builtin_ctz(group);
+            for (int i = int(cell.first); i < end && !(found.opaque & group);
+                 i += RayPacket<T>::kWidth) {
+                const int n = end - i < RayPacket<T>::kWidth ? end - i : RayPacket<T>::kWidth;
+                shadowUpdateOneRay(spheres, transparency,
+                                   sphereLanesOf(spheres, &buffer.spheres[i], n), r, lane,
+                                   distance[lane], found);
+            }
+            continue;
+        }
+        for (int i = int(cell.first); i < end; ++i) {
+            const unsigned in = group & ~found.opaque;
+            if (!in) break;
+            const std::int32_t k = buffer.spheres[std::size_t(i)];
+            const unsigned test = goingIn ? in & ~lanesInto(r, k, goingIn) : in;
+            if (test)
+                shadowUpdate(spheres, transparency, spheres.leafSphere(k), r, distance, test,
+                             found);
+        }
+    }
+    return answered;
+}
+
+// packetTransmittance() through the tree, or the light's buffer where it has
+// one; `loneLeaves` counts the walk's leaf visits by a lane alone.
 template <typename T>
 __attribute__((noinline)) typename Simd<T>::type bvhTransmittance(
     const SphereSet<T>& spheres, const std::vector<T>& transparency, const SphereBvh<T>& bvh,
-    const RayPacket<T>& r, const typename Simd<T>::type& distance, unsigned lanes) {
+    const RayPacket<T>& r, const typename Simd<T>::type& distance, unsigned lanes,
+    const LightBuffer* buffer = nullptr, std::uint64_t* loneLeaves = nullptr) {
     using V = typename Simd<T>::type;
     const PacketSlabs<T> slabs = packetSlabs(r, treeReach(bvh));
     if ((laneBits(slabs.reach < kBvhOriginReach<T>) & lanes) != lanes)
@@ -328,8 +406,10 @@ __attribute__((noinline)) typename Simd<T>::type bvhTransmittance(
         if (const unsigned open = lanes & ~found.opaque)
             shadowUpdate(spheres, transparency, spheres.leafSphere(k), r, distance,
                          goingIn ? open & ~lanesInto(r, k, goingIn) : open, found);
+    std::uint64_t lone = 0;
     auto leaf = [&](const BvhNode& node, unsigned in) {
         if (!(in & (in - 1)) && node.count > 1) {
+            ++lone;
             const int lane = __builtin_ctz(in);
             const int end = node.first + node.count;
             for (int i = node.first; i < end && !(found.opaque & in); i += RayPacket<T>::kWidth) {
@@ -348,9 +428,12 @@ __attribute__((noinline)) typename Simd<T>::type bvhTransmittance(
         }
         return ~found.opaque;
     };
-    if (!bvh.nodes.empty() && (lanes & ~found.opaque)) {
-        traverseBvh(spheres, bvh, slabs, distance, lanes & ~found.opaque, leaf);
-    }
+    unsigned viaTree = lanes & ~found.opaque;
+    if (buffer)
+        viaTree &= ~bufferTransmittance(spheres, transparency, *buffer, r, distance, viaTree,
+                                        goingIn, found);
+    if (!bvh.nodes.empty() && viaTree) traverseBvh(spheres, bvh, slabs, distance, viaTree, leaf);
+    if (loneLeaves) *loneLeaves += lone;
     V s = V{} + T(1);
     for (unsigned open = lanes & ~found.opaque & ~found.overflow; open; open &= open - 1) {
         const int l = __builtin_ctz(open);
@@ -386,13 +469,13 @@ inline void sceneClosestHits(const SphereSet<T>& spheres, const SphereBvh<T>* bv
 }
 
 template <typename T>
-inline typename Simd<T>::type sceneTransmittance(const SphereSet<T>& spheres,
-                                                 const std::vector<T>& transparency,
-                                                 const SphereBvh<T>* bvh, const RayPacket<T>& r,
-                                                 const typename Simd<T>::type& distance,
-                                                 unsigned lanes,
-                                                 const ShadowCone<T>* cones = nullptr) {
-    return bvh ? bvhTransmittance(spheres, transparency, *bvh, r, distance, lanes)
+inline typename Simd<T>::type sceneTransmittance(
+    const SphereSet<T>& spheres, const std::vector<T>& transparency, const SphereBvh<T>* bvh,
+    const RayPacket<T>& r, const typename Simd<T>::type& distance, unsigned lanes,
+    const ShadowCone<T>* cones = nullptr, const LightBuffer* buffer = nullptr,
+    std::uint64_t* loneLeaves = nullptr) {
+    return bvh ? bvhTransmittance(spheres, transparency, *bvh, r, distance, lanes, buffer,
+                                  loneLeaves)
                : packetTransmittance(spheres, transparency, r, distance, lanes, cones);
 }
 

@@ -50,6 +50,29 @@ inline SphereLanes<T> sphereLanes(const LeafSphere<T>* leaf, int count) {
     return s;
 }
 
+// The spheres indices[0, count) as sphereLanes() lays them out, for rays that
+// do not come from the camera (cameraC is left 0).
+template <typename T>
+inline SphereLanes<T> sphereLanesOf(const SphereSet<T>& spheres, const std::int32_t* indices,
+                                    int count) {
+    constexpr int kWidth = RayPacket<T>::kWidth;
+    alignas(kSimdBytes) T field[5][kWidth] = {};
+    for (int i = 0; i < count; ++i) {
+        const std::int32_t k = indices[i];
+        field[0][i] = spheres.centre[k].x;
+        field[1][i] = spheres.centre[k].y;
+        field[2][i] = spheres.centre[k].z;
+        field[3][i] = spheres.rrHi[k];
+        field[4][i] = T(k);
+    }
+    SphereLanes<T> s;
+    typename Simd<T>::type* out[5] = {&s.cx, &s.cy, &s.cz, &s.rrHi, &s.index};
+    for (int f = 0; f < 5; ++f) __builtin_memcpy(out[f], field[f], sizeof(s.cx));
+    s.cameraC = typename Simd<T>::type{};
+    s.count = count;
+    return s;
+}
+
 // intersectPacket() of lane `lane` of `r` against every sphere of `s`.
 template <typename T>
 struct OneRayRoots {

@@ -207,6 +207,19 @@ class TileRenderer {
         if (mse <= 0.0 || limits.allowedMse <= 0.0) return 2.0;
         return 1.0 + std::max(0.0, std::log2(mse / limits.allowedMse));
     }
+    // Slots for the lights' buffers (light_buffer.h) before the first pass
+    // with enough camera samples for them: not for a preview, nor for a small
+    // render of many spheres.
+    void addLightBufferSlotsIfTheyMayPay(const RenderPass& pass, const std::vector<int>& ids) {
+        if (lightBufferSlotsAdded_ || !s_.useBvh) return;
+        double samples = 0;
+        for (int id : ids) samples += double(tiles_[id].w) * tiles_[id].h;
+        samples *= pass.lastSample - pass.firstSample;
+        if (samples < kLightBufferRaysPerSphere * s_.spheres.count()) return;
+        addLightBufferSlots(s_);
+        lightBufferSlotsAdded_ = true;
+    }
+
     bool stopRequested() {
         if (stopped_.load(std::memory_order_relaxed)) return true;
         if (shouldStop_ && shouldStop_()) stopped_ = true;
@@ -215,6 +228,7 @@ class TileRenderer {
 
     // Renders the tiles `ids` (indices into tiles_) through one pass.
     void runPass(const RenderPass& pass, int index, int count, const std::vector<int>& ids) {
+        if (pass.kind == PassKind::Samples) addLightBufferSlotsIfTheyMayPay(pass, ids);
         std::atomic<size_t> next{0};
         const double workPerPixel = pass.kind == PassKind::Preview
                                         ? 1.0 / (double(block_) * block_)
@@ -437,7 +451,8 @@ class TileRenderer {
         return true;
     }
 
-    const PreparedScene<T> s_;
+    PreparedScene<T> s_;  // gets its lights' buffer slots before the first pass that may pay
+    bool lightBufferSlotsAdded_ = false;
     const RenderOptions& options_;
     const TileCallback& onTile_;
     const StopPredicate& shouldStop_;

@@ -200,7 +200,7 @@ PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache) {
     for (const Light& l : scene.lights) {
         const Vec3 c = l.color * l.intensity;
         if (c == Vec3(0.0)) continue;  // a dark light adds nothing: no shadow rays for it
-        s.lights.push_back({Vec<T>(l.position - s.frameOrigin), boundedInput<T>(c), {}});
+        s.lights.push_back({Vec<T>(l.position - s.frameOrigin), boundedInput<T>(c), {}, {}});
     }
     const std::size_t count = scene.spheres.size();
     const bool useBvh = bvhChosen(static_cast<int>(count));
@@ -217,6 +217,31 @@ PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache) {
             light.cones = shadowCones(light.position, s.spheres);
     }
     return s;
+}
+
+template <typename T>
+void addLightBufferSlots(PreparedScene<T>& s) {
+    if (!s.useBvh) return;
+    for (PreparedLight<T>& light : s.lights)
+        if (!light.buffer) light.buffer = std::make_shared<LightBufferSlot>();
+}
+
+template <typename T>
+void addLightBuffers(PreparedScene<T>& s, int threads) {
+    addLightBufferSlots(s);
+    for (PreparedLight<T>& light : s.lights)
+        if (light.buffer && light.buffer->claim())
+            light.buffer->publish(lightBuffer(light.position, s.spheres, s.bvh->direct, threads));
+}
+
+template <typename T>
+void considerLightBuffer(const PreparedScene<T>& s, const PreparedLight<T>& light,
+                         const RayCounts& counts) {
+    if (counts.shadow < kLightBufferProbe) return;
+    LightBufferSlot& slot = *light.buffer;
+    if (!slot.claim()) return;
+    if (double(counts.shadowLoneLeaves) < kLoneLeavesPerShadowRay * double(counts.shadow)) return;
+    slot.publish(lightBuffer(light.position, s.spheres, s.bvh->direct, 1));
 }
 
 // Every entry point runs in the kernel chosen at start (kernel_dispatch.h).
@@ -281,6 +306,10 @@ CameraSample<T> pixelSample(const PreparedScene<T>& s, int i, int j, int n) {
 
 #define WHITTED_INSTANTIATE(T)                                                                    \
     template PreparedScene<T> prepareScene<T>(const Scene&, BvhCache*);                           \
+    template void addLightBufferSlots<T>(PreparedScene<T>&);                                      \
+    template void addLightBuffers<T>(PreparedScene<T>&, int);                                     \
+    template void considerLightBuffer<T>(const PreparedScene<T>&, const PreparedLight<T>&,        \
+                                         const RayCounts&);                                       \
     template std::optional<Hit<T>> closestHit<T>(const PreparedScene<T>&, const Ray<T>&, T);      \
     template Vec<T> traceRay<T>(const PreparedScene<T>&, const Ray<T>&, int, RayCounts&);         \
     template void traceCameraRows<T>(const PreparedScene<T>&, int, int, int, int, int, Vec<T>*,   \

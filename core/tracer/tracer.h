@@ -14,12 +14,14 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "scene/scene.h"
 #include "tracer/bvh.h"
 #include "tracer/camera.h"
+#include "tracer/light_buffer.h"
 #include "tracer/sampling.h"
 #include "tracer/screen_boxes.h"
 #include "tracer/shadow_cones.h"
@@ -34,12 +36,16 @@ struct RayCounts {
     std::uint64_t shadow = 0;
     std::uint64_t reflection = 0;
     std::uint64_t refraction = 0;
+    // Not rays: the shadow walks' visits to a leaf by one lane alone, which
+    // tell how scattered the shadow rays are (kLoneLeavesPerShadowRay).
+    std::uint64_t shadowLoneLeaves = 0;
     std::uint64_t total() const { return camera + shadow + reflection + refraction; }
     RayCounts& operator+=(const RayCounts& o) {
         camera += o.camera;
         shadow += o.shadow;
         reflection += o.reflection;
         refraction += o.refraction;
+        shadowLoneLeaves += o.shadowLoneLeaves;
         return *this;
     }
 };
@@ -78,6 +84,9 @@ struct PreparedLight {
     // Without the tree, each sphere's cone from this light: a shadow ray is
     // tested against the spheres whose cone holds its direction.
     std::vector<ShadowCone<T>> cones;
+    // With the tree, in a pass that may pay for it, where this light's buffer
+    // goes once made (addLightBufferSlots()); null otherwise.
+    std::shared_ptr<LightBufferSlot> buffer;
 };
 
 // Positions in a prepared scene are relative to frameOrigin (world = frameOrigin +
@@ -131,6 +140,25 @@ bool bvhChosen(int spheres);
 // come from scene.render. Builds the sphere BVH when bvhChosen() says so.
 template <typename T>
 PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache = nullptr);
+
+// Gives each light of a scene prepared with the tree a slot for its buffer
+// (light_buffer.h), which the render's threads fill when their shadow rays
+// show it pays (considerLightBuffer()). The images stay the same to the bit:
+// a buffer only spares shadow rays the walk.
+template <typename T>
+void addLightBufferSlots(PreparedScene<T>& s);
+
+// Makes each light's buffer now, on up to `threads` threads (0: all cores),
+// where one can be made: for tests and benchmarks.
+template <typename T>
+void addLightBuffers(PreparedScene<T>& s, int threads = 0);
+
+// Called by a render thread after a shadow packet of `light` while its slot
+// is unclaimed: makes the buffer, on this thread, once `counts` (the
+// thread's own) show that the shadow rays are scattered enough.
+template <typename T>
+void considerLightBuffer(const PreparedScene<T>& s, const PreparedLight<T>& light,
+                         const RayCounts& counts);
 
 template <typename T>
 struct Hit {

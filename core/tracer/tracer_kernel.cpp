@@ -92,9 +92,12 @@ void addDirectLight(const PreparedScene<T>& s, const LaneMaterials<T>& g, const 
         // The shadow ray goes into the sphere when it leaves p against the outward normal.
         const RayPacket<T> shadow =
             RayPacket<T>::of(p, l, kHit, dot(l, sp.outward) < T(0), litLanes);
-        const V sj = sceneTransmittance(s.spheres, s.transparency, s.useBvh ? s.bvh.get() : nullptr,
-                                        shadow, distance, litLanes,
-                                        light.cones.empty() ? nullptr : light.cones.data());
+        const LightBuffer* buffer = light.buffer ? light.buffer->ready() : nullptr;
+        const V sj = sceneTransmittance(
+            s.spheres, s.transparency, s.useBvh ? s.bvh.get() : nullptr, shadow, distance, litLanes,
+            light.cones.empty() ? nullptr : light.cones.data(), buffer, &counts.shadowLoneLeaves);
+        if (light.buffer && !buffer && !light.buffer->claimed())
+            considerLightBuffer(s, light, counts);
         const auto shaded = lit & (sj != T(0));
         if (!laneBits(shaded)) continue;
         Vec3x<T> term = kd * nl;

@@ -5,7 +5,7 @@
 // build time, render time and Mrays/s for each; not a test.
 //   build/bin/bench_scaling [--sizes N,N,...] [--width W] [--height H]
 //                           [--max-brute N] [--no-double] [--bvh] [--csv FILE]
-//                           [--images DIR] [--layouts NAME,NAME,...]
+//                           [--images DIR] [--layouts NAME,NAME,...] [--embree-only]
 //   build/bin/bench_scaling WIDTH HEIGHT [MAX_BRUTE_N [N,N,...]]   (older form)
 // Defaults: 1280x720, N = 4,100,1000,10000,100000,1000000, brute force only up
 // to 10000 spheres (100k takes minutes). 1 spp, depth 5, 2 threads. Build
@@ -19,6 +19,8 @@
 // render and Embree's as DIR/field-N-ours.png and DIR/field-N-embree.png, to
 // look at what the PSNR column summarises. --layouts times other fields than
 // the one the tracer was tuned on (app/field/field_layouts.h; default "field").
+// --embree-only leaves our renders out (their columns -1), for a profile of
+// Embree's render alone; whitted-render on the same scene file profiles ours.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -58,6 +60,7 @@ struct Options {
     std::string csv;
     std::string images;
     std::vector<std::string> layouts = {"field"};
+    bool embreeOnly = false;
 };
 
 Options parseOptions(int argc, char** argv) {
@@ -72,6 +75,8 @@ Options parseOptions(int argc, char** argv) {
     app.add_flag("--bvh", bvh, "Ours always with the BVH, not its own choice");
     app.add_option("--csv", o.csv, "Write the table as CSV");
     app.add_option("--images", o.images, "Write our render and Embree's into this folder");
+    app.add_flag("--embree-only", o.embreeOnly,
+                 "Render with Embree alone (to profile it: whitted-render profiles ours)");
     app.add_option("--layouts", o.layouts, "Field layouts, e.g. field,clustered")
         ->delimiter(',')
         ->check(CLI::IsMember(fieldLayoutNames()));
@@ -163,7 +168,7 @@ Peer embreeRun([[maybe_unused]] const Scene& scene, [[maybe_unused]] const Image
     peer.buildMediumMs = e.buildMediumMs;
     peer.run.ms = e.renderMs;
     peer.run.mrays = double(e.rays.total()) / e.renderMs / 1e3;
-    peer.psnr = measureError(e.image, ours).psnrSrgb8;
+    if (!ours.rgb.empty()) peer.psnr = measureError(e.image, ours).psnrSrgb8;
     peer.image = std::move(e.image);
 #endif
     return peer;
@@ -207,8 +212,8 @@ void printRow(const Row& r) {
         cell(r.embree.buildHighMs, "%.2f", e).c_str(),
         cell(r.embree.buildMediumMs, "%.2f", e).c_str(), cell(r.embree.run.ms, "%.1f", e).c_str(),
         cell(r.embree.run.mrays, "%.2f", e).c_str(),
-        cell(r.ours.ms / r.embree.run.ms, "%.2f", e).c_str(),
-        cell(r.embree.psnr, "%.1f", e).c_str());
+        cell(r.ours.ms / r.embree.run.ms, "%.2f", e && r.ours.ms >= 0).c_str(),
+        cell(r.embree.psnr, "%.1f", e && r.ours.ms >= 0).c_str());
     std::fflush(stdout);
 }
 
@@ -217,8 +222,8 @@ void writeCsv(std::FILE* f, const Row& r) {
                  r.layout.c_str(), r.n, r.tree.buildMs, r.tree.bytesPerSphere, r.ours.ms,
                  r.ours.mrays, r.doubles.ms, r.brute.ms, r.embree.buildHighMs,
                  r.embree.buildMediumMs, r.embree.run.ms, r.embree.run.mrays,
-                 r.embree.run.ms >= 0 ? r.ours.ms / r.embree.run.ms : -1.0, r.embree.psnr,
-                 r.tree.doubleBytesPerSphere, r.kept.ms);
+                 r.embree.run.ms >= 0 && r.ours.ms >= 0 ? r.ours.ms / r.embree.run.ms : -1.0,
+                 r.ours.ms >= 0 ? r.embree.psnr : -1.0, r.tree.doubleBytesPerSphere, r.kept.ms);
     std::fflush(f);
 }
 
@@ -233,6 +238,10 @@ void saveImages(const std::string& dir, const Scene& scene, const Row& row) {
 Row measureRow(const Options& o, const std::string& layout, const Scene& scene) {
     const int n = int(scene.spheres.size()) - 1;  // the floor is not counted
     Row row{layout, n, measureTree(scene), {}, {}, {}, {}, {}};
+    if (o.embreeOnly) {
+        row.embree = embreeRun(scene, Image());
+        return row;
+    }
     row.ours = renderWith(scene, o.ours, Precision::Float);
     BvhCache cache;
     renderWith(scene, o.ours, Precision::Float, &cache);

@@ -40,6 +40,8 @@ nlohmann::ordered_json renderStats(const RenderSettings& r, const RenderResult& 
     // Beside the wall time: on a shared machine the two part when other
     // programs take the cores, and the CPU time is what the tracing cost.
     j["cpu_seconds"] = result.tilesCpuSeconds;
+    // How many lights' shadow rays went by a light buffer (light_buffer.h).
+    j["light_buffers"] = result.lightBuffers;
     j["rays"] = {{"camera", rays.camera},
                  {"shadow", rays.shadow},
                  {"reflection", rays.reflection},

@@ -49,6 +49,8 @@ class TileRenderer {
         result.tilesCpuSeconds = tilesCpuSeconds_;
         result.image = std::move(image_);
         result.atDepths = std::move(atDepths_);
+        for (const PreparedLight<T>& light : s_.lights)
+            result.lightBuffers += light.buffer && light.buffer->ready();
         return result;
     }
 
@@ -211,7 +213,7 @@ class TileRenderer {
     // with enough camera samples for them: not for a preview, nor for a small
     // render of many spheres.
     void addLightBufferSlotsIfTheyMayPay(const RenderPass& pass, const std::vector<int>& ids) {
-        if (lightBufferSlotsAdded_ || !s_.useBvh) return;
+        if (lightBufferSlotsAdded_ || !s_.useBvh || !options_.lightBuffers) return;
         double samples = 0;
         for (int id : ids) samples += double(tiles_[id].w) * tiles_[id].h;
         samples *= pass.lastSample - pass.firstSample;

@@ -40,6 +40,10 @@ struct RenderOptions {
     // Trees kept from the previous render, refit when only spheres moved
     // (bvh.h). The editor's render worker keeps one; one render at a time.
     BvhCache* bvhCache = nullptr;
+    // Whether a render thread may make a light's buffer when its shadow rays
+    // show that it pays (light_buffer.h). The image is the same either way:
+    // off, for benchmarks and tests that compare.
+    bool lightBuffers = true;
     // Only the pixels of these rectangles, which may not overlap, in one pass
     // of all their samples (no preview): each pixel's samples depend on the
     // pixel alone, so a region equals that part of the whole render, bit for
@@ -165,6 +169,7 @@ struct RenderResult {
     PixelLargest pixelLargest;
     // A render with RenderOptions::whitted1980: how deep each pixel was cut.
     SubdivisionLevels subdivision;
+    int lightBuffers = 0;  // lights whose buffer a render thread made
 };
 
 // Renders the scene with its render settings. Throws std::invalid_argument for a

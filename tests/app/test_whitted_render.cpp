@@ -84,6 +84,7 @@ TEST(WhittedRender, Stats_HaveEverySpecKeyAndConsistentRayCounts) {
     const double cpu = j["cpu_seconds"].get<double>();
     EXPECT_GT(cpu, 0.0);
     EXPECT_LE(cpu, 2 * j["seconds"].get<double>() + 1e-3);
+    EXPECT_EQ(j["light_buffers"], 0);  // the seed's four balls have no tree to spare
     const auto& rays = j["rays"];
     const auto camera = rays["camera"].get<std::uint64_t>();
     EXPECT_EQ(camera, 40u * 30u * 3u);

@@ -857,5 +857,30 @@ TEST(BvhPackets, SameHitsAndTransmittanceAsBruteForce) {
     }
 }
 
+// With the camera among 10,000 balls the shadow rays scatter, and one of the
+// two render threads makes the light's buffer (light_buffer.h) while the
+// other goes on without it; the picture is the one rendered without buffers,
+// bit for bit. On the field, whose shadow packets keep together, neither
+// thread makes one.
+TEST(RendererLightBuffer, MadeMidRenderWhereShadowRaysScatter_ChangesNoPixel) {
+    for (const char* layout : {"inside", "field"}) {
+        SCOPED_TRACE(layout);
+        const Scene scene = sphereField(*fieldLayout(layout, 10000), 320, 240);
+        RenderOptions with = oneShotOptions();
+        with.threads = 2;
+        RenderOptions without = with;
+        without.lightBuffers = false;
+        const RenderResult a = render(scene, with);
+        const RenderResult b = render(scene, without);
+        EXPECT_EQ(a.lightBuffers, std::string(layout) == "inside" ? 1 : 0);
+        EXPECT_EQ(b.lightBuffers, 0);
+        EXPECT_EQ(a.rays.total(), b.rays.total());
+        ASSERT_EQ(a.image.rgb.size(), b.image.rgb.size());
+        EXPECT_EQ(std::memcmp(a.image.rgb.data(), b.image.rgb.data(),
+                              a.image.rgb.size() * sizeof(a.image.rgb[0])),
+                  0);
+    }
+}
+
 }  // namespace
 }  // namespace whitted

@@ -31,8 +31,8 @@ constexpr double kSinFaceReach = 0.816496580927726, kCosFaceReach = 0.5773502691
 // or four on the inside field; one or two per sphere ran no faster). The most
 // spheres a cell lists before its rays go through the tree instead: four
 // vectors' worth with AVX-512 (clustered ran 0.96 of the time with 64 as with
-// 32, the others the same). And the most cells the rectangles may cover, on
-// average a sphere, before the buffer is not made (huge spheres near the light).
+// 32, the others the same). And the most cells the rectangles may cover, 16 a
+// sphere on average, before the buffer is not made (huge spheres near the light).
 constexpr double kCellsPerSphere = 0.5;
 constexpr std::uint32_t kMostSpheresInCell = 64;
 constexpr double kMostCellsPerSphere = 16.0;
@@ -219,12 +219,6 @@ void fillCells(const std::vector<Placed>& sorted, int cells, LightBuffer& buffer
         });
 }
 
-std::vector<int> chunkOrder(std::size_t chunks) {
-    std::vector<int> order(chunks);
-    for (std::size_t c = 0; c < chunks; ++c) order[c] = int(c);
-    return order;
-}
-
 // The footprints of the tree's spheres, a chunk of spheres at a time, and the
 // extent they cover on each face; nothing when a cone is too wide.
 template <typename T>
@@ -259,12 +253,16 @@ std::optional<std::vector<Placed>> placedInCellOrder(
     int spheres, int threads) {
     std::vector<std::vector<Placed>> chunks(prints.size());
     std::vector<long long> covered(prints.size(), 0);
-    parallelFor(chunkOrder(prints.size()), threads, [&](int c) {
-        for (const Footprint& p : prints[std::size_t(c)]) {
-            chunks[std::size_t(c)].push_back(placed(p, faces[p.face]));
-            covered[std::size_t(c)] += chunks[std::size_t(c)].back().cells();
-        }
-    });
+    // A task for each chunk of footprints.
+    forEachChunk(
+        int(prints.size()), threads,
+        [&](int c, int, int) {
+            for (const Footprint& p : prints[std::size_t(c)]) {
+                chunks[std::size_t(c)].push_back(placed(p, faces[p.face]));
+                covered[std::size_t(c)] += chunks[std::size_t(c)].back().cells();
+            }
+        },
+        1);
     long long allCovered = 0;
     for (const long long n : covered) allCovered += n;
     if (double(allCovered) > kMostCellsPerSphere * spheres) return std::nullopt;

@@ -53,7 +53,7 @@ struct LightBufferCell {
 struct LightBuffer {
     LightBufferFace faces[6];  // +x, -x, +y, -y, +z, -z
     std::vector<LightBufferCell> cells;
-    std::vector<std::int32_t> spheres;  // each cell's, in index order
+    std::vector<std::int32_t> spheres;  // each cell's, the same for any number of threads
 };
 
 // Where a light's buffer is put once made, for the render's threads to find.

@@ -4,6 +4,8 @@
 // that the result is the same for any number of threads.
 #pragma once
 
+#include <sched.h>
+
 #include <algorithm>
 #include <atomic>
 #include <numeric>
@@ -13,12 +15,19 @@
 namespace whitted {
 
 // The number of threads for `requested` (0: all cores), as render() and the
-// passes over every sphere use it.
+// passes over every sphere use it. All the cores this process may run on: a
+// Slurm task or `taskset` confines it to some of the machine's, and
+// std::thread::hardware_concurrency() counts them all, so a task given two
+// cores of a 64-core node would start 64 threads.
 inline int resolveThreadCount(int requested) {
     if (requested > 0) return requested;
-    // Asked once: libstdc++ reads /sys for it, and planning a render asks for
-    // each of its small probes.
-    static const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+    // Asked once: planning a render asks for each of its small probes.
+    static const int cores = [] {
+        cpu_set_t allowed;
+        if (sched_getaffinity(0, sizeof allowed, &allowed) == 0)
+            return std::max(1, CPU_COUNT(&allowed));
+        return int(std::max(1u, std::thread::hardware_concurrency()));
+    }();
     return cores;
 }
 

@@ -14,7 +14,8 @@
 #include <algorithm>
 #include <cstring>
 #include <exception>
-#include <thread>
+
+#include "base/parallel_for.h"
 
 namespace whitted {
 namespace {
@@ -38,12 +39,11 @@ class MemoryStream : public Imf::OStream {
 };
 
 // (De)compression is most of the writing and reading, and OpenEXR's pool of
-// threads for it is empty until it is given a size: one thread for each core,
-// as OpenImageIO gave it.
+// threads for it is empty until it is given a size: one thread for each core
+// this process may run on, as OpenImageIO gave it one for each core.
 void useEveryCore() {
     static const bool pooled = [] {
-        Imf::setGlobalThreadCount(
-            static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+        Imf::setGlobalThreadCount(resolveThreadCount(0));
         return true;
     }();
     (void)pooled;

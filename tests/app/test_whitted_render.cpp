@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -93,6 +94,27 @@ TEST(WhittedRender, Stats_HaveEverySpecKeyAndConsistentRayCounts) {
                                                       rays["refraction"].get<std::uint64_t>());
     EXPECT_GT(rays["shadow"].get<std::uint64_t>(), 0u);
     EXPECT_GT(rays["reflection"].get<std::uint64_t>(), 0u);
+}
+
+// Confined to one core, as a Slurm task or `taskset` confines it, "all
+// cores" is that one core: the render runs one thread, where unconfined it
+// runs several (one for each core of the machine, up to one a tile).
+TEST(WhittedRender, ConfinedToOneCore_RendersOnOneThreadByDefault) {
+    TempDir dir;
+    const fs::path out = dir / "o.exr", stats = dir / "stats.json";
+    const std::vector<std::string> args = {
+        test::kSeedScenePath, "-o", out.string(), "--width",     "64",
+        "--height",           "64", "--stats",    stats.string()};
+    const auto threadsUsed = [&](const ProgramRun& r) {
+        EXPECT_EQ(r.exitCode, 0) << describe(r);
+        return nlohmann::json::parse(test::readFile(stats))["threads"].get<int>();
+    };
+    std::vector<std::string> confined = {"-c", "0", WHITTED_RENDER_EXE};
+    confined.insert(confined.end(), args.begin(), args.end());
+    EXPECT_EQ(threadsUsed(test::runProgram("taskset", confined)), 1);
+    if (std::thread::hardware_concurrency() > 1) {
+        EXPECT_GT(threadsUsed(runRender(args)), 1);
+    }
 }
 
 TEST(WhittedRender, Flags_OverrideSceneSettings) {

@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/core_support.h"
 #include "tracer/bvh_traverse.h"
 #include "tracer/kernel_dispatch.h"
 #include "tracer/light_buffer.h"
@@ -76,18 +77,7 @@ int checkBuffersChangeNoPixel(const Scene& scene, unsigned seed) {
     addLightBuffers(buffered, 1);
     int made = 0;
     for (const PreparedLight<T>& light : buffered.lights) made += light.buffer->ready() != nullptr;
-    const int w = scene.render.width;
-    for (int y = 0; y < scene.render.height; ++y)
-        for (int n = 0; n < scene.render.samplesPerPixel; ++n) {
-            std::vector<Vec<T>> withBuffers(w), throughTree(w);
-            RayCounts a, b;
-            traceCameraRow(buffered, y, 0, w, n, withBuffers.data(), a);
-            traceCameraRow(walked, y, 0, w, n, throughTree.data(), b);
-            for (int x = 0; x < w; ++x)
-                EXPECT_EQ(withBuffers[x], throughTree[x])
-                    << "seed " << seed << " pixel " << x << "," << y << " sample " << n;
-            EXPECT_EQ(a.total(), b.total()) << "seed " << seed << " row " << y;
-        }
+    test::expectSameRows(buffered, walked, scene, "seed " + std::to_string(seed));
     return made;
 }
 

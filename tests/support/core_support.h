@@ -1,13 +1,15 @@
 // Helpers over the core's types, one copy for the core, app and GUI tests: the
 // seed scene loaded (at a size) or saved for a test to open, scenes built a
 // line at a time, a material preset by name, and images rendered in one pass
-// and compared bit for bit.
+// and compared bit for bit, and rows traced from two preparations of a scene
+// compared likewise.
 #pragma once
 
 #include <cmath>
 #include <cstring>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -17,6 +19,7 @@
 #include "scene/scene_io.h"
 #include "support/test_support.h"
 #include "tracer/renderer.h"
+#include "tracer/tracer.h"
 
 namespace whitted::test {
 
@@ -148,6 +151,28 @@ inline std::string firstDifference(const Image& a, const Image& b) {
                    std::to_string(b.rgb[k]);
         }
     return "";
+}
+
+// ---- rows traced ---------------------------------------------------------------
+
+// Every row of every sample of `scene`, traced from two preparations of it
+// (one with a shortcut, one without): equal bit for bit, pixel by pixel, with
+// as many rays.
+template <typename T>
+void expectSameRows(const PreparedScene<T>& a, const PreparedScene<T>& b, const Scene& scene,
+                    const std::string& what) {
+    const int w = scene.render.width;
+    for (int y = 0; y < scene.render.height; ++y)
+        for (int n = 0; n < scene.render.samplesPerPixel; ++n) {
+            std::vector<Vec<T>> rowA(w), rowB(w);
+            RayCounts countsA, countsB;
+            traceCameraRow(a, y, 0, w, n, rowA.data(), countsA);
+            traceCameraRow(b, y, 0, w, n, rowB.data(), countsB);
+            for (int x = 0; x < w; ++x)
+                EXPECT_EQ(rowA[x], rowB[x])
+                    << what << " pixel " << x << "," << y << " sample " << n;
+            EXPECT_EQ(countsA.total(), countsB.total()) << what << " row " << y;
+        }
 }
 
 }  // namespace whitted::test

@@ -209,17 +209,15 @@ class TileRenderer {
         if (mse <= 0.0 || limits.allowedMse <= 0.0) return 2.0;
         return 1.0 + std::max(0.0, std::log2(mse / limits.allowedMse));
     }
-    // Slots for the lights' buffers (light_buffer.h) before the first pass
-    // with enough camera samples for them: not for a preview, nor for a small
-    // render of many spheres.
+    // Slots for the lights' buffers (light_buffer.h) from the first pass with
+    // enough camera samples for them: not for a preview, nor for a small render
+    // of many spheres. A light that has its slot keeps it.
     void addLightBufferSlotsIfTheyMayPay(const RenderPass& pass, const std::vector<int>& ids) {
-        if (lightBufferSlotsAdded_ || !s_.useBvh || !options_.lightBuffers) return;
+        if (!s_.useBvh || !options_.lightBuffers) return;
         double samples = 0;
         for (int id : ids) samples += double(tiles_[id].w) * tiles_[id].h;
         samples *= pass.lastSample - pass.firstSample;
-        if (samples < kLightBufferRaysPerSphere * s_.spheres.count()) return;
-        addLightBufferSlots(s_);
-        lightBufferSlotsAdded_ = true;
+        if (samples >= kLightBufferRaysPerSphere * s_.spheres.count()) addLightBufferSlots(s_);
     }
 
     bool stopRequested() {
@@ -454,7 +452,6 @@ class TileRenderer {
     }
 
     PreparedScene<T> s_;  // gets its lights' buffer slots before the first pass that may pay
-    bool lightBufferSlotsAdded_ = false;
     const RenderOptions& options_;
     const TileCallback& onTile_;
     const StopPredicate& shouldStop_;

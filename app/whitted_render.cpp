@@ -383,7 +383,8 @@ int main(int argc, char** argv) {
                    "Output image: .png .jpg .tif .exr or .hdr; a turntable's frames get "
                    "numbers before the extension (out.0001.png)");
     addRenderFlags(app, o.render);
-    app.add_option("--threads", o.threads, "Worker threads (default: all cores)")
+    app.add_option("--threads", o.threads,
+                   "Threads preparing the scene and rendering it (default: all cores)")
         ->check(CLI::Range(1, 1024));
     app.add_option("--stats", o.stats, "Write render statistics as JSON to this file");
     app.add_flag("--quiet", o.quiet, "Print nothing but errors");

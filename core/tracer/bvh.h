@@ -131,16 +131,17 @@ int lazyJobCount(const SphereBvh<T>& bvh);
 // over the nodes instead of a build. The same spheres must be given (same
 // count, and the direct ones still there). Returns false, and leaves `bvh`
 // as it was, when a sphere of the tree now lies beyond what a tree in T can
-// bound, or when `bvh` was built lazily: build anew then.
+// bound, or when `bvh` was built lazily: build anew then. On up to `threads`
+// threads (0: every core).
 template <typename T>
 bool refitSphereBvh(SphereBvh<T>& bvh, std::span<const glm::dvec3> centres,
-                    std::span<const double> radii);
+                    std::span<const double> radii, int threads = 0);
 
 // The tree's SAH cost, not divided by the root's area (a sphere grown huge
 // also grows the root): the nodes' half areas, a leaf's times its spheres.
 // Compared between refits of one tree: how far they have worn it.
 template <typename T>
-double sahCost(const SphereBvh<T>& bvh);
+double sahCost(const SphereBvh<T>& bvh, int threads = 0);
 
 // The trees a renderer built last, one per precision, so that the next render
 // of an edited scene refits instead of building (the editor's render worker
@@ -182,11 +183,12 @@ struct BvhCache {
 // refit when it holds as many spheres and the refit does not wear it out; else
 // built (and kept there). Without a cache, built lazily (BvhBuildOptions::lazy).
 // Its leafSpheres are `spheres`' values, which must be the same spheres as
-// centres and radii (taken in the frame at `frameOrigin`).
+// centres and radii (taken in the frame at `frameOrigin`). On up to `threads`
+// threads (0: every core).
 template <typename T>
 std::shared_ptr<const SphereBvh<T>> sphereBvhFor(std::span<const glm::dvec3> centres,
                                                  std::span<const double> radii,
                                                  const SphereSet<T>& spheres, BvhCache* cache,
-                                                 const glm::dvec3& frameOrigin);
+                                                 const glm::dvec3& frameOrigin, int threads = 0);
 
 }  // namespace whitted

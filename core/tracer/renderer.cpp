@@ -56,7 +56,7 @@ class TileRenderer {
 
   private:
     static PreparedScene<T> prepared(const Scene& scene, const RenderOptions& options) {
-        PreparedScene<T> s = prepareScene<T>(scene, options.bvhCache);
+        PreparedScene<T> s = prepareScene<T>(scene, options.bvhCache, options.threads);
         s.pruneBelow = T(options.pruneBelowWeight);
         if (options.adaptive) {
             s.samplesPerPixel = std::max(1, options.adaptive->maxSamples);
@@ -483,7 +483,7 @@ RenderResult renderWith(const Scene& scene, const RenderOptions& options,
         if (options.onPrepared) options.onPrepared();
         return renderer.run();
     }
-    PreparedScene<T> s = prepareScene<T>(scene, options.bvhCache);
+    PreparedScene<T> s = prepareScene<T>(scene, options.bvhCache, options.threads);
     s.pruneBelow = T(options.pruneBelowWeight);
     if (options.onPrepared) options.onPrepared();
     return renderWhitted1980(s, settings, options, onTile, shouldStop);

@@ -26,7 +26,9 @@
 namespace whitted {
 
 struct RenderOptions {
-    int threads = 0;          // worker threads including the caller; 0: all cores
+    // Worker threads including the caller, which also prepare the scene and
+    // build its tree; 0: every core this process may run on.
+    int threads = 0;
     int tileSize = 32;        // tile edge in pixels (an adaptive render's: kAdaptiveTileEdge)
     bool progressive = true;  // false: a single pass of all samples, no preview
     // Pixels per preview block edge; 1 disables the preview. A block never

@@ -132,12 +132,12 @@ struct BvhInput {
 };
 
 // Every sphere into its own place in s.spheres, s.material and
-// s.transparency (and `bvh`, when sized), on all cores: a million spheres took
-// a second on one (docs/design/acceleration.md). Fewer than kSphereChunk stay on this
-// thread. Throws, in validateScene()'s words, for a sphere whose material is
-// missing (validated scenes never have one).
+// s.transparency (and `bvh`, when sized), on up to `threads` threads: a
+// million spheres took a second on one (docs/design/acceleration.md). Fewer
+// than kSphereChunk stay on this thread. Throws, in validateScene()'s words,
+// for a sphere whose material is missing (validated scenes never have one).
 template <typename T>
-void prepareSpheres(const Scene& scene, PreparedScene<T>& s, BvhInput& bvh) {
+void prepareSpheres(const Scene& scene, PreparedScene<T>& s, BvhInput& bvh, int threads) {
     const int count = static_cast<int>(scene.spheres.size());
     const bool forBvh = !bvh.centres.empty();
     s.spheres.resize(count);
@@ -145,7 +145,7 @@ void prepareSpheres(const Scene& scene, PreparedScene<T>& s, BvhInput& bvh) {
     s.transparency.resize(count);
     const auto materialIndex = materialIndices(scene);
     std::atomic<int> unknownMaterial{-1};
-    forEachChunk(count, resolveThreadCount(0), [&](int, int begin, int end) {
+    forEachChunk(count, threads, [&](int, int begin, int end) {
         // Neighbouring spheres mostly share a material: the name is hashed
         // only when it differs from the one before.
         const std::string* lastName = nullptr;
@@ -179,7 +179,7 @@ void prepareSpheres(const Scene& scene, PreparedScene<T>& s, BvhInput& bvh) {
 }
 
 template <typename T>
-PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache) {
+PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache, int threads) {
     PreparedScene<T> s;
     const RenderSettings& r = scene.render;
     // The frame is centred on the camera: what the picture needs is where things
@@ -207,9 +207,11 @@ PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache) {
     BvhInput bvh;
     bvh.centres.resize(useBvh ? count : 0);
     bvh.radii.resize(useBvh ? count : 0);
-    prepareSpheres(scene, s, bvh);
+    threads = resolveThreadCount(threads);
+    prepareSpheres(scene, s, bvh, threads);
     if (useBvh) {
-        s.bvh = sphereBvhFor<T>(bvh.centres, bvh.radii, s.spheres, bvhCache, s.frameOrigin);
+        s.bvh =
+            sphereBvhFor<T>(bvh.centres, bvh.radii, s.spheres, bvhCache, s.frameOrigin, threads);
         s.useBvh = true;
     } else {
         s.screenBoxes = sphereScreenBoxes(s.camera, s.spheres);
@@ -305,7 +307,7 @@ CameraSample<T> pixelSample(const PreparedScene<T>& s, int i, int j, int n) {
 }
 
 #define WHITTED_INSTANTIATE(T)                                                                    \
-    template PreparedScene<T> prepareScene<T>(const Scene&, BvhCache*);                           \
+    template PreparedScene<T> prepareScene<T>(const Scene&, BvhCache*, int);                      \
     template void addLightBufferSlots<T>(PreparedScene<T>&);                                      \
     template void addLightBuffers<T>(PreparedScene<T>&, int);                                     \
     template void considerLightBuffer<T>(const PreparedScene<T>&, const PreparedLight<T>&,        \

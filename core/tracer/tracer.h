@@ -137,9 +137,11 @@ void useAcceleration(Acceleration choice);
 bool bvhChosen(int spheres);
 
 // The scene must be valid (validateScene); width, height, depth and samples
-// come from scene.render. Builds the sphere BVH when bvhChosen() says so.
+// come from scene.render. Builds the sphere BVH when bvhChosen() says so, on
+// up to `threads` threads (0: every core this process may run on), so that a
+// render asked for one thread prepares on one too.
 template <typename T>
-PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache = nullptr);
+PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache = nullptr, int threads = 0);
 
 // Gives each light of a scene prepared with the tree a slot for its buffer
 // (light_buffer.h), which the render's threads fill when their shadow rays

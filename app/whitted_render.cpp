@@ -164,6 +164,10 @@ int renderFrame(Scene& scene, const Options& o, const std::optional<PixelRect>& 
     options.threads = o.threads;
     if (region) options.regions = {*region};
     if (plan) applyPlan(*plan, scene, options);
+    // The file's spheres, lights and materials were validated as it was
+    // read, and since then only the settings changed; if those break a rule,
+    // render() checks the whole scene and says which.
+    options.sceneValidated = !validateSettingsEdit(scene);
     options.whitted1980 = whitted1980Of(o);
     const RenderResult result =
         render(scene, options, [&](const TileUpdate& t) { bar.update(t.progress.fraction); });

@@ -274,4 +274,8 @@ std::optional<SceneProblem> validateMaterialEdit(const Scene& after, std::size_t
     return checkMaterial(after.materials[index], index);
 }
 
+std::optional<SceneProblem> validateSettingsEdit(const Scene& after) {
+    return checkSceneFields(after);
+}
+
 }  // namespace whitted

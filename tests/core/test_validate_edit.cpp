@@ -82,6 +82,36 @@ TEST(ValidateEdit, SameVerdictAndMessageAsTheWholeSceneCheck) {
     EXPECT_GT(refused, 300);
 }
 
+// whitted-render changes only the settings of a scene its loader validated
+// (flags, a quality plan's depth, a turntable's camera) and then checks them
+// alone: validateSettingsEdit() must say what validateScene() says.
+TEST(ValidateEdit, SettingsOnly_SameVerdictAndMessageAsTheWholeSceneCheck) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const std::vector<Change> settings = {
+        [](Scene& s, std::mt19937& r) { s.camera.up = r() % 2 ? Vec3(0.0) : Vec3(0, 1, 0.1); },
+        [](Scene& s, std::mt19937& r) { s.camera.position = r() % 2 ? s.camera.lookAt : Vec3(4); },
+        [=](Scene& s, std::mt19937& r) { s.camera.vfovDegrees = r() % 2 ? 180.0 : nan; },
+        [](Scene& s, std::mt19937& r) { s.render.width = r() % 2 ? 0 : 320; },
+        [](Scene& s, std::mt19937& r) { s.render.maxDepth = r() % 2 ? 65 : 3; },
+        [](Scene& s, std::mt19937& r) { s.render.samplesPerPixel = r() % 2 ? 0 : 16; },
+        [](Scene& s, std::mt19937& r) { s.ambient.x = r() % 2 ? -1.0 : 0.2; },
+        [](Scene& s, std::mt19937& r) { s.background.y = r() % 2 ? 2.0 : 0.5; },
+    };
+    std::mt19937 rng(14);
+    const Scene before = sceneWithBalls(300);
+    int refused = 0, accepted = 0;
+    for (int trial = 0; trial < 1000; ++trial) {
+        Scene after = before;
+        const int count = 1 + static_cast<int>(rng() % 3);
+        for (int k = 0; k < count; ++k) settings[rng() % settings.size()](after, rng);
+        const std::string full = describe(validateScene(after));
+        ASSERT_EQ(describe(validateSettingsEdit(after)), full) << "trial " << trial;
+        (full == "valid" ? accepted : refused)++;
+    }
+    EXPECT_GT(accepted, 100);
+    EXPECT_GT(refused, 100);
+}
+
 TEST(ValidateEdit, AnUnchangedSceneIsValid) {
     const Scene s = sceneWithBalls(10);
     EXPECT_FALSE(validateEdit(s, s));

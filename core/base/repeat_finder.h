@@ -16,7 +16,8 @@
 
 namespace whitted {
 
-// keyOf(i) is item i's key, a std::string_view that lives as long as the finder.
+// keyOf(i) is item i's key, for every i below `count`, a std::string_view
+// that lives as long as the finder.
 template <typename KeyOf>
 class RepeatFinder {
   public:

@@ -6,15 +6,20 @@
 // reads the text again with the full reader.
 #include "scene/scene_fast_read.h"
 
+#include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <initializer_list>
+#include <new>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <simdjson.h>
 
+#include "base/parallel_for.h"
 #include "scene/scene_io.h"
 #include "scene/scene_json.h"
 
@@ -215,6 +220,73 @@ bool readList(od::value v, std::vector<T>& out, bool (*readOne)(od::value, T&)) 
     return true;
 }
 
+// The spheres are read on every core, kSpheresPerPart to a task: parsing
+// their numbers was most of opening a million (docs/design/performance.md).
+constexpr std::size_t kSpheresPerPart = std::size_t(1) << 16;
+
+// The texts of the array's elements, kSpheresPerPart to a part, each part
+// from its first element's '{' to its last's '}', and how many elements
+// there are. Skipping an object parses none of its numbers.
+bool sphereParts(od::value v, std::vector<std::string_view>& parts, std::size_t& count) {
+    od::array array;
+    if (v.get_array().get(array)) return false;
+    const char* begin = nullptr;
+    const char* end = nullptr;
+    count = 0;
+    for (auto element : array) {
+        od::object object;
+        std::string_view text;
+        if (element.get_object().get(object) || object.raw_json().get(text)) return false;
+        if (!begin) begin = text.data();
+        end = text.data() + text.size();
+        if (++count % kSpheresPerPart == 0) {
+            parts.emplace_back(begin, std::size_t(end - begin));
+            begin = nullptr;
+        }
+    }
+    if (begin) parts.emplace_back(begin, std::size_t(end - begin));
+    return true;
+}
+
+// A part's `count` spheres into out[0, count), read as the array "[" + its
+// text + "]" with a parser of its own (simdjson reads a text from its start).
+bool readSpherePart(std::string_view text, Sphere* out, std::size_t count) {
+    std::string array;
+    array.reserve(text.size() + 2 + simdjson::SIMDJSON_PADDING);
+    array.append("[").append(text).append("]");
+    od::parser parser;
+    od::document document;
+    if (parser.iterate(array.data(), array.size(), array.capacity()).get(document)) return false;
+    od::array elements;
+    if (document.get_array().get(elements)) return false;
+    std::size_t read = 0;
+    for (auto element : elements) {
+        od::value x;
+        if (read == count || element.get(x) || !readSphere(x, out[read++])) return false;
+    }
+    return read == count && document.current_location().error() == simdjson::OUT_OF_BOUNDS;
+}
+
+bool readSpheres(od::value v, std::vector<Sphere>& out) {
+    std::vector<std::string_view> parts;
+    std::size_t count = 0;
+    if (!sphereParts(v, parts, count)) return false;
+    out.resize(count);
+    std::atomic<bool> read{true};
+    std::vector<int> order(parts.size());
+    std::iota(order.begin(), order.end(), 0);
+    parallelFor(order, resolveThreadCount(0), [&](int p) {
+        try {
+            const std::size_t first = p * kSpheresPerPart;
+            const std::size_t n = std::min(kSpheresPerPart, count - first);
+            if (read && !readSpherePart(parts[p], out.data() + first, n)) read = false;
+        } catch (const std::bad_alloc&) {  // the full reader then runs out of memory in its turn
+            read = false;
+        }
+    });
+    return read;
+}
+
 bool readFormat(od::value v) {
     std::string_view format;
     return !v.get_string().get(format) && format == kSceneFormatName;
@@ -248,7 +320,7 @@ bool readRoot(od::value root, Scene& scene) {
                 case 7:
                     return readList(x, scene.lights, readLight);
                 default:
-                    return readList(x, scene.spheres, readSphere);
+                    return readSpheres(x, scene.spheres);
             }
         });
 }

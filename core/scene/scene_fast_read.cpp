@@ -222,7 +222,9 @@ bool readList(od::value v, std::vector<T>& out, bool (*readOne)(od::value, T&)) 
 
 // The spheres are read on every core, kSpheresPerPart to a task: parsing
 // their numbers was most of opening a million (docs/design/performance.md).
-constexpr std::size_t kSpheresPerPart = std::size_t(1) << 16;
+// Small parts keep each reader's memory small: parts of 65,536 took 50 MB
+// more at 1M, and longer.
+constexpr std::size_t kSpheresPerPart = std::size_t(1) << 12;
 
 // The texts of the array's elements, kSpheresPerPart to a part, each part
 // from its first element's '{' to its last's '}', and how many elements
@@ -248,24 +250,32 @@ bool sphereParts(od::value v, std::vector<std::string_view>& parts, std::size_t&
     return true;
 }
 
-// A part's `count` spheres into out[0, count), read as the array "[" + its
-// text + "]" with a parser of its own (simdjson reads a text from its start).
-bool readSpherePart(std::string_view text, Sphere* out, std::size_t count) {
-    std::string array;
-    array.reserve(text.size() + 2 + simdjson::SIMDJSON_PADDING);
-    array.append("[").append(text).append("]");
+// Reads parts of the spheres array, one after another: its parser and its
+// copy of a part keep their memory from part to part, since new pages cost
+// more than the reading (simdjson's index of a part alone is four bytes a
+// byte of text).
+struct SpherePartReader {
     od::parser parser;
-    od::document document;
-    if (parser.iterate(array.data(), array.size(), array.capacity()).get(document)) return false;
-    od::array elements;
-    if (document.get_array().get(elements)) return false;
-    std::size_t read = 0;
-    for (auto element : elements) {
-        od::value x;
-        if (read == count || element.get(x) || !readSphere(x, out[read++])) return false;
+    std::string array;
+
+    // A part's `count` spheres into out[0, count), read as the array "[" +
+    // its text + "]" (simdjson reads a text from its start).
+    bool read(std::string_view text, Sphere* out, std::size_t count) {
+        array.reserve(text.size() + 2 + simdjson::SIMDJSON_PADDING);
+        array.assign("[").append(text).append("]");
+        od::document document;
+        if (parser.iterate(array.data(), array.size(), array.capacity()).get(document))
+            return false;
+        od::array elements;
+        if (document.get_array().get(elements)) return false;
+        std::size_t read = 0;
+        for (auto element : elements) {
+            od::value x;
+            if (read == count || element.get(x) || !readSphere(x, out[read++])) return false;
+        }
+        return read == count && document.current_location().error() == simdjson::OUT_OF_BOUNDS;
     }
-    return read == count && document.current_location().error() == simdjson::OUT_OF_BOUNDS;
-}
+};
 
 bool readSpheres(od::value v, std::vector<Sphere>& out) {
     std::vector<std::string_view> parts;
@@ -273,13 +283,17 @@ bool readSpheres(od::value v, std::vector<Sphere>& out) {
     if (!sphereParts(v, parts, count)) return false;
     out.resize(count);
     std::atomic<bool> read{true};
-    std::vector<int> order(parts.size());
-    std::iota(order.begin(), order.end(), 0);
-    parallelFor(order, resolveThreadCount(0), [&](int p) {
+    std::atomic<std::size_t> nextPart{0};
+    std::vector<int> workers(std::min<std::size_t>(resolveThreadCount(0), parts.size()));
+    std::iota(workers.begin(), workers.end(), 0);
+    parallelFor(workers, int(workers.size()), [&](int) {
         try {
-            const std::size_t first = p * kSpheresPerPart;
-            const std::size_t n = std::min(kSpheresPerPart, count - first);
-            if (read && !readSpherePart(parts[p], out.data() + first, n)) read = false;
+            SpherePartReader reader;
+            for (std::size_t p; read && (p = nextPart++) < parts.size();) {
+                const std::size_t first = p * kSpheresPerPart;
+                const std::size_t n = std::min(kSpheresPerPart, count - first);
+                if (!reader.read(parts[p], out.data() + first, n)) read = false;
+            }
         } catch (const std::bad_alloc&) {  // the full reader then runs out of memory in its turn
             read = false;
         }

@@ -145,20 +145,20 @@ TEST(SceneFastRead, WhatOnlyTheFullReaderJudges_HandedBackAndRefusedAsBefore) {
     EXPECT_EQ(parseScene(texts.back(), "f.json").spheres[0].radius, 0.6);
 }
 
-// More spheres than one reading task takes (65,536; they are read in parts
+// More spheres than one reading task takes (4,096; they are read in parts
 // on every core): read in order, each where it belongs, and a problem in any
 // part handed back to the full reader, whose message names its sphere.
 TEST(SceneFastRead, SpheresReadInParts_AsTheFullReaderReadsThem) {
     Scene many = test::seedScene();
-    for (int i = 0; i < 140000; ++i)
+    for (int i = 0; i < 10000; ++i)
         many.spheres.push_back({"ball " + std::to_string(i), {i * 0.001, 0.5, 3}, 0.1, "blue"});
     const std::string text = sceneToJson(many);
     const std::optional<Scene> read = fast(text);
     ASSERT_TRUE(read.has_value());
     EXPECT_EQ(*read, many);
 
-    // After the seed's four, "ball 99996" is spheres[100000], in the second
-    // part; "ball 131068" the first of the third; "ball 139999" the last.
+    // After the seed's four, "ball 4996" is spheres[5000], in the second
+    // part; "ball 8188" the first of the third; "ball 9999" the last.
     const auto withSphere = [&](int ball, const std::string& from, const std::string& to) {
         const std::string name = "\"ball " + std::to_string(ball) + "\"";
         std::string changed = text;
@@ -166,12 +166,12 @@ TEST(SceneFastRead, SpheresReadInParts_AsTheFullReaderReadsThem) {
         return changed.replace(at, from.size(), to);
     };
     const std::vector<std::pair<std::string, std::string>> refused = {
-        {withSphere(99996, "\"radius\": 0.1", "\"radius\": \"0.1\""),
-         "f.json: spheres[100000].radius: expected a number, found a string"},
-        {withSphere(131068, "\"radius\": 0.1", "\"radius\": 0.1, \"colour\": 1"),
-         "f.json: spheres[131072].colour: unknown key"},
-        {withSphere(139999, "\"radius\": 0.1", "\"radius\": -0.1"),
-         "f.json: spheres[140003].radius: must be > 0, found -0.1"},
+        {withSphere(4996, "\"radius\": 0.1", "\"radius\": \"0.1\""),
+         "f.json: spheres[5000].radius: expected a number, found a string"},
+        {withSphere(8188, "\"radius\": 0.1", "\"radius\": 0.1, \"colour\": 1"),
+         "f.json: spheres[8192].colour: unknown key"},
+        {withSphere(9999, "\"radius\": 0.1", "\"radius\": -0.1"),
+         "f.json: spheres[10003].radius: must be > 0, found -0.1"},
     };
     for (const auto& [bad, message] : refused) {
         EXPECT_FALSE(fast(bad).has_value() && !validateScene(*fast(bad)));

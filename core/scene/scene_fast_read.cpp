@@ -37,10 +37,12 @@ using namespace scene_field;
 // writer never writes more than 17.
 bool number(od::value v, double& out) {
     int digits = 0;  // significant: from the first digit that is not 0
-    for (const char c : v.raw_json_token()) {
-        if (c == 'e' || c == 'E') break;
-        digits += (c >= '1' && c <= '9') || (c == '0' && digits > 0);
-    }
+    const std::string_view token = v.raw_json_token();
+    if (token.size() > 19)  // else it cannot hold more than 19 digits
+        for (const char c : token) {
+            if (c == 'e' || c == 'E') break;
+            digits += (c >= '1' && c <= '9') || (c == '0' && digits > 0);
+        }
     double d = 0;
     if (digits > 19 || v.get_double().get(d) || !std::isfinite(d)) return false;
     out = d;

@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "base/atomic_file.h"
+#include "base/parallel_for.h"
 #include "image/exr_codec.h"
 #include "image/image_codec.h"
 #include "image/png_encode.h"
@@ -93,7 +94,15 @@ CodecPicture pictureOf(const Image& image, const fs::path& file, const ImageForm
     p.eightBit = !format.isFloat;
     if (p.eightBit) {
         p.codes.resize(image.rgb.size());
-        srgbEncode8(image.rgb.data(), image.rgb.size(), p.codes.data());
+        // On every core: a 1280x720 picture's codes took 3 ms on one, a twentieth
+        // of writing the seed's PNG.
+        forEachChunk(
+            int(image.rgb.size()), resolveThreadCount(0),
+            [&](int, int begin, int end) {
+                srgbEncode8(image.rgb.data() + begin, std::size_t(end - begin),
+                            p.codes.data() + begin);
+            },
+            1 << 18);
     }
     auto& a = p.attributes;
     // Empty strings are left out: Debian's OpenImageIO asserts on an empty

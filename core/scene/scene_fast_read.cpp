@@ -1,9 +1,11 @@
-// simdjson's On-Demand API walks the text once, in order, and parses each value
-// where the reader asks for it: a million spheres go straight into their
-// structs, with no DOM and no token strings between (the full reader's
-// nlohmann lexer took half of opening a 1,000,000-sphere file). Each helper
-// returns false at the first thing it would have to judge; the caller then
-// reads the text again with the full reader.
+// simdjson's On-Demand API walks the text in order and parses each value where
+// the reader asks for it: a million spheres go straight into their structs,
+// with no DOM and no token strings between (the full reader's nlohmann lexer
+// took half of opening a 1,000,000-sphere file). The spheres array is walked
+// twice: once skipping its objects to cut it into parts, then each part read
+// on one of several threads. Each helper returns false at the first thing it
+// would have to judge; the caller then reads the text again with the full
+// reader.
 #include "scene/scene_fast_read.h"
 
 #include <algorithm>

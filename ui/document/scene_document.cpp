@@ -257,14 +257,14 @@ SceneDocument::SceneDocument(QObject* parent) : QObject(parent) {
             [this](bool clean) { emit modifiedChanged(!clean); });
 }
 
-void SceneDocument::reset(const Scene& scene, const QString& filePath) {
+void SceneDocument::reset(Scene scene, const QString& filePath, bool validated) {
     undo_.clear();
     gestureDepth_ = 0;
     runOpen_ = false;
-    scene_ = std::make_shared<Scene>(scene);
+    scene_ = std::make_shared<Scene>(std::move(scene));
     ++contentRevision_;
     ++geometryRevision_;
-    resetSceneValid_ = !validateScene(*scene_);
+    resetSceneValid_ = validated || !validateScene(*scene_);
     selection_.clear();
     filePath_ = filePath;
     emit filePathChanged(filePath_);
@@ -275,7 +275,7 @@ void SceneDocument::reset(const Scene& scene, const QString& filePath) {
 
 bool SceneDocument::load(const QString& path, QString* error) {
     try {
-        reset(loadScene(path.toStdString()), path);
+        reset(loadScene(path.toStdString()), path, true);  // the loader validated it
         return true;
     } catch (const std::exception& e) {
         if (error) *error = QString::fromStdString(e.what());

@@ -263,7 +263,7 @@ bool MainWindow::openFile(const QString& path) {
         showError(tr("Cannot open scene"), error);
         return false;
     }
-    doc_.reset(*scene, path);
+    doc_.reset(std::move(*scene), path, true);  // the loader validated it
     sceneReplaced();
     addRecentFile(path);
     rememberDirectory(path);

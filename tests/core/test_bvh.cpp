@@ -21,7 +21,6 @@
 #include "support/test_support.h"
 #include "tracer/bvh.h"
 #include "tracer/bvh_traverse.h"
-#include "tracer/kernel_dispatch.h"
 #include "tracer/renderer.h"
 #include "tracer/tracer.h"
 
@@ -266,12 +265,10 @@ TEST(BvhRendersLikeBruteForceImage, EveryKernel) {
     const std::uint32_t seed = testSeed(2024);
     std::printf("seed %u\n", seed);
     const Scene scene = randomScene(400, Layout::Overlapping, seed, true);
-    for (const std::string& kernel : supportedKernelNames()) {
-        useKernel(kernel);
+    test::forEveryKernel([&](const std::string& kernel) {
         expectSameSamples<float>(scene, "kernel " + kernel + ", float");
         expectSameSamples<double>(scene, "kernel " + kernel + ", double");
-    }
-    useKernel("");
+    });
 }
 
 // The spheres' centres and radii, as the build takes them.

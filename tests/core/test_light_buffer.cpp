@@ -16,7 +16,6 @@
 
 #include "support/core_support.h"
 #include "tracer/bvh_traverse.h"
-#include "tracer/kernel_dispatch.h"
 #include "tracer/light_buffer.h"
 #include "tracer/tracer.h"
 
@@ -82,9 +81,7 @@ int checkBuffersChangeNoPixel(const Scene& scene, unsigned seed) {
 }
 
 TEST(LightBuffer, ChangesNoPixel) {
-    for (const std::string& kernel : supportedKernelNames()) {
-        SCOPED_TRACE("kernel " + kernel);
-        useKernel(kernel);
+    test::forEveryKernel([](const std::string&) {
         int made = 0, lights = 0;
         for (unsigned seed = 1; seed <= 8; ++seed) {
             const Scene scene = cloudScene(seed);
@@ -96,8 +93,7 @@ TEST(LightBuffer, ChangesNoPixel) {
         // ones inside a ball.
         EXPECT_GT(made, lights / 2);
         EXPECT_LT(made, lights);
-    }
-    useKernel("");
+    });
 }
 
 // The segment from p to the light passes through the sphere by more than

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tracer/kernel_dispatch.h"
+#include "support/core_support.h"
 #include "tracer/ray_packet.h"
 #include "tracer/sphere_intersect.h"
 #include "tracer/tracer.h"
@@ -220,17 +220,14 @@ void checkBlockMatchesList(int samplesPerPixel, int n0, int samples, bool openEn
 // Under every kernel: packets of 2 to 16 lanes, which a block's samples fill
 // whole, in part, or across pixels.
 TEST(RayPacket, CameraBlockEqualsSampleList) {
-    for (const std::string& kernel : supportedKernelNames()) {
-        SCOPED_TRACE("kernel " + kernel);
-        useKernel(kernel);
+    test::forEveryKernel([](const std::string&) {
         checkBlockMatchesList<float>(64, 5, 6, false);
         checkBlockMatchesList<double>(64, 5, 6, false);
         checkBlockMatchesList<float>(64, 0, 33, false);
         checkBlockMatchesList<float>(1024, 16, 16, true);
         checkBlockMatchesList<double>(1024, 7, 33, true);
         checkBlockMatchesList<float>(1024, 0, 2, true);
-    }
-    useKernel("");
+    });
 }
 
 TEST(RayPacket, CameraRowEqualsSampleList) {
@@ -282,13 +279,10 @@ void checkBranchesTogetherMatchAlone() {
 }
 
 TEST(RayPacket, BranchesTracedTogetherEqualBranchesTracedAlone) {
-    for (const std::string& kernel : supportedKernelNames()) {
-        SCOPED_TRACE("kernel " + kernel);
-        useKernel(kernel);
+    test::forEveryKernel([](const std::string&) {
         checkBranchesTogetherMatchAlone<float>();
         checkBranchesTogetherMatchAlone<double>();
-    }
-    useKernel("");
+    });
 }
 
 // The seed floor's centre relative to its camera, -99999.85, is 0.0015625 off

@@ -12,7 +12,6 @@
 #include <gtest/gtest.h>
 
 #include "support/core_support.h"
-#include "tracer/kernel_dispatch.h"
 #include "tracer/screen_boxes.h"
 #include "tracer/shadow_cones.h"
 #include "tracer/tracer.h"
@@ -68,9 +67,7 @@ int checkSkipsChangeNoPixel(const Scene& scene, unsigned seed) {
 }
 
 TEST(SkippedSpheres, ChangeNoPixel) {
-    for (const std::string& kernel : supportedKernelNames()) {
-        SCOPED_TRACE("kernel " + kernel);
-        useKernel(kernel);
+    test::forEveryKernel([](const std::string&) {
         int skipped = 0, pairs = 0;
         for (unsigned seed = 1; seed <= 40; ++seed) {
             const Scene scene = randomScene(seed);
@@ -80,8 +77,7 @@ TEST(SkippedSpheres, ChangeNoPixel) {
         }
         // The boxes do leave spheres out, or this test would test nothing.
         EXPECT_GT(skipped, pairs / 3);
-    }
-    useKernel("");
+    });
 }
 
 // The seed's sky, the picture's top row, meets no sphere's box, and the

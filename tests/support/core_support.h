@@ -18,6 +18,7 @@
 #include "scene/scene.h"
 #include "scene/scene_io.h"
 #include "support/test_support.h"
+#include "tracer/kernel_dispatch.h"
 #include "tracer/renderer.h"
 #include "tracer/tracer.h"
 
@@ -151,6 +152,21 @@ inline std::string firstDifference(const Image& a, const Image& b) {
                    std::to_string(b.rgb[k]);
         }
     return "";
+}
+
+// ---- kernels -------------------------------------------------------------------
+
+// Runs check(kernel) under each kernel this CPU runs (kernel_dispatch.h), its
+// failures traced with the kernel's name, then goes back to the kernel chosen
+// at start, so that the tests after it run under that one.
+template <typename Check>
+void forEveryKernel(const Check& check) {
+    for (const std::string& kernel : supportedKernelNames()) {
+        SCOPED_TRACE("kernel " + kernel);
+        useKernel(kernel);
+        check(kernel);
+    }
+    useKernel("");
 }
 
 // ---- rows traced ---------------------------------------------------------------

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 
 #include "tracer/bvh.h"
 #include "tracer/isa_namespace.h"
@@ -38,19 +39,70 @@ inline namespace WHITTED_ISA_NAMESPACE {
 // eps of the same sizes. 64 leaves a wide safety factor and costs nothing
 // that matters: 64 eps is 8e-6 of the scene's reach in float.
 //
-// The argument needs squares of coordinates to be finite in T: spheres beyond
-// kTreeReach (bvh.cpp) stay out of the tree, and packets whose origins lie
-// beyond kBvhOriginReach take the brute-force loop.
+// Double packets test boxes in float where the target's vectors hold 32 bytes
+// or more (Walk below): on these cores a 64-byte operation takes the time of
+// two 32-byte ones, so eight lanes' box tests in float cost half what they do
+// in double, and the boxes are float already. The rays are rounded to float
+// for it: o and d each by eps_f / 2 of themselves, which moves the point at t
+// by at most eps_f / 2 (|o| + t |d|) an axis; t |d| <= |o| + |p| for a point p
+// in the tree's root box, so by eps_f (|o|_1 + reach): a 64th of the float
+// margin, used for these tests. A double root's own error is far smaller still
+// (DoubleRaysWalkedInFloat_MeetTheBoxesOfTheirHits). The entry distances, in
+// float, are compared with double limits exactly (a float converts exactly).
+//
+// The argument needs squares of coordinates to be finite in T, and the
+// margin to be finite in the walk's arithmetic: spheres beyond kTreeReach
+// (bvh_boxes.h) stay out of the tree, and packets whose origins lie beyond
+// kBvhOriginReach take the brute-force loop.
+template <typename T>
+struct Walk {
+    using scalar = T;
+    using type = typename Simd<T>::type;
+};
+#if defined(__AVX__)
+// With SSE alone, a vector of two floats would be split lane by lane.
+template <>
+struct Walk<double> {
+    using scalar = float;
+    typedef float type __attribute__((vector_size(kSimdBytes / 2)));
+};
+#endif
+
 template <typename T>
 inline constexpr T kBvhSlack = T(64) * std::numeric_limits<T>::epsilon();
+// Squares of 1e17 are finite in float and of 1e150 in double; the float walk
+// of double packets needs its sums of 1e37 finite.
 template <typename T>
-inline constexpr T kBvhOriginReach = sizeof(T) == sizeof(float) ? T(1e17) : T(1e150);
+inline constexpr
+    typename Walk<T>::scalar kBvhOriginReach(sizeof(T) == sizeof(float) ? 1e17
+                                             : sizeof(typename Walk<T>::scalar) == sizeof(float)
+                                                 ? 1e37
+                                                 : 1e150);
 
-// A packet prepared for box tests.
+// A packet's vector of T in the walk's arithmetic (to nearest).
+template <typename T>
+inline typename Walk<T>::type toWalk(const typename Simd<T>::type& v) {
+    if constexpr (std::is_same_v<typename Walk<T>::type, typename Simd<T>::type>)
+        return v;
+    else
+        return __builtin_convertvector(v, typename Walk<T>::type);
+}
+
+// A walk's vector of entry distances as T, exactly, to compare with limits.
+template <typename T>
+inline typename Simd<T>::type fromWalk(const typename Walk<T>::type& v) {
+    if constexpr (std::is_same_v<typename Walk<T>::type, typename Simd<T>::type>)
+        return v;
+    else
+        return __builtin_convertvector(v, typename Simd<T>::type);
+}
+
+// A packet prepared for box tests, in the walk's arithmetic.
 template <typename T>
 struct PacketSlabs {
-    using V = typename Simd<T>::type;
-    // 1 / direction, clamped to +-max of T: finite, so an axis the ray does not
+    using W = typename Walk<T>::scalar;
+    using V = typename Walk<T>::type;
+    // 1 / direction, clamped to +-max of W: finite, so an axis the ray does not
     // move along gives 0 or +-infinity for its slab, never NaN (0 * infinity).
     V ix, iy, iz;
     V reach;  // |o|_1
@@ -73,28 +125,31 @@ inline T treeReach(const SphereBvh<T>& bvh) {
     return reach;
 }
 
-template <typename T>
-inline typename Simd<T>::type clampedInverse(const typename Simd<T>::type& d) {
-    using V = typename Simd<T>::type;
-    constexpr T kMax = std::numeric_limits<T>::max();
-    const V inv = T(1) / d;
+template <typename V>
+inline V clampedInverse(const V& d) {
+    using S = std::remove_cvref_t<decltype(d[0])>;
+    constexpr S kMax = std::numeric_limits<S>::max();
+    const V inv = S(1) / d;
     return inv > kMax ? V{} + kMax : (inv < -kMax ? V{} - kMax : inv);
 }
 
-template <typename T>
-inline typename Simd<T>::type laneAbs(const typename Simd<T>::type& v) {
-    return v < T(0) ? -v : v;
+template <typename V>
+inline V laneAbs(const V& v) {
+    using S = std::remove_cvref_t<decltype(v[0])>;
+    return v < S(0) ? -v : v;
 }
 
 template <typename T>
 inline PacketSlabs<T> packetSlabs(const RayPacket<T>& r, T reachOfTree) {
+    using W = typename Walk<T>::scalar;
+    using V = typename Walk<T>::type;
     PacketSlabs<T> s;
-    s.ix = clampedInverse<T>(r.dx);
-    s.iy = clampedInverse<T>(r.dy);
-    s.iz = clampedInverse<T>(r.dz);
-    s.reach = laneAbs<T>(r.ox) + laneAbs<T>(r.oy) + laneAbs<T>(r.oz);
-    const typename Simd<T>::type margin = kBvhSlack<T> * (s.reach + reachOfTree);
-    const typename Simd<T>::type origin[3] = {r.ox, r.oy, r.oz};
+    const V origin[3] = {toWalk<T>(r.ox), toWalk<T>(r.oy), toWalk<T>(r.oz)};
+    s.ix = clampedInverse(toWalk<T>(r.dx));
+    s.iy = clampedInverse(toWalk<T>(r.dy));
+    s.iz = clampedInverse(toWalk<T>(r.dz));
+    s.reach = laneAbs(origin[0]) + laneAbs(origin[1]) + laneAbs(origin[2]);
+    const V margin = kBvhSlack<W> * (s.reach + W(reachOfTree));
     for (int i = 0; i < 3; ++i) {
         s.originPlus[i] = origin[i] + margin;
         s.originMinus[i] = origin[i] - margin;
@@ -108,8 +163,8 @@ inline PacketSlabs<T> packetSlabs(const RayPacket<T>& r, T reachOfTree) {
 template <typename T>
 inline unsigned slabLanes(const float (&lo)[3], const float (&hi)[3], const PacketSlabs<T>& s,
                           const typename Simd<T>::type& limit, unsigned lanes,
-                          typename Simd<T>::type& entry) {
-    using V = typename Simd<T>::type;
+                          typename Walk<T>::type& entry) {
+    using V = typename Walk<T>::type;
     const V ax = (lo[0] - s.originPlus[0]) * s.ix, bx = (hi[0] - s.originMinus[0]) * s.ix;
     const V ay = (lo[1] - s.originPlus[1]) * s.iy, by = (hi[1] - s.originMinus[1]) * s.iy;
     const V az = (lo[2] - s.originPlus[2]) * s.iz, bz = (hi[2] - s.originMinus[2]) * s.iz;
@@ -119,15 +174,19 @@ inline unsigned slabLanes(const float (&lo)[3], const float (&hi)[3], const Pack
     const V nxy = nx > ny ? nx : ny, fxy = fx < fy ? fx : fy;
     entry = nxy > nz ? nxy : nz;
     const V exit = fxy < fz ? fxy : fz;
-    const auto miss = (entry > exit) | (exit < T(0)) | (entry > limit);
-    return lanes & ~laneBits(miss);
+    using W = typename Walk<T>::scalar;
+    if constexpr (std::is_same_v<W, T>)
+        return lanes & ~laneBits((entry > exit) | (exit < W(0)) | (entry > limit));
+    else
+        return lanes & ~laneBits((entry > exit) | (exit < W(0))) &
+               ~laneBits(fromWalk<T>(entry) > limit);
 }
 
 // slabLanes() for a node's box.
 template <typename T>
 inline unsigned boxLanes(const BvhNode& node, const PacketSlabs<T>& s,
                          const typename Simd<T>::type& limit, unsigned lanes,
-                         typename Simd<T>::type& entry) {
+                         typename Walk<T>::type& entry) {
     return slabLanes(node.lo, node.hi, s, limit, lanes, entry);
 }
 
@@ -152,14 +211,14 @@ struct PairSimd<double> {
 
 template <typename T>
 struct LaneSlabs {
-    using Pair = typename PairSimd<T>::type;
+    using Pair = typename PairSimd<typename Walk<T>::scalar>::type;
     Pair origin;   // [o + margin (3), o - margin (3), 0, 0], twice
     Pair inverse;  // [1/d (3), 1/d (3), 0, 0], twice
 };
 
 template <typename T>
 inline LaneSlabs<T> laneSlabs(const PacketSlabs<T>& s, int lane) {
-    const T inverse[3] = {s.ix[lane], s.iy[lane], s.iz[lane]};
+    const typename Walk<T>::scalar inverse[3] = {s.ix[lane], s.iy[lane], s.iz[lane]};
     LaneSlabs<T> r{};
     for (int child = 0; child < 2; ++child) {
         for (int i = 0; i < 3; ++i) {
@@ -176,9 +235,10 @@ inline LaneSlabs<T> laneSlabs(const PacketSlabs<T>& s, int lane) {
 // [0, limit] (bit c: children[c]), and its entry distance into each.
 template <typename T>
 inline unsigned childrenMet(const BvhNode* children, const LaneSlabs<T>& s, T limit,
-                            T (&entry)[2]) {
-    using Pair = typename PairSimd<T>::type;
-    using Index = typename PairSimd<T>::index;
+                            typename Walk<T>::scalar (&entry)[2]) {
+    using W = typename Walk<T>::scalar;
+    using Pair = typename PairSimd<W>::type;
+    using Index = typename PairSimd<W>::index;
     typename PairSimd<float>::type boxes;
     std::memcpy(&boxes, children, sizeof boxes);
     // The two ints read as floats may be NaN or subnormal: zeroed, they cost nothing.
@@ -187,7 +247,7 @@ inline unsigned childrenMet(const BvhNode* children, const LaneSlabs<T>& s, T li
     boxes = reinterpret_cast<typename PairSimd<float>::type>(
         reinterpret_cast<typename PairSimd<float>::index>(boxes) & keep);
     Pair t;
-    if constexpr (sizeof(T) == sizeof(float))
+    if constexpr (sizeof(W) == sizeof(float))
         t = (boxes - s.origin) * s.inverse;
     else
         t = (__builtin_convertvector(boxes, Pair) - s.origin) * s.inverse;
@@ -204,8 +264,8 @@ inline unsigned childrenMet(const BvhNode* children, const LaneSlabs<T>& s, T li
     unsigned met = 0;
     for (int c = 0; c < 2; ++c) {
         entry[c] = in[8 * c];
-        const T exit = out[8 * c];
-        if (!((entry[c] > exit) | (exit < T(0)) | (entry[c] > limit))) met |= 1u << c;
+        const W exit = out[8 * c];
+        if (!((entry[c] > exit) | (exit < W(0)) | (entry[c] > limit))) met |= 1u << c;
     }
     return met;
 }

@@ -44,7 +44,7 @@ inline namespace WHITTED_ISA_NAMESPACE {
 // A node some lanes are yet to visit, with their entry distances into its box.
 template <typename T>
 struct BvhVisit {
-    typename Simd<T>::type entry;
+    typename Walk<T>::type entry;
     unsigned lanes;
     int node;
 };
@@ -59,7 +59,7 @@ inline unsigned walkOneLane(const SphereSet<T>& spheres, const SphereBvh<T>& bvh
     const LaneSlabs<T> ray = laneSlabs(slabs, lane);
     const unsigned bit = 1u << lane;
     struct Visit {
-        T entry;
+        typename Walk<T>::scalar entry;
         int node;
     };
     Visit stack[kMaxBvhDepth + 1];
@@ -76,7 +76,7 @@ inline unsigned walkOneLane(const SphereSet<T>& spheres, const SphereBvh<T>& bvh
             if (!(looking & bit)) return looking;
         } else {
             inner();
-            T entry[2];
+            typename Walk<T>::scalar entry[2];
             const unsigned met = childrenMet(&bvh.nodes[n.first], ray, limit[lane], entry);
             if (met) {
                 const int near = met == 2 || (met == 3 && entry[1] < entry[0]) ? 1 : 0;
@@ -109,7 +109,7 @@ template <typename T, typename Leaf, typename Inner = void (*)()>
 inline void traverseBvh(
     const SphereSet<T>& spheres, const SphereBvh<T>& bvh, const PacketSlabs<T>& slabs,
     const typename Simd<T>::type& limit, unsigned lanes, Leaf&& leaf, Inner&& inner = [] {}) {
-    using V = typename Simd<T>::type;
+    using V = typename Walk<T>::type;
     BvhVisit<T> stack[kMaxBvhDepth + 1];  // a path's far children: at most its depth
     int top = 0;
     V entry;
@@ -139,8 +139,9 @@ inline void traverseBvh(
                 boxLanes(bvh.nodes[n.first + 1], slabs, limit, in, entries[1])};
             const int lead = __builtin_ctz(in);
             const auto key = [&](int c) {
-                return (inChild[c] >> lead) & 1u ? entries[c][lead]
-                                                 : std::numeric_limits<T>::infinity();
+                return (inChild[c] >> lead) & 1u
+                           ? entries[c][lead]
+                           : std::numeric_limits<typename Walk<T>::scalar>::infinity();
             };
             const int near = inChild[0] == 0 || (inChild[1] != 0 && key(1) < key(0)) ? 1 : 0;
             const int far = 1 - near;
@@ -154,7 +155,7 @@ inline void traverseBvh(
         do {
             if (top == 0) return;
             const BvhVisit<T>& v = stack[--top];
-            in = v.lanes & lanes & ~laneBits(v.entry > limit);
+            in = v.lanes & lanes & ~laneBits(fromWalk<T>(v.entry) > limit);
             node = v.node;
         } while (!in);
     }

@@ -42,29 +42,39 @@ struct Simd<double> {
 
 // Lane masks as bits, lane l at bit l, and an element-wise square root. AVX
 // has single instructions for both; the fallback loops give the same results.
+// laneBits() also takes a mask half as wide as the target's vectors (the float
+// box tests of double packets, bvh_slabs.h).
 template <typename M>
 inline unsigned laneBits(const M& m) {
+    constexpr bool kFloat = sizeof(m[0]) == 4;
 #if defined(__AVX512F__)
-    const __m512i v = reinterpret_cast<__m512i>(m);
-    if constexpr (sizeof(m[0]) == 4)
-        return static_cast<unsigned>(_mm512_test_epi32_mask(v, v));
-    else
-        return static_cast<unsigned>(_mm512_test_epi64_mask(v, v));
-#elif defined(__AVX__)
-    if constexpr (sizeof(m[0]) == 4)
-        return static_cast<unsigned>(_mm256_movemask_ps(reinterpret_cast<__m256>(m)));
-    else
-        return static_cast<unsigned>(_mm256_movemask_pd(reinterpret_cast<__m256d>(m)));
-#elif defined(__SSE2__)
-    if constexpr (sizeof(m[0]) == 4)
-        return static_cast<unsigned>(_mm_movemask_ps(reinterpret_cast<__m128>(m)));
-    else
-        return static_cast<unsigned>(_mm_movemask_pd(reinterpret_cast<__m128d>(m)));
-#else
+    if constexpr (sizeof(M) == 64) {
+        const __m512i v = reinterpret_cast<__m512i>(m);
+        if constexpr (kFloat)
+            return static_cast<unsigned>(_mm512_test_epi32_mask(v, v));
+        else
+            return static_cast<unsigned>(_mm512_test_epi64_mask(v, v));
+    }
+#endif
+#if defined(__AVX__)
+    if constexpr (sizeof(M) == 32) {
+        if constexpr (kFloat)
+            return static_cast<unsigned>(_mm256_movemask_ps(reinterpret_cast<__m256>(m)));
+        else
+            return static_cast<unsigned>(_mm256_movemask_pd(reinterpret_cast<__m256d>(m)));
+    }
+#endif
+#if defined(__SSE2__)
+    if constexpr (sizeof(M) == 16) {
+        if constexpr (kFloat)
+            return static_cast<unsigned>(_mm_movemask_ps(reinterpret_cast<__m128>(m)));
+        else
+            return static_cast<unsigned>(_mm_movemask_pd(reinterpret_cast<__m128d>(m)));
+    }
+#endif
     unsigned bits = 0;
     for (unsigned l = 0; l < sizeof(M) / sizeof(m[0]); ++l) bits |= (m[l] ? 1u : 0u) << l;
     return bits;
-#endif
 }
 
 template <typename V>

@@ -3,6 +3,7 @@
 // force finds, down to the last bit of every pixel, in float and double.
 // Random cases print their seed; WHITTED_TEST_SEED replays one.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -711,25 +712,24 @@ void expectSamePackets(const Scene& scene, std::uint32_t seed, const std::string
     EXPECT_EQ(mismatches, 0) << what;
 }
 
-// The margin's premise (bvh_traverse.h, kBvhSlack): a root the sphere test
-// reports puts the exact point o + t d within a few eps (|o|_1 + |c|_1 + r) of
-// the ball, for far, tiny, huge and grazing cases. Prints the worst factor.
-template <typename T>
-double worstExcess(std::uint32_t seed) {
+// Rays the sphere test hits, for far, tiny, huge and grazing cases: a sphere
+// of radius 1e-4 to 1e6, centred up to 1e7 out, seen from 0.1 to 1e7 radii
+// away, the ray aimed near its rim (grazing lines are the hard case). Calls
+// hit(o, d, c, radius, t) for each root t > 0 the test reports.
+template <typename T, typename Hit>
+void forRandomHits(std::uint32_t seed, Hit&& hit) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> u(0.0, 1.0);
-    double worst = 0;
     for (int trial = 0; trial < 20000; ++trial) {
-        const double scale = std::pow(10.0, u(rng) * 10 - 4);  // radius 1e-4 .. 1e6
-        const double away = std::pow(10.0, u(rng) * 8 - 1);    // origin 0.1 .. 1e7 radii off
-        const glm::dvec3 c = glm::dvec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5) *
-                             std::pow(10.0, u(rng) * 7);  // centre up to 1e7 out
+        const double scale = std::pow(10.0, u(rng) * 10 - 4);
+        const double away = std::pow(10.0, u(rng) * 8 - 1);
+        const glm::dvec3 c =
+            glm::dvec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5) * std::pow(10.0, u(rng) * 7);
         SphereSet<T> set;
         set.add(c, glm::dvec3(0.0), scale, Vec<T>(T(0)));
         const glm::dvec3 toward =
             glm::normalize(glm::dvec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5));
         const glm::dvec3 o = c + toward * (scale * (1 + away));
-        // Aim at a point near the sphere's rim: grazing lines are the hard case.
         const glm::dvec3 side =
             glm::normalize(glm::cross(toward, glm::dvec3(u(rng), u(rng), u(rng))));
         const glm::dvec3 aim = c + side * (scale * (0.9 + 0.2 * u(rng)));
@@ -738,20 +738,36 @@ double worstExcess(std::uint32_t seed) {
         r.set(0, ot, dt, -1, false);
         const PacketRoots<T> roots = intersectPacket(set, 0, r, 1u);
         if (!(roots.valid & 1u)) continue;
-        for (const T t : {roots.tNear[0], roots.tFar[0]}) {
-            if (!(t > T(0))) continue;
-            long double d2 = 0;
-            for (int i = 0; i < 3; ++i) {
-                const long double p = (long double)ot[i] + (long double)t * (long double)dt[i];
-                d2 += (p - (long double)c[i]) * (p - (long double)c[i]);
-            }
-            const double excess = double(std::sqrt(d2) - (long double)scale);
-            const double unit = std::numeric_limits<T>::epsilon() *
-                                (std::fabs(ot.x) + std::fabs(ot.y) + std::fabs(ot.z) +
-                                 std::fabs(c.x) + std::fabs(c.y) + std::fabs(c.z) + scale);
-            worst = std::max(worst, excess / unit);
-        }
+        for (const T t : {roots.tNear[0], roots.tFar[0]})
+            if (t > T(0)) hit(r, ot, dt, c, scale, t);
     }
+}
+
+// The exact point o + t d, in long double.
+template <typename T>
+std::array<long double, 3> exactPoint(const Vec<T>& o, const Vec<T>& d, T t) {
+    std::array<long double, 3> p;
+    for (int i = 0; i < 3; ++i) p[i] = (long double)o[i] + (long double)t * (long double)d[i];
+    return p;
+}
+
+// The margin's premise (bvh_traverse.h, kBvhSlack): a root the sphere test
+// reports puts the exact point o + t d within a few eps (|o|_1 + |c|_1 + r) of
+// the ball. Prints the worst factor.
+template <typename T>
+double worstExcess(std::uint32_t seed) {
+    double worst = 0;
+    forRandomHits<T>(seed, [&](const RayPacket<T>&, const Vec<T>& o, const Vec<T>& d,
+                               const glm::dvec3& c, double radius, T t) {
+        const std::array<long double, 3> p = exactPoint(o, d, t);
+        long double d2 = 0;
+        for (int i = 0; i < 3; ++i) d2 += (p[i] - (long double)c[i]) * (p[i] - (long double)c[i]);
+        const double excess = double(std::sqrt(d2) - (long double)radius);
+        const double unit = std::numeric_limits<T>::epsilon() *
+                            (std::fabs(o.x) + std::fabs(o.y) + std::fabs(o.z) + std::fabs(c.x) +
+                             std::fabs(c.y) + std::fabs(c.z) + radius);
+        worst = std::max(worst, excess / unit);
+    });
     return worst;
 }
 
@@ -762,6 +778,40 @@ TEST(BvhMargin, HitsLieWithinTheMargin) {
                 f, d, double(kBvhSlack<float> / std::numeric_limits<float>::epsilon()));
     EXPECT_LT(f, 8.0);
     EXPECT_LT(d, 8.0);
+}
+
+// Double packets' boxes are tested in float (bvh_slabs.h, Walk), the rays
+// rounded to float. Each point a double ray's sphere test reports, in the
+// tightest box a tree could hold it in (the point itself, rounded outward to
+// float), is still met by the ray's box test, by its hit's distance.
+TEST(BvhMargin, DoubleRaysWalkedInFloat_MeetTheBoxesOfTheirHits) {
+    const std::uint32_t seed = testSeed(8);
+    std::printf("seed %u: box tests in %s for double packets\n", seed,
+                sizeof(typename Walk<double>::scalar) == sizeof(float) ? "float" : "double");
+    int hits = 0, missed = 0;
+    forRandomHits<double>(
+        seed, [&](const RayPacket<double>& r, const Vec<double>& o, const Vec<double>& d,
+                  const glm::dvec3& c, double radius, double t) {
+            const std::array<long double, 3> p = exactPoint(o, d, t);
+            BvhNode box{};
+            for (int i = 0; i < 3; ++i) {
+                const float near = float(p[i]);
+                box.lo[i] = (long double)near > p[i] ? std::nextafter(near, -INFINITY) : near;
+                box.hi[i] = (long double)near < p[i] ? std::nextafter(near, INFINITY) : near;
+            }
+            // The root of a tree holding the sphere reaches at least this far.
+            const double reach = std::fabs(c.x) + std::fabs(c.y) + std::fabs(c.z) + 3 * radius;
+            const PacketSlabs<double> slabs = packetSlabs(r, reach);
+            typename Simd<double>::type limit{};
+            limit[0] = t;
+            typename Walk<double>::type entry;
+            ++hits;
+            if (boxLanes(box, slabs, limit, 1u, entry) != 1u && missed++ < 5)
+                ADD_FAILURE() << "o " << o.x << " " << o.y << " " << o.z << ", d " << d.x << " "
+                              << d.y << " " << d.z << ", t " << t << ": entry " << entry[0];
+        });
+    EXPECT_EQ(missed, 0) << "of " << hits;
+    EXPECT_GT(hits, 10000);
 }
 
 // childrenMet() (one lane, both children at once) against boxLanes() (every
@@ -807,19 +857,19 @@ void expectSameChildrenMet(std::uint32_t seed) {
                                     : T(std::fabs(u(rng)) * 3);
         }
         const PacketSlabs<T> slabs = packetSlabs(r, T(30));
-        V entries[2];
+        typename Walk<T>::type entries[2];
         const unsigned lanes = (1u << W) - 1;
         const unsigned inChild[2] = {boxLanes(children[0], slabs, limit, lanes, entries[0]),
                                      boxLanes(children[1], slabs, limit, lanes, entries[1])};
         for (int l = 0; l < W; ++l) {
-            T entry[2];
+            typename Walk<T>::scalar entry[2];
             const unsigned alone = childrenMet(children, laneSlabs(slabs, l), limit[l], entry);
             for (int c = 0; c < 2; ++c) {
                 const bool inPacket = (inChild[c] >> l) & 1u, byItself = (alone >> c) & 1u;
                 met += inPacket;
                 const bool same =
                     inPacket == byItself &&
-                    (!inPacket || std::memcmp(&entry[c], &entries[c][l], sizeof(T)) == 0);
+                    (!inPacket || std::memcmp(&entry[c], &entries[c][l], sizeof entry[c]) == 0);
                 if (!same && mismatches++ < 5)
                     ADD_FAILURE() << "trial " << trial << " lane " << l << " child " << c
                                   << ": packet " << inPacket << " entry " << entries[c][l]

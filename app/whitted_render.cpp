@@ -24,6 +24,7 @@
 #include "analysis/quality_target.h"
 #include "base/atomic_file.h"
 #include "base/elapsed.h"
+#include "base/parallel_for.h"
 #include "camera/camera_control.h"
 #include "cli_input.h"
 #include "cli_main.h"
@@ -299,6 +300,8 @@ int runInspect(const Options& o) {
 }
 
 int run(const Options& o) {
+    // Reading the scene and writing the image keep to --threads too.
+    processThreadLimit = o.threads;
     if (!o.inspect.empty()) return runInspect(o);
     if (o.output.empty()) return runPlanOnly(o);
     const auto format = outputFormatOrSay("whitted-render", o.output);
@@ -387,8 +390,10 @@ int main(int argc, char** argv) {
                    "Output image: .png .jpg .tif .exr or .hdr; a turntable's frames get "
                    "numbers before the extension (out.0001.png)");
     addRenderFlags(app, o.render);
-    app.add_option("--threads", o.threads,
-                   "Threads preparing the scene and rendering it (default: all cores)")
+    app.add_option(
+           "--threads", o.threads,
+           "Threads reading, preparing and rendering the scene and writing the image (default: "
+           "all cores)")
         ->check(CLI::Range(1, 1024));
     app.add_option("--stats", o.stats, "Write render statistics as JSON to this file");
     app.add_flag("--quiet", o.quiet, "Print nothing but errors");

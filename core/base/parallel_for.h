@@ -14,11 +14,17 @@
 
 namespace whitted {
 
-// The number of threads for `requested` (0: all cores), as render() and the
-// passes over every sphere use it. All the cores this process may run on: a
-// Slurm task or `taskset` confines it to some of the machine's, and
-// std::thread::hardware_concurrency() counts them all, so a task given two
-// cores of a 64-core node would start 64 threads.
+// A bound for the whole process on the threads of work that asks for no
+// count: reading a scene, writing an image, the analyses, a render whose
+// options leave it at 0. whitted-render sets it from --threads, so that the
+// flag bounds all of the program's work, not the render's alone. 0: none.
+inline std::atomic<int> processThreadLimit{0};
+
+// The number of threads for `requested` (0: all cores, or processThreadLimit
+// if fewer), as render() and the passes over every sphere use it. All the
+// cores this process may run on: a Slurm task or `taskset` confines it to
+// some of the machine's, and std::thread::hardware_concurrency() counts them
+// all, so a task given two cores of a 64-core node would start 64 threads.
 inline int resolveThreadCount(int requested) {
     if (requested > 0) return requested;
     // Asked once: planning a render asks for each of its small probes.
@@ -28,7 +34,8 @@ inline int resolveThreadCount(int requested) {
             return std::max(1, CPU_COUNT(&allowed));
         return int(std::max(1u, std::thread::hardware_concurrency()));
     }();
-    return cores;
+    const int limit = processThreadLimit.load(std::memory_order_relaxed);
+    return limit > 0 ? std::min(limit, cores) : cores;
 }
 
 // Spheres per task of a pass over every sphere: enough work per task that

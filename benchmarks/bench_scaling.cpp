@@ -237,11 +237,13 @@ void saveImages(const std::string& dir, const Scene& scene, const Row& row) {
 
 Row measureRow(const Options& o, const std::string& layout, const Scene& scene) {
     const int n = int(scene.spheres.size()) - 1;  // the floor is not counted
-    Row row{layout, n, measureTree(scene), {}, {}, {}, {}, {}};
-    if (o.embreeOnly) {
+    Row row{layout, n, {}, {}, {}, {}, {}, {}};
+    if (o.embreeOnly) {  // nothing of ours in the profile, not even the tree's build
+        row.tree = Tree{-1, -1, -1};
         row.embree = embreeRun(scene, Image());
         return row;
     }
+    row.tree = measureTree(scene);
     row.ours = renderWith(scene, o.ours, Precision::Float);
     BvhCache cache;
     renderWith(scene, o.ours, Precision::Float, &cache);

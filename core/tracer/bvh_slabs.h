@@ -79,22 +79,15 @@ inline constexpr
                                                  ? 1e37
                                                  : 1e150);
 
-// A packet's vector of T in the walk's arithmetic (to nearest).
-template <typename T>
-inline typename Walk<T>::type toWalk(const typename Simd<T>::type& v) {
-    if constexpr (std::is_same_v<typename Walk<T>::type, typename Simd<T>::type>)
+// v's lanes as the vector type To: v itself if it is one; double to float to
+// nearest (a ray into the walk's arithmetic), float to double exactly (an
+// entry distance, to compare with a double limit).
+template <typename To, typename From>
+inline To lanesAs(const From& v) {
+    if constexpr (std::is_same_v<To, From>)
         return v;
     else
-        return __builtin_convertvector(v, typename Walk<T>::type);
-}
-
-// A walk's vector of entry distances as T, exactly, to compare with limits.
-template <typename T>
-inline typename Simd<T>::type fromWalk(const typename Walk<T>::type& v) {
-    if constexpr (std::is_same_v<typename Walk<T>::type, typename Simd<T>::type>)
-        return v;
-    else
-        return __builtin_convertvector(v, typename Simd<T>::type);
+        return __builtin_convertvector(v, To);
 }
 
 // A packet prepared for box tests, in the walk's arithmetic.
@@ -144,10 +137,10 @@ inline PacketSlabs<T> packetSlabs(const RayPacket<T>& r, T reachOfTree) {
     using W = typename Walk<T>::scalar;
     using V = typename Walk<T>::type;
     PacketSlabs<T> s;
-    const V origin[3] = {toWalk<T>(r.ox), toWalk<T>(r.oy), toWalk<T>(r.oz)};
-    s.ix = clampedInverse(toWalk<T>(r.dx));
-    s.iy = clampedInverse(toWalk<T>(r.dy));
-    s.iz = clampedInverse(toWalk<T>(r.dz));
+    const V origin[3] = {lanesAs<V>(r.ox), lanesAs<V>(r.oy), lanesAs<V>(r.oz)};
+    s.ix = clampedInverse(lanesAs<V>(r.dx));
+    s.iy = clampedInverse(lanesAs<V>(r.dy));
+    s.iz = clampedInverse(lanesAs<V>(r.dz));
     s.reach = laneAbs(origin[0]) + laneAbs(origin[1]) + laneAbs(origin[2]);
     const V margin = kBvhSlack<W> * (s.reach + W(reachOfTree));
     for (int i = 0; i < 3; ++i) {
@@ -179,7 +172,7 @@ inline unsigned slabLanes(const float (&lo)[3], const float (&hi)[3], const Pack
         return lanes & ~laneBits((entry > exit) | (exit < W(0)) | (entry > limit));
     else
         return lanes & ~laneBits((entry > exit) | (exit < W(0))) &
-               ~laneBits(fromWalk<T>(entry) > limit);
+               ~laneBits(lanesAs<typename Simd<T>::type>(entry) > limit);
 }
 
 // slabLanes() for a node's box.

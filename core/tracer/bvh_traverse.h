@@ -155,7 +155,7 @@ inline void traverseBvh(
         do {
             if (top == 0) return;
             const BvhVisit<T>& v = stack[--top];
-            in = v.lanes & lanes & ~laneBits(fromWalk<T>(v.entry) > limit);
+            in = v.lanes & lanes & ~laneBits(lanesAs<typename Simd<T>::type>(v.entry) > limit);
             node = v.node;
         } while (!in);
     }

@@ -96,16 +96,17 @@ std::vector<unsigned char> zlibOfRows(std::size_t rows, std::size_t rowBytes,
     threads = resolveThreadCount(threads);
     if (rowBytes == 0) rows = 0;
     std::vector<Stripe> stripes = stripesOf(rows, std::max<std::size_t>(1, rowBytes), threads);
-    std::vector<int> order(stripes.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = int(i);
     std::vector<std::exception_ptr> failed(stripes.size());
-    parallelFor(order, threads, [&](int i) {
-        try {
-            deflateStripe(rowBytes, writeRow, level, i + 1 == int(stripes.size()), stripes[i]);
-        } catch (...) {  // a helper thread must not throw
-            failed[i] = std::current_exception();
-        }
-    });
+    forChunks(
+        int(stripes.size()), threads,
+        [&](int i) {
+            try {
+                deflateStripe(rowBytes, writeRow, level, i + 1 == int(stripes.size()), stripes[i]);
+            } catch (...) {  // a helper thread must not throw
+                failed[i] = std::current_exception();
+            }
+        },
+        1);
     for (const std::exception_ptr& e : failed)
         if (e) std::rethrow_exception(e);
     std::vector<unsigned char> stream;

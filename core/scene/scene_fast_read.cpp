@@ -288,20 +288,22 @@ bool readSpheres(od::value v, std::vector<Sphere>& out) {
     out.resize(count);
     std::atomic<bool> read{true};
     std::atomic<std::size_t> nextPart{0};
-    std::vector<int> workers(std::min<std::size_t>(resolveThreadCount(0), parts.size()));
-    std::iota(workers.begin(), workers.end(), 0);
-    parallelFor(workers, int(workers.size()), [&](int) {
-        try {
-            SpherePartReader reader;
-            for (std::size_t p; read && (p = nextPart++) < parts.size();) {
-                const std::size_t first = p * kSpheresPerPart;
-                const std::size_t n = std::min(kSpheresPerPart, count - first);
-                if (!reader.read(parts[p], out.data() + first, n)) read = false;
+    const int workers = int(std::min<std::size_t>(resolveThreadCount(0), parts.size()));
+    forChunks(
+        workers, workers,
+        [&](int) {
+            try {
+                SpherePartReader reader;
+                for (std::size_t p; read && (p = nextPart++) < parts.size();) {
+                    const std::size_t first = p * kSpheresPerPart;
+                    const std::size_t n = std::min(kSpheresPerPart, count - first);
+                    if (!reader.read(parts[p], out.data() + first, n)) read = false;
+                }
+            } catch (const std::bad_alloc&) {
+                read = false;  // the full reader then runs out of memory in its turn
             }
-        } catch (const std::bad_alloc&) {  // the full reader then runs out of memory in its turn
-            read = false;
-        }
-    });
+        },
+        1);
     return read;
 }
 

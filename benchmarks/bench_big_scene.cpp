@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "base/heap_reuse.h"
 #include "big_scene.h"
 #include "editor/main_window.h"
 #include "scene/scene_io.h"
@@ -36,6 +37,7 @@ double median(std::vector<double> v) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    whitted::reuseHeapForLargeBlocks();  // as the editor's main() does
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
     const int count = argc > 1 ? std::atoi(argv[1]) : 100000;

@@ -24,6 +24,7 @@
 #include <cstdlib>
 #include <optional>
 
+#include "base/heap_reuse.h"
 #include "bench_scenes.h"
 #include "document/scene_document.h"
 #include "editor/main_window.h"
@@ -86,6 +87,7 @@ std::optional<Case> measure(MainWindow& window, Scene scene, int samples) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    whitted::reuseHeapForLargeBlocks();  // as the editor's main() does
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
     QStandardPaths::setTestModeEnabled(true);  // no autosave or settings of the user's
     QApplication app(argc, argv);

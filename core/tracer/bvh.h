@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -158,6 +159,16 @@ struct BvhCache {
         // none given) and the frame the centres were taken in.
         std::uint64_t geometryRevision = 0;
         glm::dvec3 frameOrigin{0.0};
+        // So that an edit of a few spheres refits and refills only where they
+        // lie (at a million spheres, whole passes were most of preparing a
+        // render): the centres and radii the tree was last fit to, each
+        // sphere's leaf and slot in leafSpheres (-1: not in the tree), each
+        // node's parent (-1: the root), and the eye the leaves' copies were
+        // last filled for.
+        std::vector<glm::dvec3> fitCentres;
+        std::vector<double> fitRadii;
+        std::vector<std::int32_t> leafOf, slotOf, parentOf;
+        std::optional<Vec<T>> filledForEye;
     };
     Entry<float> floats;
     Entry<double> doubles;
@@ -180,15 +191,17 @@ struct BvhCache {
 
 // The tree for these spheres: the one in `cache` as it is when the cache's
 // geometryRevision and `frameOrigin` are those it was kept for; else that one
-// refit when it holds as many spheres and the refit does not wear it out; else
-// built (and kept there). Without a cache, built lazily (BvhBuildOptions::lazy).
+// refit when it holds as many spheres and the refit does not wear it out (where
+// few spheres moved, only their leaves and the nodes above them); else built
+// (and kept there). Without a cache, built lazily (BvhBuildOptions::lazy).
 // Its leafSpheres are `spheres`' values, which must be the same spheres as
-// centres and radii (taken in the frame at `frameOrigin`). On up to `threads`
-// threads (0: every core).
+// centres and radii (taken in the frame at `frameOrigin`, their camera terms
+// for the eye at `eye`). On up to `threads` threads (0: every core).
 template <typename T>
 std::shared_ptr<const SphereBvh<T>> sphereBvhFor(std::span<const glm::dvec3> centres,
                                                  std::span<const double> radii,
                                                  const SphereSet<T>& spheres, BvhCache* cache,
-                                                 const glm::dvec3& frameOrigin, int threads = 0);
+                                                 const glm::dvec3& frameOrigin, const Vec<T>& eye,
+                                                 int threads = 0);
 
 }  // namespace whitted

@@ -1,8 +1,11 @@
 // The sphere BVH kept between renders (bvh.h, BvhCache): refit when the
 // spheres moved, rebuilt when their number changed or refits wore the tree
 // out (its SAH cost grew past kWornOut times the built one's).
+#include <algorithm>
 #include <atomic>
+#include <functional>
 #include <numeric>
+#include <optional>
 #include <vector>
 
 #include "base/parallel_for.h"
@@ -12,6 +15,35 @@
 namespace whitted {
 
 using namespace bvh_build;
+
+namespace {
+
+// A leaf's box from its spheres' boxes, grown in double and rounded outward
+// once: rounding is monotonic, so that is the box the build's per-sphere
+// rounding gives, for a sixth of the roundings.
+template <typename T>
+void refitLeaf(SphereBvh<T>& bvh, int i, std::span<const glm::dvec3> centres,
+               std::span<const double> radii) {
+    BvhNode& leaf = bvh.nodes[i];
+    LaneBox<double> box;
+    for (int j = leaf.first; j < leaf.first + leaf.count; ++j) {
+        const std::int32_t k = bvh.leafSpheres[j].index;
+        box.grow(sphereBox(centres[k], radii[k]));
+    }
+    storeBox(leaf, box);
+}
+
+// An inner node's box from its two children's.
+template <typename T>
+void refitInner(SphereBvh<T>& bvh, int i) {
+    BvhNode& node = bvh.nodes[i];
+    LaneBox<double> box;
+    box.grow(boxOf<double>(bvh.nodes[node.first]));
+    box.grow(boxOf<double>(bvh.nodes[node.first + 1]));
+    storeBox(node, box);
+}
+
+}  // namespace
 
 template <typename T>
 bool refitSphereBvh(SphereBvh<T>& bvh, std::span<const glm::dvec3> centres,
@@ -25,29 +57,14 @@ bool refitSphereBvh(SphereBvh<T>& bvh, std::span<const glm::dvec3> centres,
     });
     if (!inTree) return false;
     // The leaves first, on every thread: they hold every sphere, and so most of
-    // the work. Their boxes are grown in double and rounded outward once per
-    // node: rounding is monotonic, so that is the box the build's per-sphere
-    // rounding gives, for a sixth of the roundings.
+    // the work.
     forChunks(static_cast<int>(bvh.nodes.size()), threads, [&](int i) {
-        BvhNode& leaf = bvh.nodes[i];
-        if (leaf.count <= 0) return;
-        LaneBox<double> box;
-        for (int j = leaf.first; j < leaf.first + leaf.count; ++j) {
-            const std::int32_t k = bvh.leafSpheres[j].index;
-            box.grow(sphereBox(centres[k], radii[k]));
-        }
-        storeBox(leaf, box);
+        if (bvh.nodes[i].count > 0) refitLeaf(bvh, i, centres, radii);
     });
     // Then the inner nodes: children always come after their parent (the
     // build), so one pass from the end meets every child before its parent.
-    for (std::size_t i = bvh.nodes.size(); i-- > 0;) {
-        BvhNode& node = bvh.nodes[i];
-        if (node.count >= 0) continue;  // a leaf, or the padding
-        LaneBox<double> box;
-        box.grow(boxOf<double>(bvh.nodes[node.first]));
-        box.grow(boxOf<double>(bvh.nodes[node.first + 1]));
-        storeBox(node, box);
-    }
+    for (int i = static_cast<int>(bvh.nodes.size()); i-- > 0;)
+        if (bvh.nodes[i].count < 0) refitInner(bvh, i);  // not a leaf, nor the padding
     return true;
 }
 
@@ -78,13 +95,108 @@ void fillLeafSpheres(SphereBvh<T>& bvh, const SphereSet<T>& spheres, int threads
               [&](int i) { bvh.leafSpheres[i] = spheres.leafSphere(bvh.leafSpheres[i].index); });
 }
 
+// Where each sphere lies in the kept tree, and each node's parent; and the
+// centres and radii it was fit to.
+template <typename T>
+void indexKeptTree(BvhCache::Entry<T>& kept, std::span<const glm::dvec3> centres,
+                   std::span<const double> radii, int threads) {
+    const SphereBvh<T>& bvh = *kept.tree;
+    kept.leafOf.assign(radii.size(), -1);
+    kept.slotOf.assign(radii.size(), -1);
+    kept.parentOf.assign(bvh.nodes.size(), -1);
+    // Each node writes its own spheres' entries and its own children's.
+    forChunks(static_cast<int>(bvh.nodes.size()), threads, [&](int i) {
+        const BvhNode& node = bvh.nodes[i];
+        if (node.count < 0) {
+            kept.parentOf[node.first] = kept.parentOf[node.first + 1] = i;
+            return;
+        }
+        for (int j = node.first; j < node.first + node.count; ++j) {
+            const std::int32_t k = bvh.leafSpheres[j].index;
+            kept.leafOf[k] = i;
+            kept.slotOf[k] = j;
+        }
+    });
+    kept.fitCentres.assign(centres.begin(), centres.end());
+    kept.fitRadii.assign(radii.begin(), radii.end());
+}
+
+// Past this share of the spheres moved, a whole refit: it passes over the
+// nodes in parallel, the walks up from each leaf one at a time.
+constexpr std::size_t kFewMovedDivisor = 16;
+
+// The spheres whose centre or radius differs from the tree's last fit, in
+// index order; none when too many did for a refit of the few.
+template <typename T>
+std::optional<std::vector<std::int32_t>> movedSpheres(const BvhCache::Entry<T>& kept,
+                                                      std::span<const glm::dvec3> centres,
+                                                      std::span<const double> radii, int threads) {
+    const int count = static_cast<int>(radii.size());
+    if (kept.fitRadii.size() != radii.size()) return std::nullopt;
+    std::vector<std::vector<std::int32_t>> chunkMoved(chunkCount(count));
+    forEachChunk(count, threads, [&](int c, int begin, int end) {
+        for (int k = begin; k < end; ++k)
+            if (centres[k] != kept.fitCentres[k] || radii[k] != kept.fitRadii[k])
+                chunkMoved[c].push_back(k);
+    });
+    std::vector<std::int32_t> moved;
+    for (const std::vector<std::int32_t>& part : chunkMoved)
+        moved.insert(moved.end(), part.begin(), part.end());
+    if (moved.size() > radii.size() / kFewMovedDivisor) return std::nullopt;
+    return moved;
+}
+
+// The boxes of the moved spheres' leaves and of every node above them, in
+// the whole refit's order (children before parents), so each box is the one
+// a whole refit would give. False, with the tree as it was, when a moved
+// sphere is beyond what a tree in T can bound.
+template <typename T>
+bool refitMoved(BvhCache::Entry<T>& kept, std::span<const std::int32_t> moved,
+                std::span<const glm::dvec3> centres, std::span<const double> radii) {
+    SphereBvh<T>& bvh = *kept.tree;
+    std::vector<std::int32_t> dirty;
+    for (const std::int32_t k : moved) {
+        if (kept.leafOf[k] < 0) continue;  // kept out of the tree
+        if (!inReach<T>(centres[k], radii[k])) return false;
+        for (std::int32_t i = kept.leafOf[k]; i >= 0; i = kept.parentOf[i]) dirty.push_back(i);
+    }
+    std::sort(dirty.begin(), dirty.end(), std::greater<>());
+    dirty.erase(std::unique(dirty.begin(), dirty.end()), dirty.end());
+    for (const std::int32_t i : dirty) {
+        if (bvh.nodes[i].count > 0)
+            refitLeaf(bvh, i, centres, radii);
+        else
+            refitInner(bvh, i);
+    }
+    for (const std::int32_t k : moved) {
+        kept.fitCentres[k] = centres[k];
+        kept.fitRadii[k] = radii[k];
+    }
+    return true;
+}
+
+// The leaves' copies: only the moved spheres' when the eye is where the last
+// fill saw it (every sphere's camera term depends on it), else all.
+template <typename T>
+void refillKeptLeaves(BvhCache::Entry<T>& kept, const SphereSet<T>& spheres, const Vec<T>& eye,
+                      std::span<const std::int32_t> moved, int threads) {
+    if (kept.filledForEye != eye) {
+        fillLeafSpheres(*kept.tree, spheres, threads);
+        kept.filledForEye = eye;
+        return;
+    }
+    for (const std::int32_t k : moved)
+        if (kept.slotOf[k] >= 0) kept.tree->leafSpheres[kept.slotOf[k]] = spheres.leafSphere(k);
+}
+
 }  // namespace
 
 template <typename T>
 std::shared_ptr<const SphereBvh<T>> sphereBvhFor(std::span<const glm::dvec3> centres,
                                                  std::span<const double> radii,
                                                  const SphereSet<T>& spheres, BvhCache* cache,
-                                                 const glm::dvec3& frameOrigin, int threads) {
+                                                 const glm::dvec3& frameOrigin, const Vec<T>& eye,
+                                                 int threads) {
     threads = resolveThreadCount(threads);
     BvhBuildOptions build;
     build.threads = threads;
@@ -97,24 +209,37 @@ std::shared_ptr<const SphereBvh<T>> sphereBvhFor(std::span<const glm::dvec3> cen
     BvhCache::Entry<T>& kept = cache->entry<T>();
     // use_count 1: no earlier render still reads the tree being refit or refilled.
     const bool keptAlone = kept.tree && kept.tree.use_count() == 1 && kept.spheres == radii.size();
-    if (keptAlone && cache->geometryRevision != 0 &&
-        kept.geometryRevision == cache->geometryRevision && kept.frameOrigin == frameOrigin) {
-        fillLeafSpheres(*kept.tree, spheres, threads);  // the eye may have moved in the frame
+    const bool sameFrame = keptAlone && kept.frameOrigin == frameOrigin;
+    if (sameFrame && cache->geometryRevision != 0 &&
+        kept.geometryRevision == cache->geometryRevision) {
+        refillKeptLeaves(kept, spheres, eye, {}, threads);
         ++cache->reuses;
         return kept.tree;
     }
     kept.geometryRevision = cache->geometryRevision;
+    // A refit of the few moved spheres gives the boxes a whole refit would.
+    const auto moved = sameFrame ? movedSpheres(kept, centres, radii, threads) : std::nullopt;
+    const bool refit = moved ? refitMoved(kept, *moved, centres, radii)
+                             : keptAlone && refitSphereBvh(*kept.tree, centres, radii, threads);
     kept.frameOrigin = frameOrigin;
-    if (keptAlone && refitSphereBvh(*kept.tree, centres, radii, threads) &&
-        sahCost(*kept.tree, threads) <= BvhCache::kWornOut * kept.builtCost) {
-        fillLeafSpheres(*kept.tree, spheres, threads);
+    if (refit && sahCost(*kept.tree, threads) <= BvhCache::kWornOut * kept.builtCost) {
+        if (moved) {
+            refillKeptLeaves(kept, spheres, eye, *moved, threads);
+        } else {
+            kept.fitCentres.assign(centres.begin(), centres.end());
+            kept.fitRadii.assign(radii.begin(), radii.end());
+            fillLeafSpheres(*kept.tree, spheres, threads);
+            kept.filledForEye = eye;
+        }
         ++cache->refits;
         return kept.tree;
     }
     kept.tree = std::make_shared<SphereBvh<T>>(buildSphereBvh<T>(centres, radii, build));
     fillLeafSpheres(*kept.tree, spheres, threads);
+    kept.filledForEye = eye;
     kept.spheres = radii.size();
     kept.builtCost = sahCost(*kept.tree, threads);
+    indexKeptTree(kept, centres, radii, threads);
     ++cache->builds;
     return kept.tree;
 }
@@ -125,7 +250,7 @@ std::shared_ptr<const SphereBvh<T>> sphereBvhFor(std::span<const glm::dvec3> cen
     template double sahCost<T>(const SphereBvh<T>&, int);                                     \
     template std::shared_ptr<const SphereBvh<T>> sphereBvhFor<T>(                             \
         std::span<const glm::dvec3>, std::span<const double>, const SphereSet<T>&, BvhCache*, \
-        const glm::dvec3&, int);
+        const glm::dvec3&, const Vec<T>&, int);
 WHITTED_BVH_REFIT(float)
 WHITTED_BVH_REFIT(double)
 #undef WHITTED_BVH_REFIT

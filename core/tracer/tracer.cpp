@@ -210,8 +210,8 @@ PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache, int thread
     threads = resolveThreadCount(threads);
     prepareSpheres(scene, s, bvh, threads);
     if (useBvh) {
-        s.bvh =
-            sphereBvhFor<T>(bvh.centres, bvh.radii, s.spheres, bvhCache, s.frameOrigin, threads);
+        s.bvh = sphereBvhFor<T>(bvh.centres, bvh.radii, s.spheres, bvhCache, s.frameOrigin,
+                                s.camera.origin, threads);
         s.useBvh = true;
     } else {
         s.screenBoxes = sphereScreenBoxes(s.camera, s.spheres);

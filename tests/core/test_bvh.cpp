@@ -540,6 +540,62 @@ TEST(BvhReuse, SameGeometryRevision_UsesTheTreeAsItIs_NewMaterialsShow) {
     }
 }
 
+// The centres and radii of `scene` as the tree holds them: in the frame at `origin`.
+std::pair<std::vector<glm::dvec3>, std::vector<double>> geometryInFrame(const Scene& scene,
+                                                                        const glm::dvec3& origin) {
+    auto [centres, radii] = geometryOf(scene);
+    for (glm::dvec3& c : centres) c -= origin;
+    return {centres, radii};
+}
+
+// An edit of a few spheres refits only their leaves and the nodes above them,
+// and refills only their leaves' copies while the eye stays: the kept tree is
+// still the built one refit whole, box for box and bit for bit, and every
+// leaf's copy is its prepared sphere's. Then the eye moves: every copy follows.
+template <typename T>
+void expectRefitOfFewLikeAWholeRefit() {
+    Scene scene = randomScene(3000, Layout::Field, testSeed(65), true);
+    BvhCache cache;
+    cache.geometryRevision = 1;
+    const glm::dvec3 origin = prepareScene<T>(scene, &cache, 2).frameOrigin;
+    SphereBvh<T> whole = buildSphereBvh<T>(geometryInFrame(scene, origin).first,
+                                           geometryInFrame(scene, origin).second);
+    std::mt19937 rng(testSeed(66));
+    std::uniform_real_distribution<double> step(-0.5, 0.5);
+    for (int edit = 0; edit < 4; ++edit) {
+        SCOPED_TRACE("edit " + std::to_string(edit));
+        for (int k = 0; k < 12; ++k) {
+            Sphere& sp = scene.spheres[rng() % (scene.spheres.size() - 1)];  // not the floor
+            sp.center += Vec3{step(rng), step(rng), step(rng)};
+            sp.radius *= 1.0 + 0.2 * step(rng);
+        }
+        if (edit == 3) scene.camera.position.y += 1e-9;  // the eye moves, in the same frame
+        cache.geometryRevision = edit + 2;
+        const PreparedScene<T> s = prepareScene<T>(scene, &cache, 2);
+        ASSERT_EQ(s.frameOrigin, origin);
+        ASSERT_EQ(cache.builds, 1);
+        ASSERT_EQ(cache.refits, edit + 1);
+        const auto [centres, radii] = geometryInFrame(scene, origin);
+        ASSERT_TRUE(refitSphereBvh(whole, centres, radii));
+        ASSERT_EQ(s.bvh->nodes.size(), whole.nodes.size());
+        for (std::size_t i = 0; i < whole.nodes.size(); ++i)
+            ASSERT_EQ(std::memcmp(&s.bvh->nodes[i], &whole.nodes[i], sizeof(BvhNode)), 0)
+                << "node " << i;
+        for (std::size_t j = 0; j < s.bvh->leafSpheres.size(); ++j) {
+            const LeafSphere<T>& kept = s.bvh->leafSpheres[j];
+            const LeafSphere<T> prepared = s.spheres.leafSphere(kept.index);
+            ASSERT_TRUE(kept.centre == prepared.centre && kept.rrHi == prepared.rrHi &&
+                        kept.cameraC == prepared.cameraC)
+                << "slot " << j;
+        }
+    }
+}
+
+TEST(BvhRefit, FewMovedSpheres_RefitAndRefilledLikeTheWholeTree) {
+    expectRefitOfFewLikeAWholeRefit<float>();
+    expectRefitOfFewLikeAWholeRefit<double>();
+}
+
 // A refit of spheres that did not move gives the build's boxes bit for bit:
 // it rounds each node's box outward once where the build rounded each sphere's,
 // which is the same box.

@@ -558,8 +558,8 @@ void expectRefitOfFewLikeAWholeRefit() {
     BvhCache cache;
     cache.geometryRevision = 1;
     const glm::dvec3 origin = prepareScene<T>(scene, &cache, 2).frameOrigin;
-    SphereBvh<T> whole = buildSphereBvh<T>(geometryInFrame(scene, origin).first,
-                                           geometryInFrame(scene, origin).second);
+    const auto [builtCentres, builtRadii] = geometryInFrame(scene, origin);
+    SphereBvh<T> whole = buildSphereBvh<T>(builtCentres, builtRadii);
     std::mt19937 rng(testSeed(66));
     std::uniform_real_distribution<double> step(-0.5, 0.5);
     for (int edit = 0; edit < 4; ++edit) {

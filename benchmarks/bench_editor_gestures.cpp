@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <vector>
 
 #include "base/heap_reuse.h"
@@ -229,6 +230,8 @@ int main(int argc, char** argv) {
     const Scene seed = whitted::loadScene(WHITTED_SCENES_DIR "/seed.json");
     reportMoves("seed scene:", seed, moves);
     reportMoves("100,000 balls:", whitted::bench::bigScene(100000), moves);
+    const std::string bigLabel = std::to_string(big) + " balls:";
+    reportMoves(bigLabel.c_str(), whitted::bench::bigScene(big), moves);
     bigField(big);
     std::printf("(ratio = figure / target; at most 1.00 meets the target)\n");
     return 0;

@@ -4,6 +4,7 @@
 // constrain it, Ctrl snaps, Escape puts it back bit for bit, and each move is
 // one undo step that the saved file holds.
 #include <QInputDialog>
+#include <QLabel>
 #include <QPointer>
 #include <QSettings>
 #include <QStatusBar>
@@ -189,6 +190,11 @@ TEST_F(ViewMoveTest, ShiftD_ACopyFollowsThePointer_TheOriginalStays_OneUndoStep)
     EXPECT_LT(project(s, copy.center).x(), project(s, ball().center).x() - 5) << "moved left";
     EXPECT_EQ(doc->undoStack()->count(), steps + 1);
     EXPECT_EQ(doc->undoStack()->undoText(), QString("Duplicate and move blue ball"));
+    // The sphere page counts its material's users over every sphere once the
+    // move has ended, not on each step: the copy shares the original's.
+    const auto* users = window->findChild<QLabel*>(QStringLiteral("sphereMaterialUsers"));
+    ASSERT_NE(users, nullptr);
+    EXPECT_EQ(users->text(), QStringLiteral("Shared by 2 spheres"));
     doc->undoStack()->undo();
     EXPECT_EQ(doc->scene(), before);
 }

@@ -310,5 +310,43 @@ TEST(FloatRangeWarningTest, ChecksAgainOnlyWhenWhatItReadsChanged) {
     EXPECT_EQ(checks, 6);
 }
 
+// A drag (a gesture) moves a sphere on every pointer event: the check over
+// every sphere waits for its end, then runs once, and the warning shows what the
+// drag left. A drag cancelled back to where it began checks once too.
+TEST(FloatRangeWarningTest, DuringADrag_ChecksOnceItEnds) {
+    SceneDocument doc;
+    doc.reset(test::seedScene(), QString());
+    QWidget bar;
+    int checks = 0;
+    const FloatRangeCheck counted = [&](const Scene& s) -> std::optional<std::string> {
+        ++checks;
+        if (s.spheres[0].center.z < 100) return std::nullopt;
+        return s.spheres[0].name + " is far";
+    };
+    auto* warning = new FloatRangeWarning(&doc, counted, &bar);
+    bar.show();
+    ASSERT_EQ(checks, 1);
+    auto drag = [&](double toZ) {
+        doc.beginGesture(QStringLiteral("Move"));
+        for (double z : {50.0, 150.0, toZ})
+            ASSERT_TRUE(doc.editItem<Sphere>(0, QStringLiteral("Move"),
+                                             [z](Sphere& sp) { sp.center.z = z; }));
+    };
+    drag(200.0);
+    EXPECT_EQ(checks, 1) << "checked while the drag lasted";
+    EXPECT_FALSE(warning->isVisibleTo(&bar));
+    doc.endGesture();
+    EXPECT_EQ(checks, 2);
+    EXPECT_TRUE(warning->isVisibleTo(&bar));
+    EXPECT_TRUE(warning->text().contains(QStringLiteral("blue ball is far")));
+
+    const double before = doc.scene().spheres[0].center.z;
+    drag(before);  // and cancelled: back where it began
+    doc.discardGesture();
+    EXPECT_EQ(checks, 3);
+    EXPECT_TRUE(warning->isVisibleTo(&bar));
+    EXPECT_EQ(doc.scene().spheres[0].center.z, before);
+}
+
 }  // namespace
 }  // namespace whitted::ui

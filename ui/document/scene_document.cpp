@@ -418,7 +418,9 @@ void SceneDocument::beginGesture(const QString& text) {
 
 void SceneDocument::endGesture() {
     if (gestureDepth_ == 0) return;
-    if (--gestureDepth_ == 0) undo_.endMacro();
+    if (--gestureDepth_ > 0) return;
+    undo_.endMacro();
+    emit gestureEnded();
 }
 
 void SceneDocument::discardGesture() {
@@ -430,6 +432,7 @@ void SceneDocument::discardGesture() {
     auto* step = const_cast<QUndoCommand*>(undo_.command(undo_.index() - 1));
     step->setObsolete(true);
     undo_.undo();
+    emit gestureEnded();
 }
 
 QString SceneDocument::uniqueName(ItemKind kind, const QString& stem) const {

@@ -99,6 +99,10 @@ class SceneDocument : public QObject {
     // Everything edited between these two calls is a single undo step (a slider drag).
     void beginGesture(const QString& text);
     void endGesture();
+    // Between beginGesture() and the end of the outermost gesture (a drag of
+    // G, S or a slider): a listener may put off work over every sphere until
+    // gestureEnded().
+    bool inGesture() const { return gestureDepth_ > 0; }
     // Ends the gesture and forgets its step, which must leave the scene as it
     // found it: a gesture the user cancelled after its last edit put the scene
     // back (Escape during a move in the view). Nothing is left to redo. Inside
@@ -114,6 +118,9 @@ class SceneDocument : public QObject {
     void sceneChanged();
     // Items were added, removed, renamed or reordered (list models reset on it).
     void structureChanged();
+    // The outermost gesture ended or was discarded: what listeners put off
+    // while it lasted is due.
+    void gestureEnded();
     void filePathChanged(const QString& path);
     void modifiedChanged(bool modified);
 

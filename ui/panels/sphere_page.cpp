@@ -167,6 +167,9 @@ void SpherePage::refreshMaterialChoice(const Sphere& sphere) {
         material_->setPlaceholderText(tr("mixed"));
         material_->setCurrentIndex(mixed ? -1 : findMaterial(scene, sphere.material));
     }
+    // Counted over every sphere: not on each step of a gesture (at a million
+    // spheres, a third of each G move) but once it ends (PropertyPanel).
+    if (doc_->inGesture()) return;
     const int users = spheresUsing(scene, sphere.material);
     users_->setText(material_->currentIndex() < 0
                         ? tr("%1 materials: the rows below set them all").arg(materials_.size())

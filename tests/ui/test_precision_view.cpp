@@ -277,20 +277,33 @@ TEST(FloatRangeWarningTest, StandInCheck_ShowsReason_ClickSwitchesToDouble_UndoR
     EXPECT_TRUE(warning->isVisibleTo(&bar));
 }
 
+// The seed's document under a shown warning whose stand-in check counts its
+// runs and finds the first sphere far from z = 100 on.
+struct CountedWarning {
+    SceneDocument doc;
+    QWidget bar;
+    int checks = 0;
+    FloatRangeWarning* warning = nullptr;
+
+    CountedWarning() {
+        doc.reset(test::seedScene(), QString());
+        const FloatRangeCheck counted = [this](const Scene& s) -> std::optional<std::string> {
+            ++checks;
+            if (s.spheres[0].center.z < 100) return std::nullopt;
+            return s.spheres[0].name + " is far";
+        };
+        warning = new FloatRangeWarning(&doc, counted, &bar);
+        bar.show();
+    }
+};
+
 // The check reads every sphere: it runs again when what it reads changed (a
 // move, a rename, a light, the camera), not when a sphere takes another material.
 TEST(FloatRangeWarningTest, ChecksAgainOnlyWhenWhatItReadsChanged) {
-    SceneDocument doc;
-    doc.reset(test::seedScene(), QString());
-    QWidget bar;
-    int checks = 0;
-    const FloatRangeCheck counted = [&](const Scene& s) -> std::optional<std::string> {
-        ++checks;
-        if (s.spheres[0].center.z < 100) return std::nullopt;
-        return s.spheres[0].name + " is far";
-    };
-    auto* warning = new FloatRangeWarning(&doc, counted, &bar);
-    bar.show();
+    CountedWarning shown;
+    SceneDocument& doc = shown.doc;
+    const int& checks = shown.checks;
+    FloatRangeWarning* warning = shown.warning;
     ASSERT_EQ(checks, 1);
     auto edit = [&](const std::function<void(Scene&)>& change) {
         ASSERT_TRUE(doc.edit(QStringLiteral("edit"), change));
@@ -314,17 +327,9 @@ TEST(FloatRangeWarningTest, ChecksAgainOnlyWhenWhatItReadsChanged) {
 // every sphere waits for its end, then runs once, and the warning shows what the
 // drag left. A drag cancelled back to where it began checks once too.
 TEST(FloatRangeWarningTest, DuringADrag_ChecksOnceItEnds) {
-    SceneDocument doc;
-    doc.reset(test::seedScene(), QString());
-    QWidget bar;
-    int checks = 0;
-    const FloatRangeCheck counted = [&](const Scene& s) -> std::optional<std::string> {
-        ++checks;
-        if (s.spheres[0].center.z < 100) return std::nullopt;
-        return s.spheres[0].name + " is far";
-    };
-    auto* warning = new FloatRangeWarning(&doc, counted, &bar);
-    bar.show();
+    CountedWarning shown;
+    SceneDocument& doc = shown.doc;
+    const int& checks = shown.checks;
     ASSERT_EQ(checks, 1);
     auto drag = [&](double toZ) {
         doc.beginGesture(QStringLiteral("Move"));
@@ -334,17 +339,17 @@ TEST(FloatRangeWarningTest, DuringADrag_ChecksOnceItEnds) {
     };
     drag(200.0);
     EXPECT_EQ(checks, 1) << "checked while the drag lasted";
-    EXPECT_FALSE(warning->isVisibleTo(&bar));
+    EXPECT_FALSE(shown.warning->isVisibleTo(&shown.bar));
     doc.endGesture();
     EXPECT_EQ(checks, 2);
-    EXPECT_TRUE(warning->isVisibleTo(&bar));
-    EXPECT_TRUE(warning->text().contains(QStringLiteral("blue ball is far")));
+    EXPECT_TRUE(shown.warning->isVisibleTo(&shown.bar));
+    EXPECT_TRUE(shown.warning->text().contains(QStringLiteral("blue ball is far")));
 
     const double before = doc.scene().spheres[0].center.z;
     drag(before);  // and cancelled: back where it began
     doc.discardGesture();
     EXPECT_EQ(checks, 3);
-    EXPECT_TRUE(warning->isVisibleTo(&bar));
+    EXPECT_TRUE(shown.warning->isVisibleTo(&shown.bar));
     EXPECT_EQ(doc.scene().spheres[0].center.z, before);
 }
 

@@ -48,7 +48,6 @@ PropertyPanel::PropertyPanel(SceneDocument* doc, QWidget* parent)
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(pages_);
     connect(doc_, &SceneDocument::sceneChanged, this, &PropertyPanel::refresh);
-    connect(doc_, &SceneDocument::gestureEnded, this, &PropertyPanel::refresh);
     connect(doc_->selection(), &SceneSelection::changed, this, &PropertyPanel::refresh);
     refresh();
 }

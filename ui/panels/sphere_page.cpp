@@ -167,10 +167,17 @@ void SpherePage::refreshMaterialChoice(const Sphere& sphere) {
         material_->setPlaceholderText(tr("mixed"));
         material_->setCurrentIndex(mixed ? -1 : findMaterial(scene, sphere.material));
     }
-    // Counted over every sphere: not on each step of a gesture (at a million
-    // spheres, a third of each G move) but once it ends (PropertyPanel).
-    if (doc_->inGesture()) return;
-    const int users = spheresUsing(scene, sphere.material);
+    // Counted over every sphere, which at a million was a third of each G
+    // move: during a gesture only when it added a sphere (Shift+D, Shift+A) or
+    // the page shows another material, since moving, scaling and setting
+    // values leave it as it was.
+    if (!doc_->inGesture() || sphere.material != countedMaterial_ ||
+        scene.spheres.size() != countedAmong_) {
+        usersCount_ = spheresUsing(scene, sphere.material);
+        countedMaterial_ = sphere.material;
+        countedAmong_ = scene.spheres.size();
+    }
+    const int users = usersCount_;
     users_->setText(material_->currentIndex() < 0
                         ? tr("%1 materials: the rows below set them all").arg(materials_.size())
                     : users > 1 ? tr("Shared by %1 spheres").arg(users)

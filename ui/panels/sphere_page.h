@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <QWidget>
@@ -49,6 +50,11 @@ class SpherePage : public QWidget {
     std::vector<DoubleField*> fields_;
     std::unique_ptr<MaterialRows> materialRows_;
     std::vector<int> materials_;  // materialTargets() at the last refresh
+    // The count of the spheres sharing the shown material, and what it was
+    // counted for: the material and how many spheres there were.
+    int usersCount_ = 0;
+    std::string countedMaterial_;
+    std::size_t countedAmong_ = 0;
 };
 
 }  // namespace whitted::ui

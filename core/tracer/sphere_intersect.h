@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <type_traits>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -107,13 +108,16 @@ T accurateOffsetSquared(const Vec<T>& o, const Vec<T>& centre, const Vec<T>& cen
 }
 
 // accurateOffsetSquared() for every lane of a SIMD vector V of T, operation
-// for operation, so each lane gets what the scalar function gives its origin.
-template <typename V, typename T>
-V accurateOffsetSquaredLanes(const V (&o)[3], const Vec<T>& centre, const Vec<T>& centreLo, T rrHi,
-                             T rrLo) {
+// for operation, so each lane gets what the scalar function gives its origin
+// and sphere: a sphere a lane (the camera terms of many spheres) or, below,
+// one sphere for every lane.
+template <typename V>
+V accurateOffsetSquaredOfLanes(const V (&o)[3], const V (&centre)[3], const V (&centreLo)[3],
+                               const V& rrHi, const V& rrLo) {
+    using T = std::remove_cvref_t<decltype(rrHi[0])>;
     V fh[3], fl[3], p[3], pe[3];
     for (int i = 0; i < 3; ++i) {
-        exact::twoSum<V>(o[i], -(V{} + centre[i]), fh[i], fl[i]);  // -c exactly, as its sign
+        exact::twoSum<V>(o[i], -centre[i], fh[i], fl[i]);  // -c exactly, as its sign
         fl[i] = fl[i] - centreLo[i];
         exact::twoSquareLanes<V, T>(fh[i], p[i], pe[i]);
     }
@@ -122,11 +126,19 @@ V accurateOffsetSquaredLanes(const V (&o)[3], const Vec<T>& centre, const Vec<T>
     err = err + e;
     exact::twoSum<V>(s, p[2], s, e);
     err = err + e;
-    exact::twoSum<V>(s, -(V{} + rrHi), s, e);
+    exact::twoSum<V>(s, -rrHi, s, e);
     err = err + e;
     V small = pe[0] + pe[1] + pe[2] - rrLo;
     for (int i = 0; i < 3; ++i) small = small + fl[i] * (T(2) * fh[i] + fl[i]);
     return s + (err + small);
+}
+
+template <typename V, typename T>
+V accurateOffsetSquaredLanes(const V (&o)[3], const Vec<T>& centre, const Vec<T>& centreLo, T rrHi,
+                             T rrLo) {
+    const V c[3] = {V{} + centre[0], V{} + centre[1], V{} + centre[2]};
+    const V cLo[3] = {V{} + centreLo[0], V{} + centreLo[1], V{} + centreLo[2]};
+    return accurateOffsetSquaredOfLanes(o, c, cLo, V{} + rrHi, V{} + rrLo);
 }
 
 // Roots of the ray o + t d (d unit length) against the sphere, or nothing on a miss.

@@ -68,12 +68,16 @@ struct SphereSet {
     // two-term double, as a translation in double leaves it) and radius r, both
     // in this set's frame.
     void set(int k, const glm::dvec3& c, const glm::dvec3& cLo, double r, const Vec<T>& camera) {
+        place(k, c, cLo, r);
+        cameraC[k] = accurateOffsetSquared(camera, centre[k], centreLo[k], rrHi[k], rrLo[k]);
+    }
+    // set() but the camera term, which is left for the caller to compute.
+    void place(int k, const glm::dvec3& c, const glm::dvec3& cLo, double r) {
         for (int i = 0; i < 3; ++i) split(c[i], cLo[i], centre[k][i], centreLo[k][i]);
         double rr, rrErr;
         exact::twoProduct(r, r, rr, rrErr);
         split(rr, rrErr, rrHi[k], rrLo[k]);
         split(r, 0.0, radius[k], radiusLo[k]);
-        cameraC[k] = accurateOffsetSquared(camera, centre[k], centreLo[k], rrHi[k], rrLo[k]);
     }
     // The same, as a sphere more.
     void add(const glm::dvec3& c, const glm::dvec3& cLo, double r, const Vec<T>& camera) {

@@ -2,6 +2,8 @@
 // exactly the roots of the scalar intersectSphere() for every lane, or renders
 // would depend on which rays happen to share a packet. Seeded random rays, seed
 // printed on failure.
+#include <cmath>
+#include <cstring>
 #include <random>
 #include <string>
 
@@ -297,6 +299,40 @@ TEST(RayPacket, TwoTermCentreKeepsWhatFloatDrops) {
     EXPECT_EQ(s.centreLo[0].x, 0.0f);
     // c = |camera - centre|^2 - r^2 = 99999.85^2 - 99999^2 = 170000.0225
     EXPECT_NEAR(s.cameraC[0], 170000.0225, 0.02);
+}
+
+// Preparing a scene gives each sphere the camera term the scalar function
+// gives it, bit for bit, though many are computed a SIMD vector at a time:
+// spheres near and far, tiny and huge (the seed's floor scaled by 1e4), a
+// count that leaves a remainder beside the vectors.
+template <typename T>
+void expectCameraTermsLikeTheScalarOnes() {
+    Scene scene = test::seedScene();
+    std::mt19937 rng(71);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int k = 0; k < 203; ++k) {
+        const double scale = std::pow(10.0, 4 * unit(rng));
+        Sphere sp = scene.spheres[0];
+        sp.name = "ball " + std::to_string(k);
+        sp.center = Vec3{unit(rng), unit(rng), unit(rng)} * (10 * scale);
+        sp.radius = scale * (0.01 + std::abs(unit(rng)));
+        scene.spheres.push_back(sp);
+    }
+    scene.spheres[3].center *= 1e4;
+    scene.spheres[3].radius *= 1e4;
+    const PreparedScene<T> s = prepareScene<T>(scene);
+    for (int k = 0; k < s.spheres.count(); ++k) {
+        const T scalar =
+            accurateOffsetSquared(s.camera.origin, s.spheres.centre[k], s.spheres.centreLo[k],
+                                  s.spheres.rrHi[k], s.spheres.rrLo[k]);
+        ASSERT_EQ(std::memcmp(&s.spheres.cameraC[k], &scalar, sizeof scalar), 0)
+            << "sphere " << k << ": " << s.spheres.cameraC[k] << " against " << scalar;
+    }
+}
+
+TEST(RayPacket, PreparedCameraTermsEqualTheScalarOnes) {
+    expectCameraTermsLikeTheScalarOnes<float>();
+    expectCameraTermsLikeTheScalarOnes<double>();
 }
 
 }  // namespace

@@ -94,6 +94,22 @@ void fillLeafSpheres(SphereBvh<T>& bvh, const SphereSet<T>& spheres, int threads
               [&](int i) { bvh.leafSpheres[i] = spheres.leafSphere(bvh.leafSpheres[i].index); });
 }
 
+// Every leaf's copy of its sphere, for the eye at `eye`.
+template <typename T>
+void fillKeptLeaves(BvhCache::Entry<T>& kept, const SphereSet<T>& spheres, const Vec<T>& eye,
+                    int threads) {
+    fillLeafSpheres(*kept.tree, spheres, threads);
+    kept.filledForEye = eye;
+}
+
+// The centres and radii the kept tree is now fit to.
+template <typename T>
+void rememberFit(BvhCache::Entry<T>& kept, std::span<const glm::dvec3> centres,
+                 std::span<const double> radii) {
+    kept.fitCentres.assign(centres.begin(), centres.end());
+    kept.fitRadii.assign(radii.begin(), radii.end());
+}
+
 // Where each sphere lies in the kept tree, and each node's parent; and the
 // centres and radii it was fit to.
 template <typename T>
@@ -116,8 +132,7 @@ void indexKeptTree(BvhCache::Entry<T>& kept, std::span<const glm::dvec3> centres
             kept.slotOf[k] = j;
         }
     });
-    kept.fitCentres.assign(centres.begin(), centres.end());
-    kept.fitRadii.assign(radii.begin(), radii.end());
+    rememberFit(kept, centres, radii);
 }
 
 // Past this share of the spheres moved, a whole refit, which passes over the
@@ -182,8 +197,7 @@ template <typename T>
 void refillKeptLeaves(BvhCache::Entry<T>& kept, const SphereSet<T>& spheres, const Vec<T>& eye,
                       std::span<const std::int32_t> moved, int threads) {
     if (kept.filledForEye != eye) {
-        fillLeafSpheres(*kept.tree, spheres, threads);
-        kept.filledForEye = eye;
+        fillKeptLeaves(kept, spheres, eye, threads);
         return;
     }
     for (const std::int32_t k : moved)
@@ -227,17 +241,14 @@ std::shared_ptr<const SphereBvh<T>> sphereBvhFor(std::span<const glm::dvec3> cen
         if (moved) {
             refillKeptLeaves(kept, spheres, eye, *moved, threads);
         } else {
-            kept.fitCentres.assign(centres.begin(), centres.end());
-            kept.fitRadii.assign(radii.begin(), radii.end());
-            fillLeafSpheres(*kept.tree, spheres, threads);
-            kept.filledForEye = eye;
+            rememberFit(kept, centres, radii);
+            fillKeptLeaves(kept, spheres, eye, threads);
         }
         ++cache->refits;
         return kept.tree;
     }
     kept.tree = std::make_shared<SphereBvh<T>>(buildSphereBvh<T>(centres, radii, build));
-    fillLeafSpheres(*kept.tree, spheres, threads);
-    kept.filledForEye = eye;
+    fillKeptLeaves(kept, spheres, eye, threads);
     kept.spheres = radii.size();
     kept.builtCost = sahCost(*kept.tree, threads);
     indexKeptTree(kept, centres, radii, threads);

@@ -125,18 +125,24 @@ std::vector<char> keptOut(std::span<const glm::dvec3> centres, std::span<const d
     std::vector<char> out(n, 0);  // 1: out of the tree; 2, for a while: a candidate
     std::vector<std::vector<int>> chunkLargest(chunkCount(n));
     std::vector<int> chunkInReach(chunkCount(n), 0);
+    // Each chunk counts and bounds in locals, stored once: neighbouring
+    // chunks' entries share a cache line, and two threads writing them for
+    // every sphere made these passes no faster on two cores than on one.
     forEachChunk(n, threads, [&](int c, int begin, int end) {
-        std::vector<int>& largest = chunkLargest[c];  // largest first
+        std::vector<int> largest;  // largest first
+        int inReachCount = 0;
         for (int i = begin; i < end; ++i) {
             if (!inReach<T>(centres[i], radii[i])) {
                 out[i] = 1;
                 continue;
             }
-            ++chunkInReach[c];
+            ++inReachCount;
             if (largest.size() == wanted && !larger(i, largest.back())) continue;
             largest.insert(std::upper_bound(largest.begin(), largest.end(), i, larger), i);
             if (largest.size() > wanted) largest.pop_back();
         }
+        chunkLargest[c] = std::move(largest);
+        chunkInReach[c] = inReachCount;
     });
     std::vector<int> order;  // the candidates, largest first
     for (const std::vector<int>& largest : chunkLargest)
@@ -150,8 +156,10 @@ std::vector<char> keptOut(std::span<const glm::dvec3> centres, std::span<const d
     std::vector<LaneBox<double>> smaller(candidates + 1), chunkBox(chunkCount(n));
     for (int k : order) out[k] = 2;
     forEachChunk(n, threads, [&](int c, int begin, int end) {
+        LaneBox<double> box;
         for (int i = begin; i < end; ++i)
-            if (!out[i]) chunkBox[c].grow(sphereBox(centres[i], radii[i]));
+            if (!out[i]) box.grow(sphereBox(centres[i], radii[i]));
+        chunkBox[c] = box;
     });
     for (int k : order) out[k] = 0;
     for (const LaneBox<double>& box : chunkBox) smaller[candidates].grow(box);

@@ -21,6 +21,7 @@
 #include "support/core_support.h"
 #include "support/test_support.h"
 #include "tracer/bvh.h"
+#include "tracer/bvh_split.h"
 #include "tracer/bvh_traverse.h"
 #include "tracer/renderer.h"
 #include "tracer/tracer.h"
@@ -383,6 +384,43 @@ TEST(BvhBuild, SameTreeOnAnyNumberOfThreads) {
                 << "node " << i << ", " << threads << " threads";
         EXPECT_EQ(leafIndices(tree), leafIndices(alone)) << threads << " threads";
         EXPECT_EQ(tree.direct, alone.direct) << threads << " threads";
+    }
+}
+
+// The build's partition puts a split's first child's refs first, whatever
+// the range's size against its blocks of 64 (none, one, both ends' blocks and
+// the rest between them) and however few refs go to either side.
+TEST(BvhBuild, PartitionPutsTheFirstChildsRefsFirst) {
+    using namespace bvh_build;
+    std::mt19937 rng(testSeed(31));
+    std::uniform_real_distribution<float> coordinate(-10.0f, 10.0f);
+    for (int count : {0, 1, 2, 63, 64, 127, 128, 129, 130, 191, 192, 193, 257, 1000, 4099}) {
+        std::vector<Ref<float>> refs;
+        for (int i = 0; i < count; ++i) {
+            const Lanes<float> c{coordinate(rng), coordinate(rng), coordinate(rng), 0};
+            refs.emplace_back(c - 0.1f, c + 0.1f, 70000 + i);
+        }
+        LaneBox<float> centres;
+        for (const Ref<float>& r : refs) centres.grow(r.centre2(), r.centre2());
+        const Binning<float> map(16, centres);
+        for (int bin = -1; bin < 16; ++bin) {  // -1: nothing first; 15: everything
+            const Split split{0, bin, 0.0};
+            std::vector<Ref<float>> parted = refs;
+            const int first = partitionRefs(parted.data(), count, map, split);
+            SCOPED_TRACE(std::to_string(count) + " refs, bin " + std::to_string(bin));
+            int expected = 0;
+            for (const Ref<float>& r : refs) expected += inFirstChild(r, map, split);
+            ASSERT_EQ(first, expected);
+            for (int i = 0; i < count; ++i)
+                ASSERT_EQ(inFirstChild(parted[i], map, split), i < first) << "ref " << i;
+            std::vector<int> before, after;
+            for (int i = 0; i < count; ++i) {
+                before.push_back(refs[i].sphere());
+                after.push_back(parted[i].sphere());
+            }
+            std::sort(after.begin(), after.end());
+            EXPECT_EQ(after, before) << "every ref once";
+        }
     }
 }
 

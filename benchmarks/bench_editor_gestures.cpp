@@ -6,7 +6,8 @@
 //   (b) on a field of 1,000,000 balls: B and a drag round a tenth of them, the
 //       selection's time; one material given to all of them through the
 //       sphere page, to its first preview; and its undo, to its first preview
-//       (each seven times: medians and the worst).
+//       (each seven times: medians and the worst); then G and seven pointer
+//       moves of all of them, each to its first preview.
 // Targets: 30 ms a move, 150 ms the material and its undo. Prints its figures;
 // not a test.
 //   build/bin/bench_editor_gestures [MOVES] [BIG_FIELD]   (default 30 1000000)
@@ -187,6 +188,20 @@ void bigField(int count) {
                                                    [](whitted::Sphere& sp) { sp.radius *= 1.01; });
     const double oneHandledMs = double(t.nsecsElapsed()) / 1e6;
     const double oneMs = firstPreviewMs(w.window, t);
+    // G with all of them selected, each pointer move to its first preview.
+    QTest::qWait(300);
+    QPoint at = w.inWindow(box.center());
+    QTest::mouseMove(shown, at);
+    QTest::keyClick(shown, Qt::Key_G);
+    std::vector<double> moveMs, moveHandledMs;
+    for (int i = 0; i < kRepeats; ++i) {
+        at += QPoint(i % 2 ? -3 : 3, 1);
+        t.start();
+        QTest::mouseMove(shown, at);
+        moveHandledMs.push_back(double(t.nsecsElapsed()) / 1e6);
+        moveMs.push_back(firstPreviewMs(w.window, t));
+    }
+    QTest::keyClick(shown, Qt::Key_Escape);
     std::printf("%d balls: B and a drag selected %d (%.0f %%) in %.0f ms\n", count, selected,
                 100.0 * selected / count, selectMs);
     auto report = [](const char* what, const std::vector<double>& ms,
@@ -199,6 +214,9 @@ void bigField(int count) {
     };
     report("one material for all of them:", materialMs, materialHandledMs);
     report("its undo:", undoMs, undoHandledMs);
+    std::printf("  %-34s median %6.1f ms (max %6.1f); the window's handling: median %.1f ms\n",
+                "G, a pointer move of all of them:", median(moveMs),
+                *std::max_element(moveMs.begin(), moveMs.end()), median(moveHandledMs));
     std::printf(
         "  for comparison, one sphere's radius: %.1f ms to its first preview (%.1f ms "
         "handling)\n",

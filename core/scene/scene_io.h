@@ -92,11 +92,13 @@ std::optional<SceneProblem> validateScene(const Scene& scene);
 std::optional<SceneProblem> validateEdit(const Scene& before, const Scene& after);
 
 // validateEdit for an edit of a valid scene that changed one item alone and
-// kept its name: `after` is the scene after the edit, `index` the item's place
-// in its list. Constant time but for a sphere's material, looked up by name.
-std::optional<SceneProblem> validateSphereEdit(const Scene& after, std::size_t index);
-std::optional<SceneProblem> validateLightEdit(const Scene& after, std::size_t index);
-std::optional<SceneProblem> validateMaterialEdit(const Scene& after, std::size_t index);
+// kept its name: `edited` is the item as the edit leaves it and `index` its
+// place in its list; `scene`, for a sphere's materials, need not hold the edit
+// yet. Constant time but for a sphere's material, looked up by name.
+std::optional<SceneProblem> validateSphereEdit(const Scene& scene, const Sphere& edited,
+                                               std::size_t index);
+std::optional<SceneProblem> validateLightEdit(const Light& edited, std::size_t index);
+std::optional<SceneProblem> validateMaterialEdit(const Material& edited, std::size_t index);
 // validateEdit for an edit of a valid scene that changed only its camera,
 // render settings, background or ambient light, as whitted-render's flags,
 // plans and turntable do: those fields' rules alone, in constant time (a

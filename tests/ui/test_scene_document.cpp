@@ -199,6 +199,50 @@ TEST(SceneDocument, EditItem_RandomChanges_SameAsWholeSceneEditInEverythingSeen)
     }
 }
 
+// A change to several items that breaks a rule is refused in the words a
+// whole-scene edit of the same change uses, naming the first broken item as
+// the edit would leave it, and leaves the scene, the undo stack and a render's
+// snapshot as they were.
+TEST(SceneDocument, EditItems_Refused_SameWordsAsAWholeSceneEdit_NothingChanged) {
+    const Scene seed = test::seedScene();
+    const std::vector<int> balls = {0, 1, 2};
+    const std::pair<const char*, std::function<void(Sphere&, int)>> cases[] = {
+        {"material", [](Sphere& s, int) { s.material = "gone"; }},
+        {"radius", [](Sphere& s, int i) { s.radius = i == 1 ? -1 : s.radius; }},
+        {"centre", [](Sphere& s, int i) { s.center.z = i == 2 ? INFINITY : s.center.z + 1; }},
+    };
+    for (const auto& [what, change] : cases) {
+        SCOPED_TRACE(what);
+        SceneDocument whole, items;
+        whole.reset(seed, QString());
+        items.reset(seed, QString());
+        const std::shared_ptr<const Scene> held = items.snapshot();
+        QString wholeError, itemsError;
+        EXPECT_FALSE(whole.edit(
+            what,
+            [&](Scene& s) {
+                for (int i : balls) change(s.spheres[i], i);
+            },
+            &wholeError));
+        EXPECT_FALSE(items.editItems<Sphere>(balls, what, change, &itemsError));
+        EXPECT_FALSE(itemsError.isEmpty());
+        EXPECT_EQ(itemsError, wholeError);
+        EXPECT_EQ(items.scene(), seed);
+        EXPECT_EQ(*held, seed);
+        EXPECT_EQ(items.undoStack()->count(), 0);
+    }
+    SceneDocument doc;
+    doc.reset(seed, QString());
+    QString error;
+    EXPECT_FALSE(doc.editItems<Light>(
+        {0}, "light", [](Light& l, int) { l.intensity = -1; }, &error));
+    EXPECT_EQ(error, QStringLiteral("Intensity of light “key” must not be negative"));
+    EXPECT_FALSE(doc.editItems<Material>(
+        {0, 1}, "shine", [](Material& m, int) { m.reflectivity = 2; }, &error));
+    EXPECT_EQ(error, QStringLiteral("Reflectivity of material “blue” must be between 0 and 1"));
+    EXPECT_EQ(doc.scene(), seed);
+}
+
 TEST(SceneDocument, EditItem_RenameToTakenName_RefusedWithTheUsersMessage) {
     SceneDocument doc;
     doc.reset(test::seedScene(), QString());

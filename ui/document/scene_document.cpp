@@ -154,13 +154,14 @@ struct SceneDelta {
 };
 
 template <class T>
-std::optional<SceneProblem> validateItemEdit(const Scene& after, std::size_t index) {
+std::optional<SceneProblem> validateItemEdit(const Scene& scene, const T& edited,
+                                             std::size_t index) {
     if constexpr (std::is_same_v<T, Sphere>)
-        return validateSphereEdit(after, index);
+        return validateSphereEdit(scene, edited, index);
     else if constexpr (std::is_same_v<T, Light>)
-        return validateLightEdit(after, index);
+        return validateLightEdit(edited, index);
     else
-        return validateMaterialEdit(after, index);
+        return validateMaterialEdit(edited, index);
 }
 
 class SceneEditCommand : public QUndoCommand {
@@ -320,6 +321,18 @@ void SceneDocument::push(SceneDelta delta, const QString& text, EditRun run) {
     runOpen_ = run == EditRun::Join;
 }
 
+// A refused edit's words, which name the item's fields as the edit left them:
+// worded in the scene with the edited item swapped in, and swapped back out
+// before anyone can see it (the scene is written to: a copy, while a render
+// still reads it).
+template <class T>
+QString refusalText(Scene& scene, const SceneProblem& problem, std::size_t index, T edited) {
+    std::swap(itemsOf<T>(scene)[index], edited);
+    const QString text = editProblemText(problem, scene);
+    std::swap(itemsOf<T>(scene)[index], edited);
+    return text;
+}
+
 template <class T>
 bool SceneDocument::editItem(int index, const QString& text, const std::function<void(T&)>& change,
                              QString* error) {
@@ -335,17 +348,11 @@ bool SceneDocument::editItem(int index, const QString& text, const std::function
     if (after.name != items[i].name || !(undo_.index() > 0 || resetSceneValid_))
         return edit(
             text, [&](Scene& s) { itemsOf<T>(s)[i] = after; }, error);
-    // Checked, and a refusal worded, in the scene as it would be: the item is
-    // swapped in for that and back out before anyone can see it. Only now is
-    // the scene written to (a copy, while a render still reads it).
-    Scene& scene = writableScene();
-    std::vector<T>& list = itemsOf<T>(scene);
-    std::swap(list[i], after);
-    std::optional<SceneProblem> problem = validateItemEdit<T>(scene, i);
-    if (problem && error) *error = editProblemText(*problem, scene);
-    std::swap(list[i], after);
-    if (problem) return false;
-    push(SceneDelta::item(scene, i, list[i], std::move(after)), text, EditRun::Separate);
+    if (const auto problem = validateItemEdit<T>(*scene_, after, i)) {
+        if (error) *error = refusalText<T>(writableScene(), *problem, i, after);
+        return false;
+    }
+    push(SceneDelta::item(*scene_, i, items[i], std::move(after)), text, EditRun::Separate);
     return true;
 }
 
@@ -377,21 +384,18 @@ bool SceneDocument::editItems(const std::vector<int>& indices, const QString& te
                     itemsOf<T>(s)[changed[k]] = after[k];
             },
             error);
-    // Each checked in the scene as it would be, as editItem() does, and put back.
-    Scene& scene = writableScene();
-    std::vector<T>& list = itemsOf<T>(scene);
-    std::optional<SceneProblem> problem;
-    for (std::size_t k = 0; k < changed.size() && !problem; ++k) {
-        std::swap(list[changed[k]], after[k]);
-        if (list[changed[k]].name != before[k].name)
-            problem = SceneProblem{"", "a name cannot change with others"};
-        else
-            problem = validateItemEdit<T>(scene, changed[k]);
-        if (problem && error) *error = editProblemText(*problem, scene);
-        std::swap(list[changed[k]], after[k]);
+    // Each checked where it lies among the edited items: a selection of
+    // 100,000 spheres swapped into the scene and back spent 20 to 50 ms a
+    // pointer move of G reaching into the list of a million.
+    for (std::size_t k = 0; k < changed.size(); ++k) {
+        std::optional<SceneProblem> problem =
+            after[k].name != before[k].name ? SceneProblem{"", "a name cannot change with others"}
+                                            : validateItemEdit<T>(*scene_, after[k], changed[k]);
+        if (!problem) continue;
+        if (error) *error = refusalText<T>(writableScene(), *problem, changed[k], after[k]);
+        return false;
     }
-    if (problem) return false;
-    push(SceneDelta::items(scene,
+    push(SceneDelta::items(*scene_,
                            ListDelta<T>(std::move(changed), std::move(before), std::move(after))),
          text, EditRun::Separate);
     return true;

@@ -6,7 +6,8 @@
 //     the work runs on the thread, never on the caller's.
 //   - LatestWins: a new request replaces the one waiting and makes the running
 //     one stale; EveryRequest: requests wait in line and each runs once.
-//   - cancel() drops what waits and makes the running one stale.
+//   - cancel() drops what waits and makes the running one stale;
+//     dropWaiting() drops what waits and leaves the rest as it is.
 //   - stale(ticket) is what a long work asks between steps: a stale work's
 //     result is wanted by nobody, so it stops. The destructor makes every
 //     ticket stale, and returns once the running work has.
@@ -74,6 +75,16 @@ class RequestThread {
         std::lock_guard lock(mutex_);
         waiting_.clear();
         staleBelow_ = ++last_;
+    }
+
+    // Drops the waiting requests, at once, and nothing else: for a caller
+    // about to ask again, whose waiting request holds what it is about to
+    // change (the editor's render request holds the scene an edit is about to
+    // write, which it would otherwise copy).
+    void dropWaiting() {
+        std::deque<Waiting> dropped;
+        std::lock_guard lock(mutex_);
+        dropped.swap(waiting_);
     }
 
     std::uint64_t latestTicket() const { return last_.load(); }

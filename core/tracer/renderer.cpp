@@ -31,11 +31,11 @@ class TileRenderer {
   public:
     TileRenderer(const Scene& scene, const RenderOptions& options, const TileCallback& onTile,
                  const StopPredicate& shouldStop)
-        : s_(prepared(scene, options)),
+        : settings_(scene.render),
+          s_(prepared(scene, options)),
           options_(options),
           onTile_(onTile),
           shouldStop_(shouldStop),
-          settings_(scene.render),
           block_(previewBlockOf(options)) {}
 
     RenderResult run() {
@@ -56,7 +56,8 @@ class TileRenderer {
 
   private:
     static PreparedScene<T> prepared(const Scene& scene, const RenderOptions& options) {
-        PreparedScene<T> s = prepareScene<T>(scene, options.bvhCache, options.threads);
+        PreparedScene<T> s =
+            prepareScene<T>(scene, options.bvhCache, options.threads, options.onSceneRead);
         s.pruneBelow = T(options.pruneBelowWeight);
         if (options.adaptive) {
             s.samplesPerPixel = std::max(1, options.adaptive->maxSamples);
@@ -451,11 +452,13 @@ class TileRenderer {
         return true;
     }
 
+    // Copied before the preparation, after which the scene may be gone
+    // (RenderOptions::onSceneRead).
+    const RenderSettings settings_;
     PreparedScene<T> s_;  // gets its lights' buffer slots before the first pass that may pay
     const RenderOptions& options_;
     const TileCallback& onTile_;
     const StopPredicate& shouldStop_;
-    const RenderSettings settings_;
     const int block_;  // the preview's block edge
     Image preview_;    // one pixel per block
     Image image_;
@@ -483,7 +486,8 @@ RenderResult renderWith(const Scene& scene, const RenderOptions& options,
         if (options.onPrepared) options.onPrepared();
         return renderer.run();
     }
-    PreparedScene<T> s = prepareScene<T>(scene, options.bvhCache, options.threads);
+    PreparedScene<T> s =
+        prepareScene<T>(scene, options.bvhCache, options.threads, options.onSceneRead);
     s.pruneBelow = T(options.pruneBelowWeight);
     if (options.onPrepared) options.onPrepared();
     return renderWhitted1980(s, settings, options, onTile, shouldStop);

@@ -88,10 +88,15 @@ struct RenderOptions {
     // Not with `adaptive`, `regions` or `alsoAtDepths` (std::invalid_argument).
     std::optional<Whitted1980Sampling> whitted1980 = std::nullopt;
     // Called on the render's thread once the scene is prepared, before the
-    // first tile: from then on render() reads nothing of the scene it was
-    // given, so that its owner may change or free it (the editor's worker
-    // lets go of its snapshot, so that the next edit need not copy the scene).
+    // first tile.
     std::function<void()> onPrepared{};
+    // Called on the render's thread once render() has read all it reads of the
+    // scene it was given (the spheres prepared, before the tree's build or
+    // refit): its owner may change or free it from then on. The editor's
+    // worker lets go of its snapshot here, so that the next edit need not copy
+    // the scene: at a million spheres a copy is 100 MB, and the tree's refit
+    // after a large move took longer than the spheres' preparation.
+    std::function<void()> onSceneRead{};
 };
 
 // For a render nobody watches (a file, a measurement): one pass of all the

@@ -208,7 +208,8 @@ void prepareSpheres(const Scene& scene, PreparedScene<T>& s, BvhInput& bvh, int 
 }
 
 template <typename T>
-PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache, int threads) {
+PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache, int threads,
+                              const std::function<void()>& sceneRead) {
     PreparedScene<T> s;
     const RenderSettings& r = scene.render;
     // The frame is centred on the camera: what the picture needs is where things
@@ -238,6 +239,7 @@ PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache, int thread
     bvh.radii.resize(useBvh ? count : 0);
     threads = resolveThreadCount(threads);
     prepareSpheres(scene, s, bvh, threads);
+    if (sceneRead) sceneRead();  // nothing below reads `scene`
     if (useBvh) {
         s.bvh = sphereBvhFor<T>(bvh.centres, bvh.radii, s.spheres, bvhCache, s.frameOrigin,
                                 s.camera.origin, threads);
@@ -336,7 +338,8 @@ CameraSample<T> pixelSample(const PreparedScene<T>& s, int i, int j, int n) {
 }
 
 #define WHITTED_INSTANTIATE(T)                                                                    \
-    template PreparedScene<T> prepareScene<T>(const Scene&, BvhCache*, int);                      \
+    template PreparedScene<T> prepareScene<T>(const Scene&, BvhCache*, int,                       \
+                                              const std::function<void()>&);                      \
     template void addLightBufferSlots<T>(PreparedScene<T>&);                                      \
     template void addLightBuffers<T>(PreparedScene<T>&, int);                                     \
     template void considerLightBuffer<T>(const PreparedScene<T>&, const PreparedLight<T>&,        \

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -139,9 +140,12 @@ bool bvhChosen(int spheres);
 // The scene must be valid (validateScene); width, height, depth and samples
 // come from scene.render. Builds the sphere BVH when bvhChosen() says so, on
 // up to `threads` threads (0: every core this process may run on), so that a
-// render asked for one thread prepares on one too.
+// render asked for one thread prepares on one too. `sceneRead`, when set, is
+// called once the scene has been read, before the tree's build or refit, which
+// work from the prepared copies: its owner may change or free it from then on.
 template <typename T>
-PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache = nullptr, int threads = 0);
+PreparedScene<T> prepareScene(const Scene& scene, BvhCache* bvhCache = nullptr, int threads = 0,
+                              const std::function<void()>& sceneRead = {});
 
 // Gives each light of a scene prepared with the tree a slot for its buffer
 // (light_buffer.h), which the render's threads fill when their shadow rays

@@ -748,27 +748,39 @@ TEST(Renderer, LargestSceneTheFormatAllows_StartsAndStopsAtOnce) {
     EXPECT_LT(toStop, 2.0);
 }
 
-// The editor's worker lets go of its snapshot when the scene is prepared, and
-// the next edit may then change or free it: render() must read nothing of it
-// after. Freed here; AddressSanitizer reports any later read.
-TEST(Renderer, OnPrepared_BeforeTheFirstTile_TheSceneMayBeFreedThen) {
+// The editor's worker lets go of its snapshot once the render has read the
+// scene, and the next edit may then change or free it while the tree is built
+// and the tiles traced: render() must read nothing of it after. Changed, then
+// freed here: a later read changes the picture, and AddressSanitizer reports it.
+TEST(Renderer, OnSceneRead_BeforeTheTreeAndTheTiles_TheSceneMayChangeOrGoThen) {
     for (const bool whitted1980 : {false, true}) {
-        auto scene = std::make_unique<Scene>(test::seedScene(64, 48));
-        const Image expected = test::renderImage(*scene);
-        RenderOptions options;
-        if (whitted1980) options.whitted1980 = Whitted1980Sampling{};
-        int prepared = 0, tilesBefore = -1;
-        std::atomic<int> tiles{0};
-        options.onPrepared = [&] {
-            ++prepared;
-            tilesBefore = tiles.load();
-            scene.reset();
-        };
-        const RenderResult result = render(*scene, options, [&](const TileUpdate&) { ++tiles; });
-        EXPECT_EQ(prepared, 1) << whitted1980;
-        EXPECT_EQ(tilesBefore, 0) << whitted1980;
-        EXPECT_GT(tiles.load(), 0) << whitted1980;
-        if (!whitted1980) {
+        for (const int balls : {0, 300}) {  // brute force; the sphere tree
+            SCOPED_TRACE(std::to_string(balls) + " balls" + (whitted1980 ? ", whitted1980" : ""));
+            auto scene =
+                std::make_unique<Scene>(balls ? sphereField(*fieldLayout("field", balls), 64, 48)
+                                              : test::seedScene(64, 48));
+            RenderOptions options;
+            if (whitted1980) options.whitted1980 = Whitted1980Sampling{};
+            const Image expected = render(*scene, options).image;
+            int read = 0, prepared = 0, tilesBefore = -1;
+            std::atomic<int> tiles{0};
+            options.onSceneRead = [&] {
+                ++read;
+                for (Sphere& sp : scene->spheres) sp.center.y += 10 * sp.radius;
+                scene->render.width = 8;
+                scene.reset();
+            };
+            options.onPrepared = [&] {
+                EXPECT_EQ(read, 1) << "read before prepared";
+                ++prepared;
+                tilesBefore = tiles.load();
+            };
+            const RenderResult result =
+                render(*scene, options, [&](const TileUpdate&) { ++tiles; });
+            EXPECT_EQ(read, 1);
+            EXPECT_EQ(prepared, 1);
+            EXPECT_EQ(tilesBefore, 0);
+            EXPECT_GT(tiles.load(), 0);
             EXPECT_TRUE(test::samePixels(result.image, expected))
                 << test::firstDifference(result.image, expected);
         }

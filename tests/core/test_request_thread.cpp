@@ -1,8 +1,10 @@
 // The rules of core/base/request_thread.h, which the editor's render,
 // float-versus-double and error workers rely on: what runs, in what order, on
 // which thread, and when a running request learns it is stale.
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -103,6 +105,47 @@ TEST(RequestThread, Cancel_StalesTheRunningOne_DropsTheWaiting_ThenServesAgain) 
         EXPECT_EQ(log.ran, (std::vector<std::string>{"hold 1", "4"}));
         EXPECT_EQ(log.staled, std::vector<std::string>{"hold 1"});
     }
+}
+
+TEST(RequestThread, DropWaiting_TheWaitingNeverRuns_TheRunningGoesOn_TicketsAsTheyWere) {
+    for (const Policy policy : {Policy::LatestWins, Policy::EveryRequest}) {
+        Log log;
+        RequestThread<std::string>* self = nullptr;
+        RequestThread<std::string> worker(policy, holdingWork(log, self));
+        self = &worker;
+        worker.request("hold 1");
+        ASSERT_TRUE(log.waitForRuns(1));
+        worker.request("2");
+        const bool runningStale = worker.stale(1);
+        worker.dropWaiting();
+        EXPECT_EQ(worker.stale(1), runningStale);
+        EXPECT_EQ(worker.latestTicket(), 2u);
+        log.openGate();
+        EXPECT_EQ(worker.request("3"), 3u);
+        ASSERT_TRUE(log.waitForRuns(2));
+        std::lock_guard lock(log.mutex);
+        EXPECT_EQ(log.ran, (std::vector<std::string>{"hold 1", "3"}));
+    }
+    // What a dropped request held is let go of at once.
+    std::mutex gate;
+    std::unique_lock held(gate);
+    std::atomic<int> started{0};
+    RequestThread<std::shared_ptr<int>> worker(
+        RequestThread<std::shared_ptr<int>>::Policy::LatestWins,
+        [&](std::shared_ptr<int>&&, std::uint64_t) {
+            ++started;
+            std::lock_guard wait(gate);
+        });
+    worker.request(std::make_shared<int>(1));
+    for (int i = 0; i < 10000 && started == 0; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    ASSERT_EQ(started, 1) << "the first runs, and waits for the gate";
+    const auto payload = std::make_shared<int>(2);
+    worker.request(payload);
+    EXPECT_EQ(payload.use_count(), 2) << "waiting";
+    worker.dropWaiting();
+    EXPECT_EQ(payload.use_count(), 1) << "dropped";
+    held.unlock();
 }
 
 TEST(RequestThread, EveryRequest_RunsEachOnceInOrder_NoneStale) {

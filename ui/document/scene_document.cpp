@@ -223,6 +223,7 @@ Scene& SceneDocument::writableScene() {
 }
 
 void SceneDocument::applyDelta(const SceneDelta& delta, bool forward) {
+    emit aboutToWrite();
     Scene& scene = writableScene();
     const Scene& head = forward ? delta.headAfter : delta.headBefore;
     const bool settingsOnly = delta.headOnly() && head.camera == scene.camera &&

@@ -114,6 +114,11 @@ class SceneDocument : public QObject {
     QString uniqueName(ItemKind kind, const QString& stem) const;
 
   signals:
+    // An edit, undo or redo is about to write the scene, and sceneChanged()
+    // follows: a holder of a snapshot that is to be replaced anyway may let
+    // go of it now (the render request still waiting), so that the scene is
+    // written where it lies rather than copied.
+    void aboutToWrite();
     // The scene's content changed in any way (edit, undo, redo, load, new).
     void sceneChanged();
     // Items were added, removed, renamed or reordered (list models reset on it).

@@ -85,6 +85,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 void MainWindow::connectRendersAndPredictions() {
     // The first to hear of a change, so that the render starts while the
     // panels and the rest refresh (a few ms on a scene of 100,000 spheres).
+    // The request waiting would hold the scene the edit writes: sceneChanged
+    // brings a new one.
+    connect(&doc_, &SceneDocument::aboutToWrite, this, [this] { worker_.dropWaiting(); });
     connect(&doc_, &SceneDocument::sceneChanged, this, &MainWindow::requestRender);
     connect(&quality_, &QualityChoice::changed, this, &MainWindow::requestRender);
     // Predicted once the scene rests: a move with the pointer changes it at

@@ -240,15 +240,13 @@ void RenderWorker::renderOne(RenderRequest requested, quint64 generation) {
         shared = std::move(planned);
     }
     options.whitted1980 = requested.whitted1980;
-    // Once prepared, the render reads nothing of the scene: let go of the
-    // snapshot, so that an edit made while it renders writes in place instead
-    // of copying the scene (bench_editor_gestures: each move of the 100,000
-    // balls copied them, 1 ms; a million spheres are 100 MB).
+    // Once its spheres are prepared, the render reads nothing of the scene:
+    // let go of the snapshot, so that an edit made while it renders, or while
+    // it refits the tree, writes in place instead of copying the scene
+    // (bench_big_scene's edits back to back at a million spheres, 100 MB a copy).
+    options.onSceneRead = [&] { shared.reset(); };
     std::optional<Clock::time_point> prepared;
-    options.onPrepared = [&] {
-        shared.reset();
-        prepared = Clock::now();
-    };
+    options.onPrepared = [&] { prepared = Clock::now(); };
     const Scene& scene = *shared;
     const int width = scene.render.width;  // `scene` may be gone once prepared
     options.previewBlock = previewBlock_ = previewBlockFor(previewBlock_, width);

@@ -116,6 +116,9 @@ class RenderWorker : public QObject {
                     const std::optional<Whitted1980Sampling>& whitted1980 = std::nullopt,
                     std::uint64_t geometryRevision = 0);
     quint64 latestGeneration() const { return requests_.latestTicket(); }
+    // Drops the request still waiting, and its snapshot, for a caller about to
+    // request again (RequestThread::dropWaiting()).
+    void dropWaiting() { requests_.dropWaiting(); }
 
     // How often frames are sent while a pass is in progress.
     static constexpr int kFrameIntervalMs = 40;

@@ -239,6 +239,28 @@ TEST_F(ViewMoveTest, ShiftA_OnTheFloor_ANewSphereRestsOnIt_OnABall_TouchesIt) {
     }
 }
 
+// The floor is a sphere whose centre lies 100,000 units below: moved in the
+// plane through its centre, a pixel would be hundreds of units. The point of
+// the floor grabbed follows the pointer instead.
+TEST_F(ViewMoveTest, G_OnTheFloor_ThePointGrabbedFollowsThePointer) {
+    const Scene before = doc->scene();
+    const Vec3 grabbed(0.2, -0.5, 0.8);  // on the floor, in front of the balls
+    const QPoint at = widgetPoint(project(before, grabbed));
+    QTest::mouseClick(shownWindow(), Qt::LeftButton, {}, inWindow(at));
+    ASSERT_EQ(window->scenePanel()->currentIndex(), int(kFloor));
+    QTest::mouseMove(shownWindow(), inWindow(at));
+    key(Qt::Key_G);
+    const QPoint by(40, 0);
+    movePointer(at, at + by);
+    click(at + by);
+    const Vec3 moved = doc->scene().spheres[kFloor].center - before.spheres[kFloor].center;
+    // Where the grabbed point is drawn now: the pointer's place.
+    const QPoint drawnAt = widgetPoint(project(doc->scene(), grabbed + moved));
+    EXPECT_NEAR(drawnAt.x(), (at + by).x(), 2) << glm::length(moved) << " units";
+    EXPECT_NEAR(drawnAt.y(), (at + by).y(), 2);
+    EXPECT_GT(glm::length(moved), 0.01);
+}
+
 TEST_F(ViewMoveTest, ALight_MovesAsASphereDoes) {
     window->scenePanel()->select(ItemKind::Light, 0);
     const Vec3 start = doc->scene().lights[0].position;

@@ -157,6 +157,7 @@ class RenderView : public QWidget {
         std::vector<Vec3> starts;   // each item's position before, restored by Escape
         std::vector<double> radii;  // each sphere's radius before (a scale)
         Vec3 anchor;                // the active item's position, which the pointer drags
+        Vec3 depth;                 // a point of the plane the pointer moves things in
         QPointF from;               // the image point the pointer grabbed
         QPointF grabbed;            // the same in the widget
         QPoint pointer;             // where the pointer is now, in the widget
@@ -169,6 +170,7 @@ class RenderView : public QWidget {
         bool recorded = false;      // the gesture has begun: something has changed
     };
     bool beginGesture(Gesture gesture, bool byDrag);
+    Vec3 moveDepth(const ItemMove& m) const;
     Vec3 moveOffset() const;
     std::optional<Vec3> dropOffset() const;
     double scaleFactor() const;

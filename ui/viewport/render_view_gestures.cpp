@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/geometric.hpp>
+
 #include "camera/camera_control.h"
 #include "camera/view_move.h"
 #include "camera/view_projection.h"
@@ -61,6 +63,7 @@ bool RenderView::beginGesture(Gesture gesture, bool byDrag) {
                     : widgetPoint(s, r, m.anchor).value_or(r.center()).toPoint();
     m.grabbed = m.pointer;
     m.from = imagePoint(s, r, m.pointer);
+    m.depth = moveDepth(m);
     // A scale's middle: the mean of the centres, where the pointer's distance counts from.
     Vec3 mean(0.0);
     for (const Vec3& p : m.starts) mean += p / double(m.starts.size());
@@ -72,6 +75,20 @@ bool RenderView::beginGesture(Gesture gesture, bool byDrag) {
     emit moveMessage(moveText());
     update();
     return true;
+}
+
+// The pointer moves things in the plane facing the camera through the active
+// item's centre; but through the point it grabbed on a selected sphere larger
+// than that point's distance from the eye, such as a floor: the floor's centre
+// lies 100,000 units away, where a pixel is a thousand units.
+Vec3 RenderView::moveDepth(const ItemMove& m) const {
+    if (m.kind != ItemKind::Sphere || !imageRect().contains(m.pointer)) return m.anchor;
+    const Scene& s = doc_->scene();
+    const auto pick = pickSurface(s, m.from.x(), m.from.y());
+    if (!pick || !std::binary_search(m.indices.begin(), m.indices.end(), pick->sphere))
+        return m.anchor;
+    const bool huge = s.spheres[pick->sphere].radius > glm::length(pick->point - s.camera.position);
+    return huge ? pick->point : m.anchor;
 }
 
 Vec3 RenderView::moveOffset() const {
@@ -87,7 +104,7 @@ Vec3 RenderView::moveOffset() const {
         if (const auto offset = dropOffset()) return *offset;
     const Scene& s = doc_->scene();
     const QPointF to = imagePoint(s, imageRect(), m.pointer);
-    const Vec3 offset = viewMoveOffset(s.camera, s.render.width, s.render.height, m.anchor,
+    const Vec3 offset = viewMoveOffset(s.camera, s.render.width, s.render.height, m.depth,
                                        {m.from.x(), m.from.y()}, {to.x(), to.y()}, m.axis);
     return m.snap ? snapToGrid(offset, moveGrid_) : offset;
 }

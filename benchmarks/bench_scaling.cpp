@@ -263,16 +263,11 @@ Row measureRow(const Options& o, const std::string& layout, const Scene& scene) 
 
 int main(int argc, char** argv) {
     const Options o = parseOptions(argc, argv);
-    std::FILE* csv = o.csv.empty() ? nullptr : std::fopen(o.csv.c_str(), "w");
-    if (!o.csv.empty() && !csv) {
-        std::perror(o.csv.c_str());
-        return 1;
-    }
-    if (csv)
-        std::fprintf(csv,
-                     "layout,n,build_ms,bytes_per_sphere,float_ms,float_mrays,double_ms,brute_ms,"
-                     "embree_build_high_ms,embree_build_medium_ms,embree_ms,embree_mrays,"
-                     "ours_over_embree,psnr_db,bytes_per_sphere_double,kept_ms\n");
+    std::FILE* csv =
+        bench::openCsv(o.csv,
+                       "layout,n,build_ms,bytes_per_sphere,float_ms,float_mrays,double_ms,brute_ms,"
+                       "embree_build_high_ms,embree_build_medium_ms,embree_ms,embree_mrays,"
+                       "ours_over_embree,psnr_db,bytes_per_sphere_double,kept_ms");
     std::printf("field of N spheres + floor, %dx%d, 1 spp, depth 5, %d threads, kernel %s\n",
                 o.width, o.height, kThreads, activeKernelName().c_str());
 #ifdef WHITTED_HAVE_EMBREE

@@ -19,6 +19,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "bench_args.h"
 #include "field_layouts.h"
 #include "machine_probes.h"
 #include "scene/scene_io.h"
@@ -154,15 +155,9 @@ int main(int argc, char** argv) {
                          name.c_str());
             return 2;
         }
-    std::FILE* csv = o.csv.empty() ? nullptr : std::fopen(o.csv.c_str(), "w");
-    if (!o.csv.empty() && !csv) {
-        std::perror(o.csv.c_str());
-        return 1;
-    }
-    if (csv)
-        std::fprintf(csv,
-                     "scene,spheres,ours_1t_ms,ours_2t_ms,embree_1t_ms,embree_2t_ms,"
-                     "embree_build_1t_ms,embree_build_2t_ms\n");
+    std::FILE* csv = bench::openCsv(o.csv,
+                                    "scene,spheres,ours_1t_ms,ours_2t_ms,embree_1t_ms,"
+                                    "embree_2t_ms,embree_build_1t_ms,embree_build_2t_ms");
     printMachine(o.runs);
     std::printf("\n%dx%d, 1 spp, float, kernel %s; fastest of %d runs a thread count\n", o.width,
                 o.height, activeKernelName().c_str(), o.runs);

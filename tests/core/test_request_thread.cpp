@@ -85,15 +85,25 @@ TEST(RequestThread, LatestWins_ANewRequestStalesTheRunningOne_AndOnlyTheNewestWa
     EXPECT_EQ(worker.latestTicket(), 4u);
 }
 
-TEST(RequestThread, Cancel_StalesTheRunningOne_DropsTheWaiting_ThenServesAgain) {
-    for (const Policy policy : {Policy::LatestWins, Policy::EveryRequest}) {
-        Log log;
-        RequestThread<std::string>* self = nullptr;
-        RequestThread<std::string> worker(policy, holdingWork(log, self));
+// A worker running "hold 1", which waits at the gate, with "2" waiting behind it.
+struct HeldWithOneWaiting {
+    explicit HeldWithOneWaiting(Policy policy) : worker(policy, holdingWork(log, self)) {
         self = &worker;
         worker.request("hold 1");
-        ASSERT_TRUE(log.waitForRuns(1));
+        holding = log.waitForRuns(1);
         worker.request("2");
+    }
+    Log log;
+    RequestThread<std::string>* self = nullptr;
+    RequestThread<std::string> worker;
+    bool holding = false;
+};
+
+TEST(RequestThread, Cancel_StalesTheRunningOne_DropsTheWaiting_ThenServesAgain) {
+    for (const Policy policy : {Policy::LatestWins, Policy::EveryRequest}) {
+        HeldWithOneWaiting held(policy);
+        ASSERT_TRUE(held.holding);
+        auto& [log, self, worker, holding] = held;
         worker.cancel();
         EXPECT_TRUE(worker.stale(1));
         EXPECT_TRUE(worker.stale(2));
@@ -109,13 +119,9 @@ TEST(RequestThread, Cancel_StalesTheRunningOne_DropsTheWaiting_ThenServesAgain) 
 
 TEST(RequestThread, DropWaiting_TheWaitingNeverRuns_TheRunningGoesOn_TicketsAsTheyWere) {
     for (const Policy policy : {Policy::LatestWins, Policy::EveryRequest}) {
-        Log log;
-        RequestThread<std::string>* self = nullptr;
-        RequestThread<std::string> worker(policy, holdingWork(log, self));
-        self = &worker;
-        worker.request("hold 1");
-        ASSERT_TRUE(log.waitForRuns(1));
-        worker.request("2");
+        HeldWithOneWaiting held(policy);
+        ASSERT_TRUE(held.holding);
+        auto& [log, self, worker, holding] = held;
         const bool runningStale = worker.stale(1);
         worker.dropWaiting();
         EXPECT_EQ(worker.stale(1), runningStale);

@@ -240,7 +240,7 @@ TEST_F(ViewMoveTest, ShiftA_OnTheFloor_ANewSphereRestsOnIt_OnABall_TouchesIt) {
 }
 
 // The floor is a sphere whose centre lies 100,000 units below: moved in the
-// plane through its centre, a pixel would be hundreds of units. The point of
+// plane through its centre, a pixel would be some fifty units. The point of
 // the floor grabbed follows the pointer instead.
 TEST_F(ViewMoveTest, G_OnTheFloor_ThePointGrabbedFollowsThePointer) {
     const Scene before = doc->scene();

@@ -80,7 +80,7 @@ bool RenderView::beginGesture(Gesture gesture, bool byDrag) {
 // The pointer moves things in the plane facing the camera through the active
 // item's centre; but through the point it grabbed on a selected sphere larger
 // than that point's distance from the eye, such as a floor: the floor's centre
-// lies 100,000 units away, where a pixel is a thousand units.
+// lies 100,000 units away, where a pixel is some fifty units.
 Vec3 RenderView::moveDepth(const ItemMove& m) const {
     if (m.kind != ItemKind::Sphere || !imageRect().contains(m.pointer)) return m.anchor;
     const Scene& s = doc_->scene();

@@ -109,13 +109,12 @@ int ballInTheMiddle(const Scene& s) {
     return 0;
 }
 
-// G on sphere `index`, then `moves` pointer moves of 3 pixels: each one's first preview.
-std::vector<double> moveTimes(const Scene& scene, int index, int moves,
+// G with the pointer at `at` (in the window) and the selection as it is, then
+// `moves` pointer moves of 3 pixels: each one's first preview, the window's
+// handling of each and the worker's render of it; then Escape.
+std::vector<double> dragWithG(MainWindow& window, QPoint at, int moves,
                               std::vector<double>& handled, std::vector<double>& rendered) {
-    Window w(scene);
-    QWindow* shown = w.window.windowHandle();
-    w.window.scenePanel()->select(whitted::ui::ItemKind::Sphere, index);
-    QPoint at = w.inWindow(w.drawn(scene.spheres[index].center));
+    QWindow* shown = window.windowHandle();
     QTest::mouseMove(shown, at);
     QTest::keyClick(shown, Qt::Key_G);
     std::vector<double> ms;
@@ -126,11 +125,20 @@ std::vector<double> moveTimes(const Scene& scene, int index, int moves,
         QTest::mouseMove(shown, at);
         handled.push_back(double(t.nsecsElapsed()) / 1e6);
         double rendering = 0;
-        ms.push_back(firstPreviewMs(w.window, t, &rendering));
+        ms.push_back(firstPreviewMs(window, t, &rendering));
         rendered.push_back(rendering);
     }
     QTest::keyClick(shown, Qt::Key_Escape);
     return ms;
+}
+
+// G on sphere `index`, then `moves` pointer moves of 3 pixels: each one's first preview.
+std::vector<double> moveTimes(const Scene& scene, int index, int moves,
+                              std::vector<double>& handled, std::vector<double>& rendered) {
+    Window w(scene);
+    w.window.scenePanel()->select(whitted::ui::ItemKind::Sphere, index);
+    const QPoint at = w.inWindow(w.drawn(scene.spheres[index].center));
+    return dragWithG(w.window, at, moves, handled, rendered);
 }
 
 // The widget-space box, from the left of the picture, holding the centres of a
@@ -190,18 +198,9 @@ void bigField(int count) {
     const double oneMs = firstPreviewMs(w.window, t);
     // G with all of them selected, each pointer move to its first preview.
     QTest::qWait(300);
-    QPoint at = w.inWindow(box.center());
-    QTest::mouseMove(shown, at);
-    QTest::keyClick(shown, Qt::Key_G);
-    std::vector<double> moveMs, moveHandledMs;
-    for (int i = 0; i < kRepeats; ++i) {
-        at += QPoint(i % 2 ? -3 : 3, 1);
-        t.start();
-        QTest::mouseMove(shown, at);
-        moveHandledMs.push_back(double(t.nsecsElapsed()) / 1e6);
-        moveMs.push_back(firstPreviewMs(w.window, t));
-    }
-    QTest::keyClick(shown, Qt::Key_Escape);
+    std::vector<double> moveHandledMs, moveRenderedMs;
+    const std::vector<double> moveMs =
+        dragWithG(w.window, w.inWindow(box.center()), kRepeats, moveHandledMs, moveRenderedMs);
     std::printf("%d balls: B and a drag selected %d (%.0f %%) in %.0f ms\n", count, selected,
                 100.0 * selected / count, selectMs);
     auto report = [](const char* what, const std::vector<double>& ms,
@@ -214,9 +213,12 @@ void bigField(int count) {
     };
     report("one material for all of them:", materialMs, materialHandledMs);
     report("its undo:", undoMs, undoHandledMs);
-    std::printf("  %-34s median %6.1f ms (max %6.1f); the window's handling: median %.1f ms\n",
-                "G, a pointer move of all of them:", median(moveMs),
-                *std::max_element(moveMs.begin(), moveMs.end()), median(moveHandledMs));
+    std::printf(
+        "  %-34s median %6.1f ms (max %6.1f); the window's handling: median %.1f ms, the "
+        "worker's render: median %.1f ms\n",
+        "G, a pointer move of all of them:", median(moveMs),
+        *std::max_element(moveMs.begin(), moveMs.end()), median(moveHandledMs),
+        median(moveRenderedMs));
     std::printf(
         "  for comparison, one sphere's radius: %.1f ms to its first preview (%.1f ms "
         "handling)\n",

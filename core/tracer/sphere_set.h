@@ -53,8 +53,8 @@ struct SphereSet {
     double radiusOf(int k) const { return double(radius[k]) + double(radiusLo[k]); }
     LeafSphere<T> leafSphere(int k) const { return {centre[k], rrHi[k], cameraC[k], k}; }
 
-    // Room for n spheres, each to be given by set(): a large scene's spheres
-    // are prepared on all cores, each into its own place.
+    // Room for n spheres, each to be given by set() (or place() and its camera term): a large
+    // scene's spheres are prepared on all cores, each into its own place.
     void resize(std::size_t n) {
         centre.resize(n);
         centreLo.resize(n);
